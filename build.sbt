@@ -1,0 +1,36 @@
+// moire: Chisel generators for optical-grating signal processing.
+ThisBuild / scalaVersion := "2.13.15"
+ThisBuild / version := "0.1.0"
+ThisBuild / organization := "io.github.moire"
+
+val chiselVersion = "6.7.0"
+
+lazy val root = (project in file("."))
+  .settings(
+    name := "moire",
+    Compile / scalaSource := baseDirectory.value / "src",
+    Compile / javaSource := baseDirectory.value / "src",
+    Compile / resourceDirectory := baseDirectory.value / "src" / "resources",
+    Test / scalaSource := baseDirectory.value / "test",
+    Test / javaSource := baseDirectory.value / "test",
+    Test / resourceDirectory := baseDirectory.value / "test" / "resources",
+    libraryDependencies ++= Seq(
+      "org.chipsalliance" %% "chisel" % chiselVersion,
+      "com.lihaoyi" %% "mainargs" % "0.7.6",
+      "com.lihaoyi" %% "upickle" % "3.1.0",
+      "edu.berkeley.cs" %% "chiseltest" % "6.0.0" % Test,
+      "org.scalatest" %% "scalatest" % "3.2.19" % Test,
+      "org.scalatestplus" %% "scalacheck-1-18" % "3.2.19.0" % Test,
+      "org.scalacheck" %% "scalacheck" % "1.18.1" % Test
+    ),
+    addCompilerPlugin("org.chipsalliance" % "chisel-plugin" % chiselVersion cross CrossVersion.full),
+    scalacOptions ++= Seq("-deprecation", "-feature", "-unchecked", "-language:reflectiveCalls", "-Ymacro-annotations"),
+    Compile / mainClass := Some("moire.cli.Main"),
+    run / fork := true,
+    run / outputStrategy := Some(StdoutOutput),
+    run / javaOptions ++= Seq("-Xss8m", "-Xmx4g"),
+    Test / fork := true,
+    Test / javaOptions ++= Seq("-Xss8m", "-Xmx6g"),
+    Test / testOptions += Tests.Argument(TestFrameworks.ScalaTest, "-oD"),
+    Test / parallelExecution := false
+  )

@@ -1,0 +1,103 @@
+package moire.cli
+
+import mainargs.{Flag, ParserForClass, ParserForMethods, arg, main}
+import moire.cordic._
+import moire.paper.{AccuracyRow, Reproduce}
+
+/** Options shared by every subcommand that builds a CORDIC. */
+@main
+case class CordicConfig(
+  @arg(doc = "sincos | rotate | atan2 | asin | asin-double | acos | acos-double") mode: String = "sincos",
+  @arg(doc = "CORDIC iterations n, 4..40") iterations: Int = 16,
+  @arg(doc = "data width b in bits, 8..48") width: Int = 18,
+  @arg(doc = "fractional bits of data words (default width - 2)") fracBits: Int = -1,
+  @arg(doc = "angle word width, one turn = 2^angle-width (default width)") angleWidth: Int = -1,
+  @arg(doc = "extra fractional bits inside the iterations, 0..8") guardBits: Int = 0,
+  @arg(doc = "extra angle bits inside the iterations (default ceil(log2 n) + 1)") angleGuardBits: Int = -1,
+  @arg(doc = "a pipeline register every k iterations (1 = fully pipelined)") pipelineEvery: Int = 1,
+  @arg(doc = "truncate | half-even") rounding: String = "half-even",
+  @arg(doc = "leave the outputs scaled by the CORDIC gain K") noGainCompensation: Flag = Flag(),
+  @arg(doc = "arcsine peak lookup table entries for [83, 90] degrees (0 = none, power of two)") peakTable: Int = 0
+) {
+  /** The params, or one line saying which option is wrong. */
+  def params: CordicParams = {
+    val m = CordicMode.parse(mode).fold(e => throw new UsageError(e), identity)
+    val r = Rounding.parse(rounding).fold(e => throw new UsageError(e), identity)
+    try CordicParams(m, iterations, width, fracBits, angleWidth, guardBits, angleGuardBits, pipelineEvery, r,
+      !noGainCompensation.value, peakTable)
+    catch { case e: IllegalArgumentException => throw new UsageError("--" + e.getMessage.stripPrefix("requirement failed: ")) }
+  }
+}
+
+/** A user mistake: printed as one line, exit code 2. */
+final class UsageError(msg: String) extends Exception(msg)
+
+object Main {
+  implicit val configParser: ParserForClass[CordicConfig] = ParserForClass[CordicConfig]
+
+  @main(doc = "Write the SystemVerilog of one CORDIC configuration into a folder.")
+  def emit(config: CordicConfig, @arg(doc = "output folder") out: String = "generated"): Unit = {
+    val p = config.params
+    val file = Emit.cordic(p, out)
+    println(s"wrote $file (${p.moduleName}, latency ${p.latency} clocks)")
+  }
+
+  @main(doc = "Reproduce the papers' accuracy tables; exit code 0 only when every row holds.")
+  def accuracy(@arg(doc = "also write the rows as JSON to this file") json: Option[String] = None): Unit = {
+    val rows = Reproduce.rows(s => System.err.println(s"accuracy: $s ..."))
+    AccuracyTable.print(rows)
+    json.foreach { f =>
+      val path = os.Path(f, os.pwd)
+      os.write.over(path, ujson.write(ujson.Arr(rows.map(_.json): _*), indent = 2), createFolders = true)
+      println(s"wrote $path")
+    }
+    val failed = rows.count(!_.holds)
+    if (failed > 0) { println(s"$failed of ${rows.size} rows do not hold"); sys.exit(1) }
+    println(s"all ${rows.size} rows hold")
+  }
+
+  @main(doc = "Cheapest (iterations, width) whose error bound meets a target, confirmed by simulation.")
+  def design(@arg(doc = "sin | asin | atan2") function: String,
+             @arg(doc = "largest error allowed (full scale 1.0 for sin, radians for angles)") maxError: Double,
+             @arg(doc = "truncate | half-even") rounding: String = "half-even"): Unit = {
+    val r = Rounding.parse(rounding).fold(e => throw new UsageError(e), identity)
+    if (!(maxError > 0) || maxError.isInfinite) throw new UsageError(s"--max-error must be a positive number, got $maxError")
+    val d = Designer.cheapest(function, maxError, r).fold(e => throw new UsageError(e), identity)
+    println(d.report)
+  }
+
+  private val badValue = """Invalid argument (--\S+) <(\w+)> failed to parse "(.*)" due to.*""".r
+  /** The first line of a mainargs error, reworded for a user. */
+  def oneLine(msg: String): String = {
+    val first = msg.linesIterator.map(_.trim).find(_.nonEmpty).getOrElse("bad arguments")
+    first.stripPrefix(classOf[UsageError].getName + ": ") match {
+      case badValue(opt, tpe, v) => s"$opt: '$v' is not a valid $tpe"
+      case other if other.startsWith("Unknown argument") || other.startsWith("Missing argument") => s"$other (see --help)"
+      case other => other
+    }
+  }
+
+  def main(args: Array[String]): Unit = {
+    val argv = if (args.isEmpty) Array("emit") else args
+    val parser = ParserForMethods(this)
+    val help = argv.contains("--help") || argv.contains("-h")
+    if (help && (argv.head == "--help" || argv.head == "-h")) {
+      println("moire: signal processing generators for optical gratings\nsubcommands:")
+      println(parser.helpText(sorted = false))
+      return
+    }
+    try {
+      parser.runEither(argv.toSeq, allowPositional = false) match {
+        case Left(msg) if help =>
+          val at = msg.indexOf("Expected Signature:")
+          println(if (at >= 0) "Usage: " + msg.substring(at + "Expected Signature:".length).trim else msg)
+        case Left(msg) =>
+          System.err.println(s"moire: ${oneLine(msg)}")
+          sys.exit(2)
+        case Right(_) =>
+      }
+    } catch {
+      case e: UsageError => System.err.println(s"moire: ${e.getMessage}"); sys.exit(2)
+    }
+  }
+}

@@ -1,0 +1,38 @@
+package moire.cordic
+
+/** Picks the cheapest (n, b) whose a priori bound meets a target, then checks it by simulation. */
+final case class Design(function: String, target: Double, p: CordicParams, bound: Double, measured: Measured, adderBits: Int) {
+  def report: String = {
+    val unit = if (function == "sin") "(full scale 1.0)" else "rad"
+    f"""$function with max error $target%.3e $unit
+       |  cheapest: iterations n = ${p.iterations}, width b = ${p.width} (${p.dataFrac} fractional bits), mode ${p.mode.name}
+       |  error bound ${bound}%.3e, measured ${measured.maxError}%.3e over ${measured.samples} inputs: ${if (measured.ok && measured.maxError <= target) "confirmed" else "NOT confirmed"}
+       |  cost proxy: $adderBits adder bits; latency ${p.latency} clocks
+       |  emit it: ./sbt "run emit --mode ${p.mode.name} --iterations ${p.iterations} --width ${p.width}"""".stripMargin
+  }
+}
+
+object Designer {
+  def modeFor(function: String): Either[String, CordicMode] = function match {
+    case "sin" | "cos" | "sincos" => Right(CordicMode.SinCos)
+    case "asin" | "acos" => Right(CordicMode.AsinDouble)
+    case "atan2" => Right(CordicMode.Atan2)
+    case other => Left(s"--function: '$other' is not supported; allowed: sin, asin, atan2")
+  }
+
+  /** Adder bits of the iterations, a proxy for logic cells. */
+  def adderBits(p: CordicParams): Int =
+    if (p.isDouble) p.iterations * (5 * p.innerWidth + p.zWidth) else p.iterations * (2 * p.innerWidth + p.zWidth)
+
+  def cheapest(function: String, target: Double, r: Rounding): Either[String, Design] = modeFor(function).flatMap { mode =>
+    val candidates = for {
+      n <- 4 to 40
+      b <- (8 to 48).find(b => CordicBound.headline(CordicParams(mode, n, b, rounding = r)).total <= target)
+    } yield CordicParams(mode, n, b, rounding = r)
+    if (candidates.isEmpty) Left(f"--max-error: $target%.3e is below what n <= 40 and b <= 48 can guarantee")
+    else {
+      val best = candidates.minBy(p => (adderBits(p), p.iterations))
+      Right(Design(function, target, best, CordicBound.headline(best).total, CordicAccuracy.measure(best), adderBits(best)))
+    }
+  }
+}
