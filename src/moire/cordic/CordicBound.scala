@@ -65,7 +65,9 @@ object CordicBound {
     if (p.mode == SinCos) {
       val start = if (p.gainCompensation) math.abs(p.startX * pow2(-p.innerFrac) - 1 / k) * k else 0.0
       val scale = if (p.gainCompensation) 1.0 else k
-      CordicBound(approx(p) * scale, f, tableError(p) * scale, dataOutput(p), start)
+      // With no integer bit, +1.0 saturates to 1 - LSB.
+      val clip = if (p.dataInt == 0) pow2(-p.dataFrac) else 0.0
+      CordicBound(approx(p) * scale, f, tableError(p) * scale, dataOutput(p), start + clip)
     } else {
       val inv = if (p.postScale) p.invGainConst * pow2(-p.kFrac) else 1.0
       val invErr = if (p.postScale) math.abs(inv - 1 / k) * (k * radius + f) else 0.0

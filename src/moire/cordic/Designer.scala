@@ -8,7 +8,15 @@ final case class Design(function: String, target: Double, p: CordicParams, bound
        |  cheapest: iterations n = ${p.iterations}, width b = ${p.width} (${p.dataFrac} fractional bits), mode ${p.mode.name}
        |  error bound ${bound}%.3e, measured ${measured.maxError}%.3e over ${measured.samples} inputs: ${if (measured.ok && measured.maxError <= target) "confirmed" else "NOT confirmed"}
        |  cost proxy: $adderBits adder bits; latency ${p.latency} clocks
-       |  emit it: ./sbt "run emit --mode ${p.mode.name} --iterations ${p.iterations} --width ${p.width}"""".stripMargin
+       |  emit it: ./sbt "run emit --mode ${p.mode.name} --iterations ${p.iterations} --width ${p.width}"""".stripMargin + paperNote
+  }
+
+  /** Seed 001 sec. 3.1 picks n = 16, b = 18 for the same sine budget: say what our bound makes of it. */
+  private def paperNote: String = if (p.mode != CordicMode.SinCos) "" else {
+    val theirs = CordicParams(CordicMode.SinCos, 16, 20, rounding = p.rounding)
+    f"""
+       |  seed 001 sec. 3.1 chose n = 16, b = 18 fractional bits (width 20 here): our bound for it is ${CordicBound.headline(theirs).total}%.3e,
+       |  because eq. 15 converts the rounding term with pi/180 as if it were degrees""".stripMargin
   }
 }
 
