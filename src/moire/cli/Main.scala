@@ -56,13 +56,39 @@ object Main {
     println(s"all ${rows.size} rows hold")
   }
 
+  @main(doc = "Measured maximum error of the bit-accurate model next to its a priori bound, over an n x b sweep.")
+  def bounds(@arg(doc = "one mode, or all when left out") mode: Option[String] = None,
+             @arg(doc = "comma-separated iteration counts") iterations: String = "8,12,16,20,24",
+             @arg(doc = "comma-separated data widths") widths: String = "12,16,18,24,32"): Unit = {
+    def ints(opt: String, s: String) = s.split(",").toSeq.map(v => v.trim.toIntOption.getOrElse(
+      throw new UsageError(s"--$opt: '$v' is not an integer list like 8,12,16")))
+    val modes = mode.map(m => Seq(CordicMode.parse(m).fold(e => throw new UsageError(e), identity))).getOrElse(CordicMode.all)
+    val ns = ints("iterations", iterations); val bs = ints("widths", widths)
+    val configs = for (m <- modes; n <- ns; b <- bs) yield (m, n, b)
+    val ps = configs.map { case (m, n, b) =>
+      try CordicParams(m, n, b)
+      catch { case e: IllegalArgumentException => throw new UsageError(e.getMessage.stripPrefix("requirement failed: ")) }
+    }
+    println(f"${"mode"}%-12s ${"n"}%3s ${"b"}%3s ${"measured"}%11s ${"bound"}%11s ${"unit"}%-11s inputs  ok")
+    var bad = 0
+    for ((p, i) <- ps.zipWithIndex) {
+      if (System.console() != null) System.err.print(s"\rbounds: ${i + 1}/${ps.size} ")
+      val m = CordicAccuracy.measure(p)
+      if (!m.ok) bad += 1
+      println(f"\r${p.mode.name}%-12s ${p.iterations}%3d ${p.width}%3d ${m.maxError}%11.4e ${m.bound}%11.4e ${m.unit}%-11s ${m.samples}%6d  ${if (m.ok) "yes" else "NO"}")
+    }
+    if (System.console() != null) System.err.println()
+    if (bad > 0) { println(s"$bad configurations exceed their bound"); sys.exit(1) }
+  }
+
   @main(doc = "Cheapest (iterations, width) whose error bound meets a target, confirmed by simulation.")
   def design(@arg(doc = "sin | asin | atan2") function: String,
              @arg(doc = "largest error allowed (full scale 1.0 for sin, radians for angles)") maxError: Double,
-             @arg(doc = "truncate | half-even") rounding: String = "half-even"): Unit = {
+             @arg(doc = "truncate | half-even") rounding: String = "half-even",
+             @arg(doc = "asin only: peak lookup table entries (power of two, 0 = none)") peakTable: Int = 0): Unit = {
     val r = Rounding.parse(rounding).fold(e => throw new UsageError(e), identity)
     if (!(maxError > 0) || maxError.isInfinite) throw new UsageError(s"--max-error must be a positive number, got $maxError")
-    val d = Designer.cheapest(function, maxError, r).fold(e => throw new UsageError(e), identity)
+    val d = Designer.cheapest(function, maxError, r, peakTable).fold(e => throw new UsageError(e), identity)
     println(d.report)
   }
 

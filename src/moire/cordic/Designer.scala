@@ -7,10 +7,11 @@ final case class Design(function: String, target: Double, p: CordicParams, bound
     f"""$function with max error $target%.3e $unit
        |  cheapest: iterations n = ${p.iterations}, width b = ${p.width} (${p.dataFrac} fractional bits), mode ${p.mode.name}
        |  error bound ${bound}%.3e, measured ${measured.maxError}%.3e over ${measured.samples} inputs: ${if (measured.ok && measured.maxError <= target) "confirmed" else "NOT confirmed"}
-       |  cost proxy: $adderBits adder bits; latency ${p.latency} clocks
-       |  emit it: ./sbt "run emit --mode ${p.mode.name} --iterations ${p.iterations} --width ${p.width}"""".stripMargin + paperNote
+       |  cost proxy: $adderBits adder bits${if (p.peakTableSize > 0) s" + ${p.peakTableSize} x ${p.angleBits} table bits" else ""}; latency ${p.latency} clocks
+       |  emit it: ./sbt "run emit --mode ${p.mode.name} --iterations ${p.iterations} --width ${p.width}$tableOpt"""".stripMargin + paperNote
   }
 
+  private def tableOpt: String = if (p.peakTableSize > 0) s" --peak-table ${p.peakTableSize}" else ""
   /** Seed 001 sec. 3.1 picks n = 16, b = 18 for the same sine budget: say what our bound makes of it. */
   private def paperNote: String = if (p.mode != CordicMode.SinCos) "" else {
     val theirs = CordicParams(CordicMode.SinCos, 16, 20, rounding = p.rounding)
@@ -32,15 +33,20 @@ object Designer {
   def adderBits(p: CordicParams): Int =
     if (p.isDouble) p.iterations * (5 * p.innerWidth + p.zWidth) else p.iterations * (2 * p.innerWidth + p.zWidth)
 
-  def cheapest(function: String, target: Double, r: Rounding): Either[String, Design] = modeFor(function).flatMap { mode =>
-    val candidates = for {
+  def cheapest(function: String, target: Double, r: Rounding, peakTable: Int = 0): Either[String, Design] = modeFor(function).flatMap { mode =>
+    def make(n: Int, b: Int) = CordicParams(mode, n, b, rounding = r, peakTableSize = peakTable)
+    val check = scala.util.Try(make(16, 18)).toEither.left.map(e =>
+      "--" + e.getMessage.stripPrefix("requirement failed: "))
+    val candidates = if (check.isLeft) Nil else for {
       n <- 4 to 40
-      b <- (8 to 48).find(b => CordicBound.headline(CordicParams(mode, n, b, rounding = r)).total <= target)
-    } yield CordicParams(mode, n, b, rounding = r)
-    if (candidates.isEmpty) Left(f"--max-error: $target%.3e is below what n <= 40 and b <= 48 can guarantee")
+      b <- (8 to 48).find(b => CordicBound.headline(make(n, b)).total <= target)
+    } yield make(n, b)
+    check.flatMap(_ =>
+    if (candidates.isEmpty) Left(f"--max-error: $target%.3e is below what n <= 40 and b <= 48 can guarantee" +
+      (if (peakTable > 0) s" with a $peakTable-entry peak table" else ""))
     else {
-      val best = candidates.minBy(p => (adderBits(p), p.iterations))
+      val best = candidates.minBy(p => (adderBits(p) + p.peakTableSize * p.angleBits, p.iterations))
       Right(Design(function, target, best, CordicBound.headline(best).total, CordicAccuracy.measure(best), adderBits(best)))
-    }
+    })
   }
 }

@@ -8,6 +8,8 @@ import org.scalatest.flatspec.AnyFlatSpec
 class CordicRtlSpec extends AnyFlatSpec with ChiselScalatestTester {
   val ns = Seq(8, 12, 16, 20, 24)
   val bs = Seq(12, 16, 18, 24, 32)
+  /** Random vectors per configuration (besides the edges): fewer on the slow fallback simulator. */
+  val count: Int = if (SimSupport.hasVerilator) 300 else 40
 
   /** Edge vectors (zero, full scale, quadrant boundaries, arcsine peak) and random ones. */
   def vectors(p: CordicParams, count: Int): Seq[CordicWord] = {
@@ -60,7 +62,7 @@ class CordicRtlSpec extends AnyFlatSpec with ChiselScalatestTester {
 
   for (mode <- CordicMode.all) {
     s"${mode.name} RTL" should s"equal the model bit for bit for n in $ns x b in $bs (${SimSupport.backendName})" in {
-      check(for (n <- ns; b <- bs) yield CordicParams(mode = mode, iterations = n, width = b), 150)
+      check(for (n <- ns; b <- bs) yield CordicParams(mode = mode, iterations = n, width = b), count)
     }
   }
 
@@ -77,6 +79,6 @@ class CordicRtlSpec extends AnyFlatSpec with ChiselScalatestTester {
       CordicParams(CordicMode.Asin, 12, 14, peakTableSize = 16, pipelineEvery = 5),
       CordicParams(CordicMode.AsinDouble, 24, 32, peakTableSize = 1024, guardBits = 4),
       CordicParams(CordicMode.Acos, 9, 12, peakTableSize = 2, fracBits = 11))
-    check(variants, 200)
+    check(variants, count)
   }
 }

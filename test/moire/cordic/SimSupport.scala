@@ -8,7 +8,8 @@ import org.scalatest.Assertions
 object SimSupport {
   def onPath(tool: String): Boolean =
     sys.env.getOrElse("PATH", "").split(java.io.File.pathSeparator).exists(d => new java.io.File(d, tool).canExecute)
-  lazy val hasVerilator: Boolean = onPath("verilator")
+  /** MOIRE_SIM=treadle forces the fallback, to check what a machine without Verilator runs. */
+  lazy val hasVerilator: Boolean = onPath("verilator") && !sys.env.get("MOIRE_SIM").contains("treadle")
   lazy val hasYosys: Boolean = onPath("yosys")
   def backend: AnnotationSeq = if (hasVerilator) Seq(VerilatorBackendAnnotation) else Seq()
   def backendName: String = if (hasVerilator) "verilator" else "treadle"
