@@ -18,7 +18,7 @@ mkdir -p "$cache"
 if [ ! -s "$jar" ]; then
   command -v mvn >/dev/null || { echo "sbt: neither sbt nor mvn found on PATH; install a JDK and Maven" >&2; exit 1; }
   echo "sbt: fetching org.scala-sbt:sbt-launch:$version from Maven Central (once)" >&2
-  mvn -q -B dependency:copy \
+  mvn -q -B -Dstyle.color=never dependency:copy \
     -Dartifact="org.scala-sbt:sbt-launch:$version" \
     -DoutputDirectory="$cache" -Dmdep.stripVersion=false >&2
   [ -s "$jar" ] || { echo "sbt: download of sbt-launch $version failed" >&2; exit 1; }

@@ -58,6 +58,12 @@ class Cordic(val p: CordicParams) extends Module {
   private val inX = io.in.bits.x
   private val inY = io.in.bits.y
   private val inZ = io.in.bits.z
+  /** The arcsine input clamped to [-1.0, 1.0], one bit wider than the port. */
+  private lazy val sineIn: SInt = {
+    val oneIn = 1L << p.dataFrac
+    Mux(inY > lit(oneIn, p.width + 1), lit(oneIn, p.width + 1),
+      Mux(inY < lit(-oneIn, p.width + 1), lit(-oneIn, p.width + 1), inY.pad(p.width + 1)))
+  }
   s0.t := 0.S
   p.mode match {
     case SinCos | Rotate =>
@@ -79,9 +85,7 @@ class Cordic(val p: CordicParams) extends Module {
       s0.y := Mux(fold, fit(-yi, w), yi)
       s0.z := Mux(fold, lit(-(1L << (zw - 1)), zw), 0.S(zw.W))
     case _ =>
-      val oneIn = 1L << p.dataFrac
-      val a = Mux(inY > lit(oneIn, p.width + 1), lit(oneIn, p.width + 1),
-        Mux(inY < lit(-oneIn, p.width + 1), lit(-oneIn, p.width + 1), inY.pad(p.width + 1)))
+      val a = sineIn
       s0.t := lsh(a, p.guardBits)
       if (p.isDouble) {
         val pos = a >= 0.S
@@ -98,9 +102,7 @@ class Cordic(val p: CordicParams) extends Module {
   // Peak lookup table, resolved in the input stage and carried beside the iterations.
   private val table: Option[(Bool, SInt)] = if (p.peakTableSize > 0) {
     val pt = PeakTable(p)
-    val oneIn = 1L << p.dataFrac
-    val a = Mux(inY > lit(oneIn, p.width + 1), lit(oneIn, p.width + 1),
-      Mux(inY < lit(-oneIn, p.width + 1), lit(-oneIn, p.width + 1), inY.pad(p.width + 1)))
+    val a = sineIn
     val mag = Mux(a < 0.S, -a, a)
     val hit = mag >= lit(pt.start, p.width + 2)
     val offset = (mag - lit(pt.start, p.width + 2)).asUInt

@@ -94,6 +94,8 @@ case class CordicParams(
   val innerFrac: Int = dataFrac + guardBits
   /** Integer bits of the input data words (without the sign). */
   val dataInt: Int = width - 1 - dataFrac
+  require(gainCompensation || dataInt >= 1 || !(mode == CordicMode.SinCos || mode == CordicMode.Rotate),
+    s"${mode.name} without gain compensation outputs K = 1.65 times full scale: frac-bits must leave an integer bit (at most ${width - 2})")
   /** Internal x/y width: sign + headroom for the CORDIC gain and adder transients + fraction. */
   val innerWidth: Int = 1 + dataInt + 3 + innerFrac
   require(innerWidth <= 60, s"width plus guard bits too large for the 64-bit model ($innerWidth internal bits)")

@@ -2,9 +2,15 @@ package moire.cordic
 
 /** Integer helpers shared by the bit-accurate models, and conversions between doubles and fixed point. */
 object Fixed {
-  /** v / 2^s rounded as the hardware does: floor for truncate, round half to even otherwise. */
+  /** v / 2^s rounded as the hardware does: floor for truncate, round half to even otherwise.
+    * (A Long twin of the BigInt version below, for speed in the models' inner loops.)
+    */
   def shift(v: Long, s: Int, r: Rounding): Long =
     if (s <= 0) v
+    else if (s >= 62) { // |v| < 2^60 here: the quotient is 0 or -1 (JVM shifts are taken mod 64)
+      require(math.abs(v) < (1L << 60), s"shift: $v too wide")
+      if (r == Rounding.Truncate && v < 0) -1L else 0L
+    }
     else {
       val q = v >> s
       r match {

@@ -3,12 +3,14 @@ package moire.cordic
 import chisel3._
 import chiseltest._
 import org.scalacheck.Gen
+import org.scalacheck.rng.Seed
 import org.scalatest.flatspec.AnyFlatSpec
-import org.scalatestplus.scalacheck.ScalaCheckPropertyChecks
+import scala.util.Try
 
 /** Random legal parameters: the model stays within its bound, and the RTL equals the model. */
-class CordicPropertySpec extends AnyFlatSpec with ChiselScalatestTester with ScalaCheckPropertyChecks {
-  val params: Gen[CordicParams] = for {
+class CordicPropertySpec extends AnyFlatSpec with ChiselScalatestTester {
+  /** Any parameter set the params class accepts (illegal draws are dropped). */
+  val params: Gen[Option[CordicParams]] = for {
     mode <- Gen.oneOf(CordicMode.all)
     n <- Gen.choose(4, 40)
     b <- Gen.choose(8, 48)
@@ -16,13 +18,20 @@ class CordicPropertySpec extends AnyFlatSpec with ChiselScalatestTester with Sca
     guard <- Gen.choose(0, 4)
     k <- Gen.choose(1, 4)
     rounding <- Gen.oneOf(Rounding.all)
-    gc <- Gen.oneOf(true, mode == CordicMode.Asin || mode == CordicMode.Acos)
+    gc <- Gen.oneOf(true, false)
     table <- if (mode.isAsin) Gen.oneOf(0, 4, 32, 256) else Gen.const(0)
-  } yield CordicParams(mode, n, b, fracBits = b - fracDrop, guardBits = guard, pipelineEvery = math.min(k, n),
-    rounding = rounding, gainCompensation = gc, peakTableSize = table)
+  } yield Try(CordicParams(mode, n, b, fracBits = b - fracDrop, guardBits = guard, pipelineEvery = math.min(k, n),
+    rounding = rounding, gainCompensation = gc, peakTableSize = table)).toOption
+
+  /** A fixed seed keeps CI repeatable; MOIRE_SEED=<n> MOIRE_CASES=<n> explores further. */
+  val seed: Long = sys.env.get("MOIRE_SEED").map(_.toLong).getOrElse(20261121L)
+  val cases: Int = sys.env.get("MOIRE_CASES").map(_.toInt).getOrElse(60)
+  def draw(count: Int, salt: Long): Seq[CordicParams] =
+    Iterator.iterate(Seed(seed + salt))(_.next).flatMap(s => params(Gen.Parameters.default, s).flatten).take(count).toSeq
 
   "Random legal params" should "keep the model within its error bound" in {
-    forAll(params, minSuccessful(40)) { p =>
+    info(s"seed $seed, $cases cases")
+    for (p <- draw(cases, 0)) {
       val ins = CordicAccuracy.inputs(p, seed = p.hashCode)
       val sample = new scala.util.Random(p.hashCode).shuffle(ins).take(3000)
       val m = CordicAccuracy.measure(p, sample)
@@ -31,7 +40,7 @@ class CordicPropertySpec extends AnyFlatSpec with ChiselScalatestTester with Sca
   }
 
   it should "give RTL equal to the model (treadle)" in {
-    forAll(params, minSuccessful(6)) { p =>
+    for (p <- draw(math.max(4, cases / 8), 1)) {
       val model = new CordicModel(p)
       val ins = new scala.util.Random(p.hashCode).shuffle(CordicAccuracy.inputs(p, seed = p.hashCode)).take(40)
       test(new Cordic(p)) { dut =>
@@ -44,8 +53,8 @@ class CordicPropertySpec extends AnyFlatSpec with ChiselScalatestTester with Sca
           if (t >= lat) {
             val e = model(ins(t - lat))
             dut.io.out.valid.expect(true.B)
-            assert(dut.io.out.bits.x.peekInt() == e.x && dut.io.out.bits.y.peekInt() == e.y && dut.io.out.bits.z.peekInt() == e.z,
-              s"${p.moduleName} at ${ins(t - lat)}")
+            val got = CordicWord(dut.io.out.bits.x.peekInt().toLong, dut.io.out.bits.y.peekInt().toLong, dut.io.out.bits.z.peekInt().toLong)
+            assert(got == e, s"${p.moduleName} at ${ins(t - lat)}: rtl $got, model $e")
           } else dut.io.out.valid.expect(false.B)
           dut.clock.step()
         }
