@@ -99,7 +99,7 @@ object CordicBound {
   def asinDouble(p: CordicParams, aMax: Double = 1.0): CordicBound = {
     val eta = vectorRounding(p) + targetRounding(p)
     val rounding = asinBand(aMax, eta) + vectorRounding(p)
-    val tbl = PeakTableBound(p)
+    val tbl = peakTableBound(p)
     tbl match {
       case Some((start, binErr)) =>
         val below = asinBand(math.min(aMax, start), eta) + vectorRounding(p)
@@ -116,7 +116,7 @@ object CordicBound {
   }
 
   /** Peak table: (first input handled by the table as a fraction of full scale, largest bin error + output rounding). */
-  def PeakTableBound(p: CordicParams): Option[(Double, Double)] =
+  def peakTableBound(p: CordicParams): Option[(Double, Double)] =
     if (p.peakTableSize == 0) None
     else {
       val t = PeakTable(p)
@@ -129,7 +129,7 @@ object CordicBound {
     */
   def asinConventional(p: CordicParams): CordicBound = {
     val eta = vectorRounding(p) * 2
-    val tbl = PeakTableBound(p)
+    val tbl = peakTableBound(p)
     val aMax = tbl.map(_._1).getOrElse(1.0)
     val ideal = idealConventionalMax(p.iterations, aMax, eta)
     CordicBound(ideal, asinBand(aMax, eta) + vectorRounding(p), tableError(p), angleOutput(p), tbl.map(_._2).getOrElse(0.0))
