@@ -92,6 +92,15 @@ object Main {
     println(d.report)
   }
 
+  @main(doc = "Fit the m largest harmonics to a moire-calibration v1 CSV; write the coefficient file, register listing and plot.")
+  def calibrate(@arg(doc = "calibration CSV (moire-calibration v1)") input: String,
+                @arg(doc = "m, harmonics kept (parallel CORDICs on the board), 1..32") harmonics: Int = 4,
+                @arg(doc = "highest order fitted (default (distinct angles - 1) / 2, at most 32)") maxOrder: Int = -1,
+                @arg(doc = "grating lines per turn (power of two)") lines: Int = 16384,
+                @arg(doc = "read-head subdivision (power of two)") subdivision: Int = 1024,
+                @arg(doc = "output folder") out: String = "calibration"): Unit =
+    CalibrateCmd.run(input, harmonics, maxOrder, lines, subdivision, out)
+
   private val badValue = """Invalid argument (--\S+) <(\w+)> failed to parse "(.*)" due to.*""".r
   /** The first line of a mainargs error, reworded for a user. */
   def oneLine(msg: String): String = {

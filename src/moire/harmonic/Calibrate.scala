@@ -1,0 +1,67 @@
+package moire.harmonic
+
+/** The `calibrate` subcommand: calibration CSV -> harmonic fit -> coefficient file, register listing, plot. */
+object Calibrate {
+  /** Per-direction fit and the cw - ccw difference at the shared angles. */
+  final case class Reversal(meanArcsec: Double, maxAbsArcsec: Double, shared: Int)
+
+  final case class Result(data: CalibrationData, maxOrder: Int, fit: HarmonicFitResult,
+                          byDirection: Seq[(String, HarmonicFitResult)], reversal: Option[Reversal], files: Seq[os.Path])
+
+  def run(input: os.Path, out: os.Path, p: HarmonicParams, maxOrderOpt: Int): Result = {
+    val data = CalibrationData.read(input)
+    val distinct = data.points.map(a => math.round(a.angleDeg * 1e6)).distinct.size
+    val maxOrder = if (maxOrderOpt < 0) HarmonicFit.defaultMaxOrder(distinct) else maxOrderOpt
+    if (maxOrder < 1) throw new CalibrationError(s"--max-order must be at least 1, got $maxOrder")
+    val fit = HarmonicFit.analyse(data.points.map(_.angleDeg), data.points.map(_.errorArcsec), maxOrder, p.harmonics)
+    val dirs = data.directions.filter(_.nonEmpty)
+    val byDir = if (dirs.size > 1) dirs.map { d =>
+      val ps = data.of(d)
+      d -> HarmonicFit.fit(ps.map(_.angleDeg), ps.map(_.errorArcsec), fit.harmonics.map(_.order))
+    } else Nil
+    val reversal = if (dirs.toSet == Set("cw", "ccw")) {
+      val ccw = data.of("ccw").map(q => math.round(q.angleDeg * 1e6) -> q.errorArcsec).toMap
+      val diffs = data.of("cw").flatMap(q => ccw.get(math.round(q.angleDeg * 1e6)).map(q.errorArcsec - _))
+      if (diffs.isEmpty) None else Some(Reversal(diffs.sum / diffs.size, diffs.map(math.abs).max, diffs.size))
+    } else None
+
+    val extra = Seq.newBuilder[(String, ujson.Value)]
+    extra += "analysis" -> ujson.Obj("points" -> data.points.size, "max_order" -> maxOrder, "method" -> "least squares (QR)",
+      "metadata" -> ujson.Obj.from(data.meta.toSeq.sortBy(_._1).map { case (k, v) => k -> ujson.Str(v) }))
+    if (byDir.nonEmpty) extra += "directions" -> ujson.Obj.from(byDir.map { case (d, f) =>
+      d -> ujson.Obj("offset_arcsec" -> f.offset, "rms_residual_arcsec" -> f.rms,
+        "harmonics" -> ujson.Arr(f.harmonics.map(h => ujson.Obj("order" -> h.order, "c_arcsec" -> h.c, "phi_deg" -> h.phiDeg)): _*))
+    })
+    reversal.foreach(r => extra += "reversal_cw_minus_ccw" -> ujson.Obj("mean_arcsec" -> r.meanArcsec,
+      "max_abs_arcsec" -> r.maxAbsArcsec, "shared_angles" -> r.shared))
+
+    val json = CoefficientFile.json(p, data.file, fit, extra.result())
+    val listing = CoefficientFile.listing(p, fit)
+    val stem = data.file.stripSuffix(".csv")
+    val jf = out / s"$stem.coefficients.json"
+    val rf = out / s"$stem.registers.txt"
+    val pf = out / s"$stem.png"
+    os.write.over(jf, ujson.write(json, indent = 2) + "\n", createFolders = true)
+    os.write.over(rf, listing, createFolders = true)
+    val curves = if (byDir.nonEmpty) byDir.map { case (d, f) => CalibrationPlot.Curve(d, data.of(d), f) }
+      else Seq(CalibrationPlot.Curve("", data.points, fit))
+    CalibrationPlot.write(pf, s"${data.file}: ${p.harmonics} largest harmonics up to order $maxOrder", curves)
+    Result(data, maxOrder, fit, byDir, reversal, Seq(jf, rf, pf))
+  }
+
+  /** The summary printed to stdout. */
+  def report(r: Result): String = {
+    val pts = r.data.points.map(_.errorArcsec)
+    val mean = pts.sum / pts.size
+    val rmsData = math.sqrt(pts.map(e => (e - mean) * (e - mean)).sum / pts.size)
+    val b = new StringBuilder
+    b ++= f"${r.data.file}: ${r.data.points.size} points, harmonics up to order ${r.maxOrder} fitted, ${r.fit.harmonics.size} kept\n"
+    b ++= f"  offset c0 ${r.fit.offset}%+.4f arcsec (not compensated)\n"
+    for (h <- r.fit.harmonics) b ++= f"  k=${h.order}%-3d c=${h.c}%9.4f arcsec  phi=${h.phiDeg}%+9.3f deg\n"
+    b ++= f"  rms about the mean ${rmsData}%.4f arcsec, residual rms ${r.fit.rms}%.4f arcsec, max |residual| ${r.fit.maxAbs}%.4f arcsec\n"
+    for ((d, f) <- r.byDirection) b ++= f"  $d%-4s offset ${f.offset}%+.4f arcsec, residual rms ${f.rms}%.4f arcsec\n"
+    r.reversal.foreach(v => b ++= f"  reversal cw - ccw over ${v.shared} angles: mean ${v.meanArcsec}%+.4f arcsec, max |d| ${v.maxAbsArcsec}%.4f arcsec\n")
+    r.files.foreach(f => b ++= s"wrote $f\n")
+    b.result()
+  }
+}

@@ -1,0 +1,100 @@
+package moire.harmonic
+
+/** A user mistake in a calibration file or option: one line, naming file and line where there is one. */
+final class CalibrationError(msg: String) extends Exception(msg)
+
+/** One measured point: position error (encoder reading minus true angle, arcsec) at an angle. */
+final case class CalPoint(angleDeg: Double, errorArcsec: Double, direction: Option[String], line: Int)
+
+/** A parsed `moire-calibration v1` file. */
+final case class CalibrationData(file: String, meta: Map[String, String], points: Seq[CalPoint]) {
+  /** The directions present, in file order ("" for rows without a direction column). */
+  def directions: Seq[String] = points.map(_.direction.getOrElse("")).distinct
+  def of(direction: String): Seq[CalPoint] = points.filter(_.direction.getOrElse("") == direction)
+}
+
+/** Reader of the `moire-calibration v1` CSV format:
+  * {{{
+  * # moire-calibration v1
+  * # table: air-bearing turntable   <- "# key: value" metadata, optional
+  * # step_deg: 10                   <- when given, every multiple of the step must be present
+  * angle_deg,error_arcsec[,direction]
+  * 0,-1.83[,cw]
+  * }}}
+  * Angles in [0, 360] degrees (360 is the same point as 0), errors in arcsec, direction cw or ccw.
+  */
+object CalibrationData {
+  val magic = "# moire-calibration v1"
+  private val columns2 = Seq("angle_deg", "error_arcsec")
+  private val columns3 = columns2 :+ "direction"
+
+  def read(path: os.Path): CalibrationData = {
+    if (!os.isFile(path)) throw new CalibrationError(s"$path: no such file")
+    parse(path.last, os.read(path))
+  }
+
+  def parse(file: String, text: String): CalibrationData = {
+    def fail(line: Int, msg: String) = throw new CalibrationError(s"$file:$line: $msg")
+    val lines = text.split("\n", -1).toSeq.map(_.stripSuffix("\r"))
+    if (lines.isEmpty || lines.head.trim != magic) fail(1, s"first line must be '$magic'")
+    val meta = scala.collection.mutable.LinkedHashMap[String, String]()
+    var header: Option[Seq[String]] = None
+    val points = Seq.newBuilder[CalPoint]
+    val seen = scala.collection.mutable.HashMap[(String, Long), Int]()
+    for ((raw, i) <- lines.zipWithIndex.drop(1); n = i + 1; l = raw.trim if l.nonEmpty) {
+      if (l.startsWith("#")) {
+        val kv = l.stripPrefix("#").trim
+        val at = kv.indexOf(':')
+        if (!l.startsWith("# ") || at <= 0) fail(n, s"metadata must read '# key: value', got '$l'")
+        meta(kv.substring(0, at).trim) = kv.substring(at + 1).trim
+      } else header match {
+        case None =>
+          val h = l.split(",", -1).toSeq.map(_.trim.toLowerCase)
+          if (h != columns2 && h != columns3)
+            fail(n, s"header row must be '${columns2.mkString(",")}' or '${columns3.mkString(",")}', got '$l'")
+          header = Some(h)
+        case Some(h) =>
+          val cells = l.split(",", -1).toSeq.map(_.trim)
+          if (cells.size != h.size) fail(n, s"${cells.size} fields, the header has ${h.size}")
+          def num(col: Int): Double = {
+            val s = cells(col)
+            if (s.isEmpty) fail(n, s"missing ${h(col)}")
+            val v = s.toDoubleOption.getOrElse(fail(n, s"${h(col)} '$s' is not a number"))
+            if (v.isNaN || v.isInfinite) fail(n, s"${h(col)} is $s")
+            v
+          }
+          val a = num(0)
+          if (a < 0 || a > 360) fail(n, s"angle_deg $a is outside [0, 360]")
+          val e = num(1)
+          val dir = if (h.size == 3) {
+            val d = cells(2).toLowerCase
+            if (d != "cw" && d != "ccw") fail(n, s"direction '${cells(2)}' must be cw or ccw")
+            Some(d)
+          } else None
+          val key = (dir.getOrElse(""), math.round((a % 360) * 1e6))
+          seen.get(key).foreach(prev => fail(n, s"angle $a repeats line $prev${dir.fold("")(d => s" ($d)")}"))
+          seen(key) = n
+          points += CalPoint(a % 360, e, dir, n)
+      }
+    }
+    val lastLine = lines.lastIndexWhere(_.trim.nonEmpty) + 1
+    if (header.isEmpty) fail(lastLine, s"no header row '${columns2.mkString(",")}'")
+    val data = CalibrationData(file, meta.toMap, points.result())
+    if (data.points.isEmpty) fail(lastLine, "no data rows")
+    meta.get("step_deg").foreach(checkGrid(data, _, lines.indexWhere(_.trim.startsWith("# step_deg")) + 1))
+    data
+  }
+
+  /** With `# step_deg: s`, every angle k s in [0, 360) must be present in each direction. */
+  private def checkGrid(d: CalibrationData, step: String, line: Int): Unit = {
+    val s = step.toDoubleOption.filter(v => v > 0 && v <= 180 && !v.isNaN)
+      .getOrElse(throw new CalibrationError(s"${d.file}:$line: step_deg '$step' must be a number in (0, 180]"))
+    val n = math.round(360 / s).toInt
+    if (math.abs(n * s - 360) > 1e-6) throw new CalibrationError(s"${d.file}:$line: step_deg $s does not divide 360")
+    for (dir <- d.directions; k <- 0 until n) {
+      val want = k * s
+      if (!d.of(dir).exists(p => math.abs(p.angleDeg - want) < 1e-6))
+        throw new CalibrationError(s"${d.file}: angle ${BigDecimal(want).setScale(6, BigDecimal.RoundingMode.HALF_UP).bigDecimal.stripTrailingZeros.toPlainString} deg missing${if (dir.isEmpty) "" else s" ($dir)"} (step_deg: $s on line $line)")
+    }
+  }
+}

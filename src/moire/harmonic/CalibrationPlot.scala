@@ -1,0 +1,32 @@
+package moire.harmonic
+
+import org.knowm.xchart.{BitmapEncoder, XYChartBuilder, XYSeries}
+import org.knowm.xchart.style.markers.SeriesMarkers
+
+/** PNG plot of calibration data, the harmonic fit and the residual (XChart, headless). */
+object CalibrationPlot {
+  /** One direction's data and fit ("" when the file has no direction column). */
+  final case class Curve(direction: String, points: Seq[CalPoint], fit: HarmonicFitResult)
+
+  def write(path: os.Path, title: String, curves: Seq[Curve]): Unit = {
+    System.setProperty("java.awt.headless", "true")
+    val chart = new XYChartBuilder().width(1000).height(600).title(title)
+      .xAxisTitle("angle (deg)").yAxisTitle("position error (arcsec)").build()
+    chart.getStyler.setLegendPosition(org.knowm.xchart.style.Styler.LegendPosition.OutsideS)
+    chart.getStyler.setLegendLayout(org.knowm.xchart.style.Styler.LegendLayout.Horizontal)
+    val grid = (0 to 720).map(_ * 0.5)
+    for (c <- curves) {
+      val tag = if (c.direction.isEmpty) "" else s" ${c.direction}"
+      val pts = c.points.sortBy(_.angleDeg)
+      val d = chart.addSeries(s"data$tag", pts.map(_.angleDeg).toArray, pts.map(_.errorArcsec).toArray)
+      d.setXYSeriesRenderStyle(XYSeries.XYSeriesRenderStyle.Scatter)
+      val f = chart.addSeries(s"fit$tag (${c.fit.harmonics.map(_.order).mkString(",")})", grid.toArray, grid.map(c.fit(_)).toArray)
+      f.setMarker(SeriesMarkers.NONE)
+      val byLine = c.points.zip(c.fit.residuals).sortBy(_._1.angleDeg)
+      val r = chart.addSeries(s"residual$tag", byLine.map(_._1.angleDeg).toArray, byLine.map(_._2).toArray)
+      r.setMarker(SeriesMarkers.DIAMOND)
+    }
+    os.makeDir.all(path / os.up)
+    BitmapEncoder.saveBitmap(chart, path.toString, BitmapEncoder.BitmapFormat.PNG)
+  }
+}

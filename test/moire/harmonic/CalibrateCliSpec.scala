@@ -1,0 +1,42 @@
+package moire.harmonic
+
+import org.scalatest.flatspec.AnyFlatSpec
+import scala.sys.process._
+
+/** `moire calibrate` in a fresh JVM: files written, exit codes, one-line errors naming file and line. */
+class CalibrateCliSpec extends AnyFlatSpec {
+  private val javaBin = new java.io.File(System.getProperty("java.home"), "bin/java").getPath
+  private val cp = System.getProperty("java.class.path")
+  def run(args: String*): (Int, String, String) = {
+    val out = new StringBuilder; val err = new StringBuilder
+    val code = Process(Seq(javaBin, "-cp", cp, "moire.cli.Main") ++ args)
+      .!(ProcessLogger(l => out.append(l).append('\n'), l => err.append(l).append('\n')))
+    (code, out.toString, err.toString)
+  }
+
+  "calibrate" should "write the coefficient file, register listing and plot, and report the reversal" in {
+    val dir = os.temp.dir()
+    val (code, out, err) = run("calibrate", "--input", "docs/calibration-sample-cw-ccw.csv", "--out", dir.toString, "--harmonics", "3")
+    assert(code == 0, err)
+    val stem = "calibration-sample-cw-ccw"
+    assert(os.list(dir).map(_.last).toSet == Set(s"$stem.coefficients.json", s"$stem.registers.txt", s"$stem.png"))
+    val json = ujson.read(os.read(dir / s"$stem.coefficients.json"))
+    assert(json("harmonics").arr.map(_("order").num.toInt) == Seq(1, 2, 3))
+    assert(json("registers").arr.size == 9 && json("reversal_cw_minus_ccw")("shared_angles").num == 36)
+    assert(os.read.lines(dir / s"$stem.registers.txt").count(l => !l.startsWith("#")) == 9)
+    assert(os.size(dir / s"$stem.png") > 10000)
+    assert(out.contains("reversal cw - ccw over 36 angles"))
+  }
+
+  it should "exit 2 with one line naming the file and line for a bad row or option" in {
+    val bad = os.temp(CalibrationData.magic + "\nangle_deg,error_arcsec\n0,1\n10,oops\n", suffix = ".csv")
+    for ((args, expected) <- Seq(
+      Seq("--input", bad.toString) -> s"moire: ${bad.last}:4: error_arcsec 'oops' is not a number",
+      Seq("--input", "docs/calibration-sample.csv", "--harmonics", "0") -> "moire: --harmonics (m) must be in 1..32, got 0",
+      Seq("--input", "/nonexistent.csv") -> "moire: /nonexistent.csv: no such file")) {
+      val (code, _, err) = run("calibrate" +: args :+ "--out" :+ os.temp.dir().toString: _*)
+      val lines = err.linesIterator.filter(_.nonEmpty).toSeq
+      assert(code == 2 && lines.size == 1 && lines.head.startsWith(expected), s"$args: exit $code, stderr:\n$err")
+    }
+  }
+}
