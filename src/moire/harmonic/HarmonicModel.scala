@@ -51,6 +51,20 @@ class HarmonicModel(val p: HarmonicParams) {
   }
 }
 
+/** A priori error bound of the compensator. */
+object HarmonicBound {
+  /** Largest |f read from the output - f in double precision| in arcsec, for coefficients with
+    * sum |c_k| = `sumAbsC` arcsec, the reference using the same coefficient and phase words:
+    * each CORDIC sine within its bound (CordicBound.rotation), the counts-per-arcsec constant's
+    * rounding, and half an output LSB.
+    */
+  def arcsec(p: HarmonicParams, sumAbsC: Double): Double = {
+    val sine = moire.cordic.CordicBound.rotation(p.cordic).total
+    val kErr = math.abs(p.kConst * math.pow(2, -p.kFrac) - p.countsPerArcsec)
+    sumAbsC * sine + (sumAbsC * (1 + sine) * kErr + 0.5 * math.pow(2, -p.outFrac)) * p.arcsecPerCount
+  }
+}
+
 /** The double-precision reference: f(theta) = sum c_k sin(k theta + phi_k), theta a count, c in arcsec,
   * phi in degrees.
   */
@@ -59,4 +73,8 @@ object HarmonicReference {
     val th = theta.toDouble / p.countsPerTurn * 2 * math.Pi
     harmonics.map { case (k, c, phi) => c * math.sin(k * th + math.toRadians(phi)) }.sum
   }
+
+  /** The reference for register words: c_k and phi_k exactly as the slots hold them. */
+  def ofSlots(p: HarmonicParams, theta: Long, slots: Seq[HarmonicSlot]): Double =
+    f(p, theta, slots.map(s => (s.order, Fixed.wrap(s.c, p.coefWidth) * math.pow(2, -p.coefFrac), s.phi * 360.0 / p.countsPerTurn)))
 }
