@@ -92,6 +92,15 @@ object Main {
     println(d.report)
   }
 
+  @main(doc = "Write the SystemVerilog of the turntable harmonic compensator (seed 001) and its quadrature counter.")
+  def emitHarmonic(@arg(doc = "grating lines per turn (power of two)") lines: Int = 16384,
+                   @arg(doc = "read-head subdivision (power of two)") subdivision: Int = 1024,
+                   @arg(doc = "m, parallel CORDIC sines, 1..32") harmonics: Int = 4,
+                   @arg(doc = "CORDIC iterations n") iterations: Int = 16,
+                   @arg(doc = "CORDIC data bits b (fraction of the sine)") dataBits: Int = 18,
+                   @arg(doc = "output folder") out: String = "generated"): Unit =
+    CalibrateCmd.emit(lines, subdivision, harmonics, iterations, dataBits, out)
+
   @main(doc = "Fit the m largest harmonics to a moire-calibration v1 CSV; write the coefficient file, register listing and plot.")
   def calibrate(@arg(doc = "calibration CSV (moire-calibration v1)") input: String,
                 @arg(doc = "m, harmonics kept (parallel CORDICs on the board), 1..32") harmonics: Int = 4,
