@@ -30,7 +30,8 @@ object CalibrationData {
 
   def read(path: os.Path): CalibrationData = {
     if (!os.isFile(path)) throw new CalibrationError(s"$path: no such file")
-    parse(path.last, os.read(path))
+    val text = try os.read(path) catch { case e: java.io.IOException => throw new CalibrationError(s"$path: cannot read ($e)") }
+    parse(path.last, text)
   }
 
   def parse(file: String, text: String): CalibrationData = {

@@ -39,11 +39,15 @@ class HarmonicRtlSpec extends AnyFlatSpec with ChiselScalatestTester {
     randomCase(HarmonicParams(lines = 1 << 20, subdivision = 4096, harmonics = 6, iterations = 20, dataBits = 22,
       coefWidth = 32, coefFrac = 16, maxOrder = 1000, outFrac = 20, kFrac = 32), 4))
 
-  /** Register writes (address, data) that load the slots. */
-  def writes(p: HarmonicParams, slots: Seq[HarmonicSlot]): Seq[(Int, Long)] =
-    slots.zipWithIndex.flatMap { case (s, j) =>
-      Seq(4 * j -> s.order.toLong, (4 * j + 1) -> (s.c & ((1L << p.coefWidth) - 1)), (4 * j + 2) -> s.phi)
-    }
+  /** Register writes (address, data) that load the slots, with junk first: every register written with
+    * all ones, unused addresses (field 3, slots beyond m) written with all ones, then the real words.
+    */
+  def writes(p: HarmonicParams, slots: Seq[HarmonicSlot]): Seq[(Int, Long)] = {
+    val ones = (1L << p.regWidth) - 1
+    val junk = (0 until (1 << p.addrBits)).map(_ -> ones)
+    val unused = (0 until (1 << p.addrBits)).filter(a => a % 4 == 3 || a / 4 >= p.harmonics).map(_ -> 0x5a5a5a5aL)
+    junk ++ CoefficientFile.writes(p, slots) ++ unused
+  }
 
   "HarmonicCompensator RTL" should s"equal the model bit for bit over the sweep and meet P_max on eq. 19 (${SimSupport.backendName})" in {
     val models = sweep.map(c => new HarmonicModel(c.p))
@@ -88,7 +92,7 @@ class HarmonicRtlSpec extends AnyFlatSpec with ChiselScalatestTester {
         dut.clock.step()
       }
       val sumC = PaperBounds.seed001Eq19.map(c => math.abs(c._2)).sum
-      val pmax = PaperBounds.seed001Pmax(16, 18, sumC)
+      val pmax = math.min(PaperBounds.seed001Pmax(16, 18, sumC), 1.19e-3) // eq. 16, and the paper's printed value
       info(f"eq. 19 over 10,000 angles: RTL max error $worst%.4e arcsec (P_max $pmax%.4e, paper 9.36e-4)")
       assert(worst > 0 && worst < pmax, f"max error $worst%.4e arcsec, P_max $pmax%.4e")
     }
