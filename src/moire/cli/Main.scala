@@ -93,21 +93,21 @@ object Main {
   }
 
   @main(doc = "Write the SystemVerilog of the turntable harmonic compensator (seed 001) and its quadrature counter.")
-  def emitHarmonic(@arg(doc = "grating lines per turn (power of two)") lines: Int = 16384,
-                   @arg(doc = "read-head subdivision (power of two)") subdivision: Int = 1024,
-                   @arg(doc = "m, parallel CORDIC sines, 1..32") harmonics: Int = 4,
-                   @arg(doc = "CORDIC iterations n") iterations: Int = 16,
-                   @arg(doc = "CORDIC data bits b (fraction of the sine)") dataBits: Int = 18,
-                   @arg(doc = "output folder") out: String = "generated"): Unit =
+  def emitHarmonic(@arg(doc = "grating lines per turn, power of two (default 16384)") lines: Int = 16384,
+                   @arg(doc = "read-head subdivision, power of two (default 1024)") subdivision: Int = 1024,
+                   @arg(doc = "m, parallel CORDIC sines, 1..32 (default 4)") harmonics: Int = 4,
+                   @arg(doc = "CORDIC iterations n (default 16)") iterations: Int = 16,
+                   @arg(doc = "CORDIC data bits b, the fraction of the sine (default 18)") dataBits: Int = 18,
+                   @arg(doc = "output folder (default generated)") out: String = "generated"): Unit =
     CalibrateCmd.emit(lines, subdivision, harmonics, iterations, dataBits, out)
 
   @main(doc = "Fit the m largest harmonics to a moire-calibration v1 CSV; write the coefficient file, register listing and plot.")
   def calibrate(@arg(doc = "calibration CSV (moire-calibration v1)") input: String,
-                @arg(doc = "m, harmonics kept (parallel CORDICs on the board), 1..32") harmonics: Int = 4,
+                @arg(doc = "m, harmonics kept (parallel CORDICs on the board), 1..32 (default 4)") harmonics: Int = 4,
                 @arg(doc = "highest order fitted (default (distinct angles - 1) / 2, at most 32)") maxOrder: Int = -1,
-                @arg(doc = "grating lines per turn (power of two)") lines: Int = 16384,
-                @arg(doc = "read-head subdivision (power of two)") subdivision: Int = 1024,
-                @arg(doc = "output folder") out: String = "calibration"): Unit =
+                @arg(doc = "grating lines per turn, power of two (default 16384)") lines: Int = 16384,
+                @arg(doc = "read-head subdivision, power of two (default 1024)") subdivision: Int = 1024,
+                @arg(doc = "output folder (default calibration)") out: String = "calibration"): Unit =
     CalibrateCmd.run(input, harmonics, maxOrder, lines, subdivision, out)
 
   private val badValue = """Invalid argument (--\S+) <(\w+)> failed to parse "(.*)" due to.*""".r
