@@ -61,6 +61,11 @@ object Calibrate {
     b ++= f"  rms about the mean ${rmsData}%.4f arcsec, residual rms ${r.fit.rms}%.4f arcsec, max |residual| ${r.fit.maxAbs}%.4f arcsec\n"
     for ((d, f) <- r.byDirection) b ++= f"  $d%-4s offset ${f.offset}%+.4f arcsec, residual rms ${f.rms}%.4f arcsec\n"
     r.reversal.foreach(v => b ++= f"  reversal cw - ccw over ${v.shared} angles: mean ${v.meanArcsec}%+.4f arcsec, max |d| ${v.maxAbsArcsec}%.4f arcsec\n")
+    for ((d, step, missing) <- r.data.gridGaps) {
+      val dir = if (d.isEmpty) "" else s" ($d)"
+      b ++= f"  note$dir: the angles look like a $step%.6g degree grid missing ${missing.map(a => f"$a%.6g").mkString(", ")}; " +
+        f"add '# step_deg: $step%.6g' to make gaps an error\n"
+    }
     r.files.foreach(f => b ++= s"wrote $f\n")
     b.result()
   }

@@ -11,6 +11,21 @@ final case class CalibrationData(file: String, meta: Map[String, String], points
   /** The directions present, in file order ("" for rows without a direction column). */
   def directions: Seq[String] = points.map(_.direction.getOrElse("")).distinct
   def of(direction: String): Seq[CalPoint] = points.filter(_.direction.getOrElse("") == direction)
+
+  /** Without `step_deg`: when a direction's angles lie on an even grid (step = smallest spacing,
+    * dividing 360) with at least half of it present, the grid step and the angles missing from it.
+    */
+  def gridGaps: Seq[(String, Double, Seq[Double])] = if (meta.contains("step_deg")) Nil else directions.flatMap { d =>
+    val as = of(d).map(_.angleDeg).sorted
+    val step = as.zip(as.drop(1)).map { case (a, b) => b - a }.filter(_ > 1e-6).minOption.getOrElse(360.0)
+    val n = math.round(360 / step).toInt
+    def onGrid(a: Double) = { val q = (a - as.head) / step; math.abs(q - math.round(q)) < 1e-6 }
+    if (n < 4 || math.abs(n * step - 360) > 1e-6 || !as.forall(onGrid) || as.size * 2 < n) None
+    else {
+      val missing = (0 until n).map(k => (as.head + k * step) % 360).filterNot(a => as.exists(b => math.abs(a - b) < 1e-6))
+      if (missing.isEmpty) None else Some((d, step, missing.sorted))
+    }
+  }
 }
 
 /** Reader of the `moire-calibration v1` CSV format:

@@ -49,6 +49,13 @@ class CalibrationDataSpec extends AnyFlatSpec {
     }
   }
 
+  "Gaps in an even grid without step_deg" should "be listed, and not when step_deg is given" in {
+    val rows = (0 until 360 by 30).filterNot(Set(60, 270)).map(a => s"$a,1").mkString("\n")
+    assert(CalibrationData.parse("g.csv", head + rows).gridGaps == Seq(("", 30.0, Seq(60.0, 270.0))))
+    assert(CalibrationData.parse("g.csv", head + (0 until 360 by 30).map(a => s"$a,1").mkString("\n")).gridGaps.isEmpty)
+    assert(CalibrationData.parse("g.csv", head + "0,1\n7,1\n100,2\n").gridGaps.isEmpty)
+  }
+
   "The sample files in docs/" should "be what CalibrationSample generates, and parse" in {
     for ((name, text) <- CalibrationSample.files) {
       val path = os.pwd / "docs" / name
