@@ -13,6 +13,8 @@ object Calibrate {
     val distinct = data.points.map(a => math.round(a.angleDeg * 1e6)).distinct.size
     val maxOrder = if (maxOrderOpt < 0) HarmonicFit.defaultMaxOrder(distinct) else maxOrderOpt
     if (maxOrder < 1) throw new CalibrationError(s"--max-order must be at least 1, got $maxOrder")
+    if (maxOrderOpt < 0 && maxOrder < p.harmonics)
+      throw new CalibrationError(s"${data.file}: $distinct distinct angles support harmonics up to order $maxOrder, fewer than --harmonics ${p.harmonics}")
     val fit = HarmonicFit.analyse(data.points.map(_.angleDeg), data.points.map(_.errorArcsec), maxOrder, p.harmonics)
     val dirs = data.directions.filter(_.nonEmpty)
     val byDir = if (dirs.size > 1) dirs.map { d =>
@@ -41,11 +43,13 @@ object Calibrate {
     val jf = out / s"$stem.coefficients.json"
     val rf = out / s"$stem.registers.txt"
     val pf = out / s"$stem.png"
-    os.write.over(jf, ujson.write(json, indent = 2) + "\n", createFolders = true)
-    os.write.over(rf, listing, createFolders = true)
     val curves = if (byDir.nonEmpty) byDir.map { case (d, f) => CalibrationPlot.Curve(d, data.of(d), f) }
       else Seq(CalibrationPlot.Curve("", data.points, fit))
-    CalibrationPlot.write(pf, s"${data.file}: ${p.harmonics} largest harmonics up to order $maxOrder", curves)
+    try {
+      os.write.over(jf, ujson.write(json, indent = 2) + "\n", createFolders = true)
+      os.write.over(rf, listing, createFolders = true)
+      CalibrationPlot.write(pf, s"${data.file}: ${p.harmonics} largest harmonics up to order $maxOrder", curves)
+    } catch { case e: java.io.IOException => throw new CalibrationError(s"cannot write into $out ($e)") }
     Result(data, maxOrder, fit, byDir, reversal, Seq(jf, rf, pf))
   }
 

@@ -50,6 +50,12 @@ class HarmonicFitSpec extends AnyFlatSpec {
     assert(intercept[CalibrationError](HarmonicFit.analyse(grid, grid, 3, 4)).getMessage.contains("below --harmonics"))
   }
 
+  "calibrate on too few angles" should "say how many harmonics the angles support" in {
+    val f = os.temp(CalibrationData.magic + "\nangle_deg,error_arcsec\n0,1\n90,2\n180,3\n270,1\n", suffix = ".csv")
+    val e = intercept[CalibrationError](Calibrate.run(f, os.temp.dir(), HarmonicParams(), -1))
+    assert(e.getMessage == s"${f.last}: 4 distinct angles support harmonics up to order 1, fewer than --harmonics 4")
+  }
+
   "The register words of a fit" should "make the bit-accurate compensator remove the fitted harmonics" in {
     val p = HarmonicParams()
     val f = HarmonicFit.analyse(grid, grid.map(CalibrationSample.eq19), 17, 4)
