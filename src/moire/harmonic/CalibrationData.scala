@@ -109,8 +109,11 @@ object CalibrationData {
     if (math.abs(n * s - 360) > 1e-6) throw new CalibrationError(s"${d.file}:$line: step_deg $s does not divide 360")
     for (dir <- d.directions; k <- 0 until n) {
       val want = k * s
-      if (!d.of(dir).exists(p => math.abs(p.angleDeg - want) < 1e-6))
-        throw new CalibrationError(s"${d.file}: angle ${BigDecimal(want).setScale(6, BigDecimal.RoundingMode.HALF_UP).bigDecimal.stripTrailingZeros.toPlainString} deg missing${if (dir.isEmpty) "" else s" ($dir)"} (step_deg: $s on line $line)")
+      if (!d.of(dir).exists(p => math.abs(p.angleDeg - want) < 1e-6)) {
+        val angle = BigDecimal(want).setScale(6, BigDecimal.RoundingMode.HALF_UP).bigDecimal.stripTrailingZeros.toPlainString
+        val where = if (dir.isEmpty) "" else s" ($dir)"
+        throw new CalibrationError(s"${d.file}: angle $angle deg missing$where (step_deg: $s on line $line)")
+      }
     }
   }
 }
