@@ -35,12 +35,17 @@ case class SubdivConfig(
   def format: AdcFormat = AdcFormat.parse(adcFormat).fold(e => throw new UsageError(s"--adc-format: $e"), identity)
 }
 object SubdivCmd {
+  /** Plain Verilog-2001-style output (no automatic locals, no packed arrays), which yosys and
+    * older Quartus releases read.
+    */
+  val firtoolOpts: Array[String] = Emit.firtoolOpts :+ "--lowering-options=disallowLocalVariables,disallowPackedArrays"
+
   /** Writes the board-facing subdivider (ADC front end + subdivider) as SystemVerilog; returns the file. */
   def emit(p: SubdivParams, format: AdcFormat, out: String): (os.Path, Int, String) = {
     val dir = os.Path(out, os.pwd)
     os.makeDir.all(dir)
     var top: SubdivAdc = null
-    ChiselStage.emitSystemVerilogFile({ top = new SubdivAdc(p, format); top }, Array("--target-dir", dir.toString), Emit.firtoolOpts)
+    ChiselStage.emitSystemVerilogFile({ top = new SubdivAdc(p, format); top }, Array("--target-dir", dir.toString), firtoolOpts)
     (dir / s"${top.desiredName}.sv", top.latency, top.desiredName)
   }
 
