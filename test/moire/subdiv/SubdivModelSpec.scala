@@ -17,6 +17,8 @@ class SubdivModelSpec extends AnyFlatSpec {
       assert(r.maxCounts <= bound, s"${p.moduleName}: ${r.maxCounts} counts > bound $bound")
       // The floor of eq. 1 alone costs up to one count: a run that never reaches it would test nothing.
       assert(r.maxCounts > 0.9, s"${p.moduleName}: ${r.maxCounts}")
+      // Before the floor: within the datapath + ADC part of the bound.
+      assert(r.maxFineCounts <= bound - 1, s"${p.moduleName}: ${r.maxFineCounts} counts before the floor > ${bound - 1}")
       assert(r.maxRefRad <= SubdivBound.datapath(p, 0.9), s"${p.moduleName}: ${r.maxRefRad} rad from double precision")
       assert(r.stepFaults == 0 && r.absent == 0)
     }
