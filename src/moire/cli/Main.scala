@@ -34,6 +34,7 @@ final class UsageError(msg: String) extends Exception(msg)
 
 object Main {
   implicit val configParser: ParserForClass[CordicConfig] = ParserForClass[CordicConfig]
+  implicit val subdivParser: ParserForClass[SubdivConfig] = ParserForClass[SubdivConfig]
 
   @main(doc = "Write the SystemVerilog of one CORDIC configuration into a folder.")
   def emit(config: CordicConfig, @arg(doc = "output folder") out: String = "generated"): Unit = {
@@ -41,6 +42,9 @@ object Main {
     val file = Emit.cordic(p, out)
     println(s"wrote $file (${p.moduleName}, latency ${p.latency} clocks)")
   }
+
+  @main(doc = "Write the SystemVerilog of the subdivider with its ADC front end into a folder.")
+  def emitSubdiv(config: SubdivConfig, @arg(doc = "output folder") out: String = "generated"): Unit = SubdivCmd.run(config, out)
 
   @main(doc = "Reproduce the papers' accuracy tables; exit code 0 only when every row holds.")
   def accuracy(@arg(doc = "also write the rows as JSON to this file") json: Option[String] = None): Unit = {

@@ -100,6 +100,7 @@ object Reproduce {
           ok == paperSays, f"max phase error $worst%.4f deg against half a count ${180.0 / mm}%.4f deg")
       }
     }
+    out ++= { progress("subdivision"); moire.subdiv.SubdivAccuracy.rows() }
     out.result()
   }
 }
