@@ -1,0 +1,85 @@
+package moire.adapt
+
+import moire.paper.AccuracyRow
+import moire.signal._
+
+/** One measured run of the corrector model on simulated signals. Errors in degrees, times in ms. */
+final case class AdaptRun(uncorrected: Double, corrected: Double, rmsCorrected: Double, maxCorrected: Double,
+                          meanOffset: Double, convergedMs: Double, floor: Double)
+
+/** Interpolation-error figures of the adaptive corrector (bit-accurate model, not RTL).
+  *
+  * Interpolation error = the systematic part of (phase of the output - true phase): the error is
+  * averaged in `bins` bins of true phase over the measurement window (which averages out noise and
+  * quantization), its mean (a fixed position offset) is removed, and the largest |bin| is reported.
+  */
+object AdaptFigures {
+  val sampleRate = 50e6
+  val adc: Adc = Adc(12, AdcFormat.TwosComplement)
+  val goalDeg = 0.02
+  /** Noise level used for the "with noise" rows: 0.5 LSB rms per channel on top of quantization. */
+  val noiseLsb = 0.5
+  val harmonics = Seq(Harmonic(2, 0.02), Harmonic(3, 0.01))
+
+  /** The imperfect signal: 2 % offset, 3 % gain mismatch, 5 degree phase error, 2 % H2 + 1 % H3. */
+  def imperfect(noise: Boolean): SignalParams = SignalParams(amplitude = 0.9, offsetSin = 0.02, offsetCos = -0.02,
+    gainSin = 1.0, gainCos = 0.97, phaseErrorDeg = 5.0, harmonics = harmonics,
+    noiseRms = if (noise) noiseLsb * adc.lsb else 0.0, seed = 7)
+  def harmonicsOnly: SignalParams = SignalParams(amplitude = 0.9, harmonics = harmonics)
+
+  private def deg(r: Double) = math.toDegrees(r)
+
+  /** Systematic error: mean error per phase bin (mean removed), its peak; and that mean. */
+  final class Binned(bins: Int) {
+    private val sum = new Array[Double](bins); private val cnt = new Array[Long](bins)
+    def add(truePeriods: Double, err: Double): Unit = {
+      val f = truePeriods - math.floor(truePeriods)
+      val b = math.min(bins - 1, (f * bins).toInt)
+      sum(b) += err; cnt(b) += 1
+    }
+    def mean: Double = sum.sum / cnt.sum
+    def peak: Double = {
+      val m = mean
+      sum.indices.filter(cnt(_) > 0).map(i => math.abs(sum(i) / cnt(i) - m)).max
+    }
+  }
+
+  def run(sp: SignalParams, hz: Double, p: AdaptParams = AdaptParams(), totalMs: Double = 8, measureMs: Double = 2,
+          windowSamples: Int = 1 << 13): AdaptRun = {
+    val n = (totalMs * 1e-3 * sampleRate).toInt
+    val s = SignalSim.generate(sp, Motion.Constant(hz, 0.123), adc, sampleRate, n)
+    val model = new AdaptModel(p)
+    val measureFrom = n - (measureMs * 1e-3 * sampleRate).toInt
+    val unc = new Binned(256); val cor = new Binned(256); val floorB = new Binned(256)
+    var win = new Binned(16); var winCount = 0; var lastBad = 0.0
+    var sq = 0.0; var mx = 0.0; var cntM = 0L
+    val floorSim = SignalSim.generate(SignalParams(amplitude = sp.amplitude), Motion.Constant(hz, 0.123), adc, sampleRate,
+      n - measureFrom)
+    for (i <- 0 until n + p.latency) {
+      val in = if (i < n) Some((s.sinSigned(i).toLong, s.cosSigned(i).toLong)) else None
+      val out = model.step(in)
+      val k = i - p.latency
+      out.foreach { o =>
+        val tp = s.truePeriods(k)
+        val truth = 2 * math.Pi * tp
+        val e = deg(moire.cordic.Fixed.angleDiff(math.atan2(o.sin.toDouble, o.cos.toDouble), truth))
+        win.add(tp, e); winCount += 1
+        if (winCount == windowSamples) {
+          if (win.peak >= goalDeg) lastBad = (k + 1) / sampleRate * 1e3
+          win = new Binned(16); winCount = 0
+        }
+        if (k >= measureFrom) {
+          cor.add(tp, e); sq += e * e; mx = math.max(mx, math.abs(e)); cntM += 1
+          unc.add(tp, deg(moire.cordic.Fixed.angleDiff(math.atan2(s.sinSigned(k).toDouble, s.cosSigned(k).toDouble), truth)))
+          val j = k - measureFrom
+          floorB.add(tp, deg(moire.cordic.Fixed.angleDiff(math.atan2(floorSim.sinSigned(j).toDouble, floorSim.cosSigned(j).toDouble),
+            2 * math.Pi * floorSim.truePeriods(j))))
+        }
+      }
+    }
+    val m = cor.mean
+    AdaptRun(unc.peak, cor.peak, math.sqrt(sq / cntM - m * m), mx, m, lastBad, floorB.peak)
+  }
+
+  def rows(): Seq[AccuracyRow] = Seq.empty
+}
