@@ -44,17 +44,19 @@ object AdaptFigures {
     }
   }
 
-  def run(sp: SignalParams, hz: Double, p: AdaptParams = AdaptParams(), totalMs: Double = 8, measureMs: Double = 2,
-          windowSamples: Int = 1 << 13): AdaptRun = {
+  /** Runs `model` for `totalMs` on the signal and measures over the last `measureMs`; convergence
+    * time = end of the last 2^13-sample window whose 16-bin systematic error reaches the goal.
+    */
+  def run(sp: SignalParams, motion: Motion, model: AdaptModel, totalMs: Double, measureMs: Double): AdaptRun = {
+    val p = model.p
+    val windowSamples = 1 << 13
     val n = (totalMs * 1e-3 * sampleRate).toInt
-    val s = SignalSim.generate(sp, Motion.Constant(hz, 0.123), adc, sampleRate, n)
-    val model = new AdaptModel(p)
+    val s = SignalSim.generate(sp, motion, adc, sampleRate, n)
     val measureFrom = n - (measureMs * 1e-3 * sampleRate).toInt
     val unc = new Binned(256); val cor = new Binned(256); val floorB = new Binned(256)
     var win = new Binned(16); var winCount = 0; var lastBad = 0.0
     var sq = 0.0; var mx = 0.0; var cntM = 0L
-    val floorSim = SignalSim.generate(SignalParams(amplitude = sp.amplitude), Motion.Constant(hz, 0.123), adc, sampleRate,
-      n - measureFrom)
+    val floorSim = SignalSim.generate(SignalParams(amplitude = sp.amplitude), motion, adc, sampleRate, n - measureFrom)
     for (i <- 0 until n + p.latency) {
       val in = if (i < n) Some((s.sinSigned(i).toLong, s.cosSigned(i).toLong)) else None
       val out = model.step(in)
@@ -80,6 +82,9 @@ object AdaptFigures {
     val m = cor.mean
     AdaptRun(unc.peak, cor.peak, math.sqrt(sq / cntM - m * m), mx, m, lastBad, floorB.peak)
   }
+
+  def run(sp: SignalParams, hz: Double, totalMs: Double = 10, measureMs: Double = 2): AdaptRun =
+    run(sp, Motion.Constant(hz, 0.123), new AdaptModel(AdaptParams()), totalMs, measureMs)
 
   def rows(): Seq[AccuracyRow] = Seq.empty
 }

@@ -53,8 +53,8 @@ class AdaptModel(val p: AdaptParams) {
     // output stage: small rotation by -delta
     val outN = new Stage(p2.valid)
     if (p2.valid) {
-      outN.b = saturate(p2.b + shR(p2.c * p2.a, p.rotFrac), p.outputBits)
-      outN.a = saturate(p2.a - shR(p2.c * p2.b, p.rotFrac), p.outputBits)
+      val (so, co) = AdaptModel.rotate(p, p2.a, p2.b, p2.c)
+      outN.a = so; outN.b = co
     }
 
     // P1: table read and interpolation (reads the table before this clock's write)
@@ -66,13 +66,13 @@ class AdaptModel(val p: AdaptParams) {
       p1N.e = (u >> (p.angleBits - p.tableIndexBits - p.interpBits)) & ((1L << p.interpBits) - 1)
       if (entries > 0) {
         val a = table(p1N.d.toInt); val b = table(((p1N.d + 1) & mask).toInt)
-        p1N.f = a + shR((b - a) * p1N.e, p.interpBits) - shR(tableSum, p.tableIndexBits)
+        p1N.f = AdaptModel.interpolate(p, a, b, p1N.e) - shR(tableSum, p.tableIndexBits)
       }
     }
     // P2: radians for the rotation, corrected fine phase
     val p2N = new Stage(p1.valid, p1.a, p1.b, 0, p1.d, p1.e)
     if (p1.valid) {
-      p2N.c = saturate(shR(p1.f * p.twoPi, p.twoPiFrac + F - p.rotFrac), p.rotWidth)
+      p2N.c = AdaptModel.radians(p, p1.f)
       p2N.f = wrap((p1.c << p.fineGuard) - p1.f, F)
     }
     // PLL and table update from P2
@@ -96,12 +96,8 @@ class AdaptModel(val p: AdaptParams) {
 
   /** Offset, gain and phase correction of one sample into hN (a = sp, b = cp, c = s1, d = c1). */
   private def correct(s: Long, c: Long, hN: Stage): Unit = {
-    val s1 = (s << p.offsetFrac) - os
-    val c1 = (c << p.offsetFrac) - oc
-    val sp = saturate(shR(shR(s1, p.offsetFrac - p.mulFrac) * ks, p.mulFrac + p.gainFrac), p.outputBits)
-    val ca = shR(shR(c1, p.offsetFrac - p.mulFrac) * kc, p.mulFrac + p.gainFrac)
-    val cp = saturate(ca + shR(sp * t, p.phaseFrac), p.outputBits)
-    hN.a = sp; hN.b = cp; hN.c = s1; hN.d = c1
+    val (sp, cp) = AdaptModel.correct(p, s, c, os, oc, ks, kc, t)
+    hN.a = sp; hN.b = cp; hN.c = (s << p.offsetFrac) - os; hN.d = (c << p.offsetFrac) - oc
   }
 
   private def stats(sp: Long, cp: Long, s1: Long, c1: Long): Unit = {
@@ -151,4 +147,30 @@ class AdaptModel(val p: AdaptParams) {
       table(idx) = t0; table(j) = t1
     }
   }
+}
+
+/** The model's combinational pieces, also checked alone against double precision. */
+object AdaptModel {
+  import Fixed.saturate
+  private def shR(v: Long, s: Int): Long = Fixed.shift(v, s, Rounding.HalfEven)
+
+  /** (sp, cp) = ((s - os) ks, (c - oc) kc + sp t) in output LSB. */
+  def correct(p: AdaptParams, s: Long, c: Long, os: Long, oc: Long, ks: Long, kc: Long, t: Long): (Long, Long) = {
+    val s1 = (s << p.offsetFrac) - os
+    val c1 = (c << p.offsetFrac) - oc
+    val sp = saturate(shR(shR(s1, p.offsetFrac - p.mulFrac) * ks, p.mulFrac + p.gainFrac), p.outputBits)
+    val ca = shR(shR(c1, p.offsetFrac - p.mulFrac) * kc, p.mulFrac + p.gainFrac)
+    (sp, saturate(ca + shR(sp * t, p.phaseFrac), p.outputBits))
+  }
+
+  /** Table value between entries a and b at fraction frac / 2^interpBits. */
+  def interpolate(p: AdaptParams, a: Long, b: Long, frac: Long): Long = a + shR((b - a) * frac, p.interpBits)
+
+  /** A fine angle (2^-fineBits turn) in radians with rotFrac fractional bits, saturated to rotWidth. */
+  def radians(p: AdaptParams, delta: Long): Long =
+    saturate(shR(delta * p.twoPi, p.twoPiFrac + p.fineBits - p.rotFrac), p.rotWidth)
+
+  /** (sin, cos) turned by -dr radians (small angle: sin dr ~ dr, cos dr ~ 1). */
+  def rotate(p: AdaptParams, sp: Long, cp: Long, dr: Long): (Long, Long) =
+    (saturate(sp - shR(dr * cp, p.rotFrac), p.outputBits), saturate(cp + shR(dr * sp, p.rotFrac), p.outputBits))
 }
