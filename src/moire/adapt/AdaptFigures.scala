@@ -86,5 +86,52 @@ object AdaptFigures {
   def run(sp: SignalParams, hz: Double, totalMs: Double = 10, measureMs: Double = 2): AdaptRun =
     run(sp, Motion.Constant(hz, 0.123), new AdaptModel(AdaptParams()), totalMs, measureMs)
 
-  def rows(): Seq[AccuracyRow] = Seq.empty
+  /** Frequencies of the rows; the noise-free rows use them 0.14 % higher so that the sampling phase
+    * walks (at exactly 400, 100 or 50 samples per period the 12-bit quantization error repeats every
+    * period and is itself a fixed interpolation error of about 0.016 degree: the "floor").
+    */
+  val freqs: Seq[Double] = Seq(125e3, 500e3, 1e6)
+  val walk: Double = 1 + 0.001 * math.sqrt(2)
+  val totalMs = 10.0
+  val measureMs = 2.0
+
+  private def khz(hz: Double) = f"${hz / 1e3}%.2f kHz"
+  private def note(r: AdaptRun) =
+    f"uncorrected ${r.uncorrected}%.3f deg; converged after ${r.convergedMs}%.2f ms; per sample rms ${r.rmsCorrected}%.4f max ${r.maxCorrected}%.4f deg; " +
+      f"quantization floor ${r.floor}%.4f deg"
+
+  def rows(progress: String => Unit = _ => ()): Seq[AccuracyRow] = {
+    val src = "issue3"
+    val out = Seq.newBuilder[AccuracyRow]
+    progress("adaptive correction (iC-TW8 case)")
+    val anchor = run(harmonicsOnly.copy(noiseRms = noiseLsb * adc.lsb), 125e3)
+    out += AccuracyRow("iC-TW8", "2 % H2 + 1 % H3 at 125.00 kHz, corrected interpolation error", 0.04, anchor.corrected, "deg",
+      anchor.corrected <= 0.04, f"ours uncorrected ${anchor.uncorrected}%.3f deg (iC-TW8: 1.88); 12-bit ADC at 50 MS/s, 0.5 LSB rms noise")
+    for (hz <- freqs) {
+      progress(s"adaptive correction ${khz(hz)}")
+      val r = run(imperfect(noise = true), hz, totalMs, measureMs)
+      out += AccuracyRow(src, s"adaptive: all imperfections, ${khz(hz)}, 0.5 LSB noise, interpolation error", goalDeg, r.corrected,
+        "deg", r.corrected < goalDeg, "paper column = the issue's goal; " + note(r))
+      out += AccuracyRow(src, s"adaptive: convergence time, ${khz(hz)}, 0.5 LSB noise", ujson.Str("-"), r.convergedMs, "ms",
+        r.convergedMs < totalMs - measureMs, f"last 8192-sample window with a 16-bin error >= $goalDeg deg ends here")
+      val q = run(imperfect(noise = false), hz * walk, totalMs, measureMs)
+      out += AccuracyRow(src, s"adaptive: all imperfections, ${khz(hz * walk)}, no noise, interpolation error", goalDeg, q.corrected,
+        "deg", q.corrected < goalDeg, note(q))
+    }
+    out.result()
+  }
+
+  /** The figures of docs/adaptive-correction.md: `./sbt "runMain moire.adapt.AdaptFigures"`. */
+  def main(args: Array[String]): Unit = {
+    println("case                                   freq kHz   uncorr deg  corr deg  rms deg  max deg  conv ms  floor deg")
+    def line(name: String, hz: Double, r: AdaptRun): Unit =
+      println(f"$name%-38s ${hz / 1e3}%9.2f  ${r.uncorrected}%10.3f  ${r.corrected}%8.4f  ${r.rmsCorrected}%7.4f  ${r.maxCorrected}%7.4f  ${r.convergedMs}%7.2f  ${r.floor}%9.4f")
+    for (hz <- freqs.flatMap(f => Seq(f, f * walk)); noise <- Seq(true, false))
+      line(s"all imperfections, ${if (noise) "0.5 LSB noise" else "no noise"}", hz, run(imperfect(noise), hz, totalMs, measureMs))
+    line("H2 + H3 only (iC-TW8 case), 0.5 LSB", 125e3, run(harmonicsOnly.copy(noiseRms = noiseLsb * adc.lsb), 125e3))
+    line("all, backwards, 0.5 LSB", -500e3, run(imperfect(true), -500e3, totalMs, measureMs))
+    line("all, no harmonic table, 0.5 LSB", 500e3,
+      run(imperfect(true), Motion.Constant(500e3, 0.123), new AdaptModel(AdaptParams(harmonicEntries = 0)), totalMs, measureMs))
+    line("all, 2 LSB noise", 500e3, run(imperfect(true).copy(noiseRms = 2 * adc.lsb), 500e3, totalMs, measureMs))
+  }
 }
