@@ -17,8 +17,9 @@ class AdaptSample(w: Int) extends Bundle {
   * chains in front of the subdivision datapath. Formats and rates in [[AdaptParams]]; algorithm
   * in docs/adaptive-correction.md. Bit-exact with [[AdaptModel]].
   *
-  * Embedded 18x18 multipliers: 2+2 gains, 1 phase term, 3 statistics, 1 interpolation,
-  * 1 radians, 2 rotation, 2 table update = 14 with the default widths.
+  * 12 multipliers (default widths, counted in the emitted Verilog): gains 18x24 (2), phase term
+  * 16x18, statistics 16x16 (3), interpolation 23x8, radians 25x17 (constant 2 pi), rotation 18x16 (2),
+  * table update 28x9 (2): at most 18 of the EP4CE115's 266 embedded 18x18 multipliers.
   */
 class AdaptiveCorrector(val p: AdaptParams) extends Module {
   override def desiredName: String = p.moduleName
