@@ -2,8 +2,8 @@ package moire.adapt
 
 import moire.cordic.{CordicModel, CordicWord, Fixed, Rounding}
 
-/** Output of one clock: corrected (sin, cos) when valid. */
-final case class AdaptOut(sin: Long, cos: Long)
+/** Output of one clock: corrected (sin, cos) when valid, and the ADC over-range flags passed through. */
+final case class AdaptOut(sin: Long, cos: Long, otrSin: Boolean = false, otrCos: Boolean = false)
 
 /** Bit-accurate, clock-accurate model of [[AdaptiveCorrector]]: the same registers, the same
   * integer operations and roundings, advanced once per clock. `step` takes this clock's input
@@ -47,8 +47,12 @@ class AdaptModel(val p: AdaptParams) {
 
   def quadrant(sp: Long, cp: Long): Int = (if (sp >= 0) (if (cp >= 0) 0 else 1) else if (cp < 0) 2 else 3)
 
-  def step(in: Option[(Long, Long)]): Option[AdaptOut] = {
-    val shown = if (outR.valid) Some(AdaptOut(outR.a, outR.b)) else None
+  private val otrLine = scala.collection.mutable.Queue.fill(p.latency)((false, false))
+
+  /** One clock: `in` = (sin, cos) when in.valid, `otr` = the over-range flags (delayed by `latency`). */
+  def step(in: Option[(Long, Long)], otr: (Boolean, Boolean) = (false, false)): Option[AdaptOut] = {
+    val flags = otrLine.dequeue(); otrLine.enqueue(otr)
+    val shown = if (outR.valid) Some(AdaptOut(outR.a, outR.b, flags._1, flags._2)) else None
 
     // output stage: small rotation by -delta
     val outN = new Stage(p2.valid)

@@ -4,17 +4,19 @@ import chisel3._
 import chisel3.util._
 import moire.cordic.{Cordic, FixedHw, Rounding}
 
-/** One sample of the two Moire channels. */
+/** One sample of the two Moire channels (signed) and the ADC over-range flags (AD9226 OTR). */
 class AdaptSample(w: Int) extends Bundle {
   val sin = SInt(w.W)
   val cos = SInt(w.W)
+  val otrSin = Bool()
+  val otrCos = Bool()
 }
 
 /** Continuously adapting corrector of offset, gain, phase (Heydemann class) and harmonics.
   *
   * in: ADC samples, `inputBits` signed, one per clock (Valid). out: corrected samples, `outputBits`
-  * signed, amplitude 2^(outputBits-1)/sqrt 2, `latency` clocks later; same shape as the input so it
-  * chains in front of the subdivision datapath. Formats and rates in [[AdaptParams]]; algorithm
+  * signed, amplitude 2^(outputBits-1)/sqrt 2, `latency` clocks later; the OTR flags pass through
+  * with the same delay. Same shape as the input, so it chains in front of the subdivision datapath. Formats and rates in [[AdaptParams]]; algorithm
   * in docs/adaptive-correction.md. Bit-exact with [[AdaptModel]].
   *
   * 12 multipliers (default widths, counted in the emitted Verilog): gains 18x24 (2), phase term
@@ -153,6 +155,9 @@ class AdaptiveCorrector(val p: AdaptParams) extends Module {
   io.out.valid := outV
   io.out.bits.sin := outSin
   io.out.bits.cos := outCos
+  // the over-range flags travel beside the data, unchanged
+  io.out.bits.otrSin := ShiftRegister(io.in.bits.otrSin, latency)
+  io.out.bits.otrCos := ShiftRegister(io.in.bits.otrCos, latency)
 
   // ---- PLL (smoothed phase) and LMS update of the table ----
   private val theta = RegInit(0.S(F.W))

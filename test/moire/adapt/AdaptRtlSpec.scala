@@ -24,7 +24,7 @@ class AdaptRtlSpec extends AnyFlatSpec with ChiselScalatestTester {
     AdaptParams())
 
   /** Signal for configuration k: imperfect, 2 MHz-ish fringes, reversing for odd k; valid low 1 in 8 for k >= 2. */
-  def stimulus(p: AdaptParams, k: Int): Seq[Option[(Long, Long)]] = {
+  def stimulus(p: AdaptParams, k: Int): Seq[(Option[(Long, Long)], (Boolean, Boolean))] = {
     val adc = Adc(p.inputBits, AdcFormat.TwosComplement)
     val sp = SignalParams(amplitude = 0.85, offsetSin = 0.03, offsetCos = -0.01, gainCos = 0.95, phaseErrorDeg = -4,
       harmonics = Seq(Harmonic(2, 0.02), Harmonic(3, 0.01, 30)), noiseRms = adc.lsb, seed = k)
@@ -32,7 +32,8 @@ class AdaptRtlSpec extends AnyFlatSpec with ChiselScalatestTester {
     val s = SignalSim.generate(sp, motion, adc, 50e6, cycles)
     val rnd = new scala.util.Random(k)
     (0 until cycles).map { i =>
-      if (k >= 2 && rnd.nextInt(8) == 0) None else Some((s.sinSigned(i).toLong, s.cosSigned(i).toLong))
+      val otr = (rnd.nextInt(50) == 0, rnd.nextInt(50) == 0)
+      (if (k >= 2 && rnd.nextInt(8) == 0) None else Some((s.sinSigned(i).toLong, s.cosSigned(i).toLong)), otr)
     }
   }
 
@@ -44,18 +45,21 @@ class AdaptRtlSpec extends AnyFlatSpec with ChiselScalatestTester {
       var checked = 0
       for (t <- 0 until cycles + sweep.map(_.latency).max) {
         for (k <- sweep.indices) {
-          val in = if (t < cycles) stim(k)(t) else None
+          val (in, otr) = if (t < cycles) stim(k)(t) else (None, (false, false))
           dut.io.in(k).valid.poke(in.isDefined.B)
           val (s, c) = in.getOrElse((0L, 0L))
           dut.io.in(k).bits.sin.poke(s.S)
           dut.io.in(k).bits.cos.poke(c.S)
+          dut.io.in(k).bits.otrSin.poke(otr._1.B)
+          dut.io.in(k).bits.otrCos.poke(otr._2.B)
         }
         for (k <- sweep.indices) {
-          val e = models(k).step(if (t < cycles) stim(k)(t) else None)
+          val e = if (t < cycles) models(k).step(stim(k)(t)._1, stim(k)(t)._2) else models(k).step(None)
           val o = dut.io.out(k)
           dut.io.out(k).valid.expect(e.isDefined.B, s"${sweep(k).moduleName} valid at cycle $t")
           e.foreach { w =>
-            val got = AdaptOut(o.bits.sin.peekInt().toLong, o.bits.cos.peekInt().toLong)
+            val got = AdaptOut(o.bits.sin.peekInt().toLong, o.bits.cos.peekInt().toLong,
+              o.bits.otrSin.peekBoolean(), o.bits.otrCos.peekBoolean())
             assert(got == w, s"${sweep(k).moduleName} cycle $t: rtl $got, model $w")
             checked += 1
           }
