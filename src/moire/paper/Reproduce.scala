@@ -101,6 +101,7 @@ object Reproduce {
       }
     }
     out ++= { progress("subdivision"); moire.subdiv.SubdivAccuracy.rows() }
+    out ++= moire.adapt.AdaptFigures.rows(progress)
     out.result()
   }
 }
