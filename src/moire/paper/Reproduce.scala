@@ -99,6 +99,7 @@ object Reproduce {
           ok == paperSays, f"max phase error $worst%.4f deg against half a count ${180.0 / mm}%.4f deg")
       }
     }
+    out ++= moire.quadcomp.QuadCompPaper.rows(progress)
     out.result()
   }
 }

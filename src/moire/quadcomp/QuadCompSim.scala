@@ -19,10 +19,10 @@ final case class QuadCompRun(p: QuadCompParams, samples: Samples, outs: IndexedS
   def diffsDeg: Seq[Double] = outs.flatMap(_.diff).map(deg)
   /** The correction in use at the last sample, degrees. */
   def finalCorrectionDeg: Double = deg(outs.last.correction)
-  /** Index of the first sample of period `k` (true phase >= k periods from the start). */
+  /** Index of the first sample `k` periods (either direction) from the start. */
   def periodStart(k: Double): Int = {
     val t0 = samples.truePeriods(0)
-    val i = samples.truePeriods.indexWhere(_ - t0 >= k)
+    val i = samples.truePeriods.indexWhere(v => math.abs(v - t0) >= k)
     if (i < 0) samples.length else i
   }
 
@@ -34,6 +34,11 @@ final case class QuadCompRun(p: QuadCompParams, samples: Samples, outs: IndexedS
     val ph = math.atan2(o.sin.toDouble, o.cos.toDouble)
     math.toDegrees(Fixed.angleDiff(ph, 2 * math.Pi * samples.truePeriods(i)))
   }
+  /** The corrected cos angle psi (the rebuild CORDIC's input) minus the true phase, degrees. Large
+    * near the cos channel's peaks, where the arccosine turns noise into angle.
+    */
+  def cosAngleError(i: Int): Double =
+    math.toDegrees(Fixed.angleDiff(Fixed.angleToRad(outs(i).psi, p.angleBits), 2 * math.Pi * samples.truePeriods(i)))
   /** The same error for the uncompensated pair (normalised sin, normalised cos channel). */
   def rawPairError(i: Int, model: QuadCompModel): Double = {
     val s = model.normalise(samples.sinSigned(i), model.gainSin)
