@@ -83,7 +83,9 @@ class QuadComp(val p: QuadCompParams) extends Module {
   private val thetaSin = Mux(incSin, zs, lit(1L << (a - 1), a + 2) - zs)(a - 1, 0)
   private val posCos = Mux(nc >= 0.S, zs + d >= 0.S, zs - d >= 0.S)
   private val thetaCos = Mux(posCos, zc, -zc)(a - 1, 0)
-  private val psi = (thetaCos - corr.asUInt)(a - 1, 0).asSInt
+  private val corrected = (thetaCos - corr.asUInt)(a - 1, 0).asSInt
+  private val nearPeak = zc < lit(1L << (a - 3), a + 2) || zc > lit(3L << (a - 3), a + 2)
+  private val psi = if (p.fusePeaks) Mux(nearPeak, thetaSin.asSInt, corrected) else corrected
   private val octant = thetaSin(a - 1, a - 3)
   private val trig = armed && havePrev &&
     ((prevOctant === 0.U && octant === 1.U) || (prevOctant === 1.U && octant === 0.U))

@@ -16,6 +16,7 @@ class QuadCompModel(val p: QuadCompParams, val gainSin: Long, val gainCos: Long)
   private val a = p.angleBits
   private val quarter = 1L << (a - 2)
   private val half = 1L << (a - 1)
+  private val eighth = 1L << (a - 3)
   private val turn = 1L << a
   private val asin = new CordicModel(p.asinP)
   private val acos = new CordicModel(p.acosP)
@@ -51,7 +52,8 @@ class QuadCompModel(val p: QuadCompParams, val gainSin: Long, val gainCos: Long)
     val thetaSin = wrap(if (incSin) zs else half - zs, a)
     val posCos = if (nc >= 0) zs + d >= 0 else zs - d >= 0
     val thetaCos = wrap(if (posCos) zc else -zc, a)
-    val psi = wrap(thetaCos - d, a)
+    val nearPeak = zc < eighth || zc > 3 * eighth
+    val psi = if (p.fusePeaks && nearPeak) thetaSin else wrap(thetaCos - d, a)
     val cos = rebuild(CordicWord(0, 0, psi)).x
     // 45 degree point of the sin channel, once per period (re-armed in the third quadrant).
     val octant = (thetaSin & (turn - 1)) >> (a - 3)

@@ -18,6 +18,8 @@ import moire.cordic.{CordicMode, CordicParams, Rounding}
   * @param averageLog2   the correction is an exponential average of the per-period measurements
   *                      with weight 2^-averageLog2 (0 = the paper: each period's value as it is)
   * @param pipelineEvery a register every k CORDIC iterations
+  * @param fusePeaks     beyond the paper: within 45 degrees of the cos channel's peaks, where its
+  *                      arccosine turns noise into angle, rebuild the cos from the sin channel's angle
   */
 case class QuadCompParams(
   inputBits: Int = 12,
@@ -28,7 +30,8 @@ case class QuadCompParams(
   gainFrac: Int = 16,
   averageLog2: Int = 3,
   pipelineEvery: Int = 1,
-  rounding: Rounding = Rounding.HalfEven
+  rounding: Rounding = Rounding.HalfEven,
+  fusePeaks: Boolean = false
 ) {
   require(inputBits >= 4 && inputBits <= 24, s"inputBits must be in 4..24, got $inputBits")
   require(width >= inputBits + 2 && width <= 32, s"width must be in ${inputBits + 2}..32 (inputBits + 2 ..), got $width")
@@ -57,7 +60,8 @@ case class QuadCompParams(
 
   def moduleName: String = {
     val r = if (rounding == Rounding.Truncate) "tr" else "rne"
-    s"QuadComp_i${inputBits}_n${iterations}_w${width}_lut${peakTableSize}_g${gainBits}f${gainFrac}_avg${averageLog2}_k${pipelineEvery}_$r"
+    val f = if (fusePeaks) "_fuse" else ""
+    s"QuadComp_i${inputBits}_n${iterations}_w${width}_lut${peakTableSize}_g${gainBits}f${gainFrac}_avg${averageLog2}_k${pipelineEvery}_$r$f"
   }
 
   /** Gain word that maps an amplitude of `amplitudeCodes` ADC codes to 1.0. */

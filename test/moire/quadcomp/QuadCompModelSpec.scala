@@ -12,7 +12,9 @@ class QuadCompModelSpec extends AnyFlatSpec with Matchers {
     QuadCompParams(),
     QuadCompParams(iterations = 12, width = 16, peakTableSize = 16, averageLog2 = 0, rounding = Rounding.Truncate),
     QuadCompParams(iterations = 20, width = 24, peakTableSize = 256, averageLog2 = 5),
-    QuadCompParams(inputBits = 14, width = 20, peakTableSize = 0, averageLog2 = 2, gainFrac = 15))
+    QuadCompParams(inputBits = 14, width = 20, peakTableSize = 0, averageLog2 = 2, gainFrac = 15),
+    QuadCompParams(fusePeaks = true),
+    QuadCompParams(iterations = 14, width = 18, peakTableSize = 32, averageLog2 = 1, fusePeaks = true, rounding = Rounding.Truncate))
   val signals: Seq[(Double, Double, Double)] = Seq( // (phase error deg, fringe Hz, noise LSB)
     (12.0, 100e3, 0.5), (-7.0, -400e3, 0.0), (25.0, 1e6, 1.0), (0.0, 40e3, 0.0))
 
@@ -55,7 +57,11 @@ class QuadCompModelSpec extends AnyFlatSpec with Matchers {
         val thS = if (o.incSin) asinE else math.Pi - asinE
         val thC = if (o.posCos) acosE else -acosE
         dist(rad(o.thetaSin, p), thS) should be <= eS
-        dist(rad(o.psi, p), thC - d) should be <= eC
+        // fusePeaks: within 45 degrees of the cos channel's peaks the sin angle is used (o.zc in [-90, 270) deg)
+        val eighth = 1L << (p.angleBits - 3)
+        val nearPeak = o.zc < eighth || o.zc > 3 * eighth
+        if (p.fusePeaks && nearPeak) dist(rad(o.psi, p), thS) should be <= eS
+        else dist(rad(o.psi, p), thC - d) should be <= eC
         math.abs(o.cos * lsb - math.cos(rad(o.psi, p))) should be <= eRot
         // correction: the exponential average of the measurements, within one angle LSB
         val corrE = ema.getOrElse(0.0)
@@ -115,11 +121,12 @@ class QuadCompModelSpec extends AnyFlatSpec with Matchers {
       "requirement failed: gainFrac must be at least 5 for width 18, got 2"
     QuadCompParams().latency shouldBe 1 + 18 + 1 + 18
     QuadCompParams(pipelineEvery = 2).moduleName shouldBe "QuadComp_i12_n16_w18_lut64_g18f16_avg3_k2_rne"
+    QuadCompParams(fusePeaks = true).moduleName shouldBe "QuadComp_i12_n16_w18_lut64_g18f16_avg3_k1_rne_fuse"
   }
 
   "The seed 000 rows" should "all hold, with the paper's values beside ours" in {
     val rows = QuadCompPaper.rows()
-    rows.size shouldBe 11 + 18
+    rows.size shouldBe 11 + 24
     rows.filterNot(_.holds).map(_.item) shouldBe empty
     rows.head.paper.num shouldBe -0.019
   }

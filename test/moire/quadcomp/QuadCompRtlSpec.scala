@@ -17,11 +17,11 @@ class QuadCompRtlSpec extends AnyFlatSpec with ChiselScalatestTester {
     RtlCase(QuadCompParams(), SignalParams(phaseErrorDeg = 12, noiseRms = 0.5 / 2048, seed = 3), Motion.Constant(1e6), 0),
     RtlCase(QuadCompParams(iterations = 12, width = 16, peakTableSize = 16, averageLog2 = 0, rounding = Rounding.Truncate),
       SignalParams(amplitude = 0.6, phaseErrorDeg = -7, noiseRms = 0.5 / 2048, seed = 4), Motion.Constant(-700e3), 20),
-    RtlCase(QuadCompParams(iterations = 20, width = 22, peakTableSize = 256, averageLog2 = 2, pipelineEvery = 2),
+    RtlCase(QuadCompParams(iterations = 20, width = 22, peakTableSize = 256, averageLog2 = 2, pipelineEvery = 2, fusePeaks = true),
       SignalParams(phaseErrorDeg = 3, noiseRms = 1.0 / 2048, seed = 5), Motion.Constant(2.5e6, 0.3), 10),
     RtlCase(QuadCompParams(inputBits = 10, iterations = 14, width = 18, peakTableSize = 0, averageLog2 = 1),
       SignalParams(amplitude = 0.8, phaseErrorDeg = 25, seed = 6), Motion.Oscillate(20, 30e3), 5),
-    RtlCase(QuadCompParams(inputBits = 14, iterations = 16, width = 20, peakTableSize = 64, averageLog2 = 4, gainFrac = 15),
+    RtlCase(QuadCompParams(inputBits = 14, iterations = 16, width = 20, peakTableSize = 64, averageLog2 = 4, gainFrac = 15, fusePeaks = true),
       SignalParams(phaseErrorDeg = -12, noiseRms = 0.5 / 8192, seed = 7), Motion.Constant(400e3), 0)
   )
 
