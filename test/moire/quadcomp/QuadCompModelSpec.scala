@@ -82,7 +82,7 @@ class QuadCompModelSpec extends AnyFlatSpec with Matchers {
 
   "The measured phase difference" should "be the set one within the quantisation bound on clean signals" in {
     val p = QuadCompParams()
-    for (deg <- Seq(-30.0, -12.0, -0.5, 0.0, 3.0, 12.0, 30.0); hz <- Seq(40e3, -100e3, 1e6)) {
+    for (deg <- Seq(-35.0, -12.0, -0.5, 0.0, 3.0, 12.0, 35.0); hz <- Seq(40e3, -100e3, 1e6)) {
       val run = QuadCompSim.run(p, QuadCompSim.signal(deg, noiseLsb = 0), hz, 20)
       val aCodes = QuadCompSim.amplitude * 2048
       val step = 2 * math.Pi * math.abs(hz) / QuadCompSim.sampleRate
@@ -97,7 +97,8 @@ class QuadCompModelSpec extends AnyFlatSpec with Matchers {
   }
 
   "Compensation" should "remove most of the quadrature error, forwards and backwards" in {
-    for (hz <- Seq(100e3, -100e3); deg <- Seq(-12.0, 8.0)) {
+    for ((hz, deg) <- Seq(100e3 -> -12.0, -100e3 -> -12.0, 100e3 -> 8.0, -100e3 -> 8.0, 1e6 -> 30.0, -1e6 -> -30.0,
+                          3e6 -> -35.0, 40e3 -> 35.0)) {
       val run = QuadCompSim.run(QuadCompParams(), QuadCompSim.signal(deg, noiseLsb = 0), hz, 12)
       val model = QuadCompSim.modelFor(run.p, QuadCompSim.signal(deg), run.samples.adc)
       val range = run.periodStart(4) until run.samples.length
