@@ -102,6 +102,7 @@ object Reproduce {
     }
     out ++= { progress("subdivision"); moire.subdiv.SubdivAccuracy.rows() }
     out ++= moire.adapt.AdaptFigures.rows(progress)
+    out ++= moire.quadcomp.QuadCompPaper.rows(progress)
     out.result()
   }
 }
