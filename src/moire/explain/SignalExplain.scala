@@ -1,0 +1,125 @@
+package moire.explain
+
+import moire.recording.Recording
+
+/** One accepted effect, as reported. `before`/`after` are the residuals around its acceptance (for plots). */
+final case class Finding(effect: String, channel: String, summary: String, params: Map[String, Double], unc: Map[String, Double],
+                         deltaBic: Double, rmsBefore: Double, rmsAfter: Double, where: String) {
+  def json: ujson.Obj = ujson.Obj("effect" -> effect, "channel" -> channel, "summary" -> summary,
+    "params" -> Report.nums(params), "uncertainty" -> Report.nums(unc), "delta_bic" -> deltaBic,
+    "rms_before" -> rmsBefore, "rms_after" -> rmsAfter, "where" -> where)
+}
+
+/** Residual snapshots for the plots. */
+final case class Snapshot(label: String, resS: Array[Double], resC: Array[Double])
+
+/** explain for signal recordings: default fit, locate, greedy effect search by BIC, final locate. */
+object SignalExplain {
+  /** Accept an effect only when it lowers BIC by more than this (strong evidence on the Kass-Raftery scale). */
+  val Threshold = 10.0
+
+  final case class Result(report: Report, engine: SignalEngine, before: Snapshot, steps: Seq[(Finding, Snapshot, Snapshot)])
+
+  def specOf(model: Seq[EffectSpec], adcBits: Int): ModelSpec = model.foldLeft(ModelSpec()) { (sp, e) =>
+    val ch = if (e.channel == "cos") 1 else 0
+    e.effect match {
+      case "harmonic" => sp.copy(terms = sp.terms :+ Term.Harm(e.p("order", 2).toInt, e.channel))
+      case "drift" => sp.copy(terms = sp.terms :+ Term.Drift)
+      case "amplitude_modulation" => sp.copy(terms = sp.terms :+ Term.Am)
+      case "adc_nonlinearity" => sp.copy(terms = sp.terms :+ Term.Inl)
+      case "crosstalk" => sp.copy(terms = sp.terms :+ Term.Crosstalk)
+      case "interference" => sp.copy(terms = sp.terms :+ Term.Interference(e.p("frequency_hz", 50)))
+      case "channel_skew" => sp.copy(hasSkew = true, skewS = e.p("skew_s", 0.0))
+      case "bandwidth" => sp.copy(bw = sp.bw + (e.channel -> e.p("cutoff_hz", 1e6)))
+      case "jitter" => sp.copy(jitter = true)
+      case "adc_bit_fault" => sp.copy(faults = sp.faults :+ Fault(ch, e.p("bit", 0).toInt, if (e.p("stuck_at").isNaN) -1 else e.p("stuck_at").toInt,
+        if (e.p("bridged_to").isNaN) -1 else e.p("bridged_to").toInt))
+      case "clipping" => sp.copy(clips = sp.clips :+ Clip(ch, e.p("low_fs", Double.NegativeInfinity), e.p("high_fs", Double.PositiveInfinity)))
+      case _ => sp
+    }
+  }
+
+  def run(file: String, rec: Recording, model: Seq[EffectSpec], progress: Progress, maxFindings: Int = 8): Result = {
+    val t0 = System.nanoTime()
+    val e = new SignalEngine(rec)
+    progress.phase("default fit", 4)
+    e.init(); progress.step(4)
+    val givenModel = specOf(model, rec.adc.bits)
+    if (givenModel != ModelSpec()) { e.spec = givenModel; e.refit(3, refineTraj = true); polish(e); e.refit(2, refineTraj = true) }
+    val baseRms = e.rms; val baseBic = e.bic
+    val before = Snapshot("default model", e.resS.clone(), e.resC.clone())
+    val located = Locate.all(e)
+    val steps = Seq.newBuilder[(Finding, Snapshot, Snapshot)]
+    var done = false; var round = 0
+    while (!done && round < maxFindings) {
+      val cands = new Candidates(e)
+      progress.phase(s"effects, round ${round + 1}", cands.steps)
+      val all = cands.all(() => progress.step(1))
+      val bic0 = e.bic
+      def dbic(c: Cand) = bic0 - (c.m2ll + (e.params + c.extraK) * e.lnN)
+      val best = all.filter(c => !dbic(c).isNaN).sortBy(c => -dbic(c)).headOption
+      best match {
+        case Some(c) if dbic(c) > Threshold =>
+          val snapB = Snapshot(s"before ${c.effect}", e.resS.clone(), e.resC.clone())
+          val rmsB = e.rms
+          e.spec = c.spec; e.refit(3, refineTraj = true); polish(e); e.refit(2, refineTraj = true)
+          val snapA = Snapshot(s"after ${c.effect}", e.resS.clone(), e.resC.clone())
+          val f = Finding(c.effect, c.channel, "", c.params, c.unc, bic0 - e.bic, rmsB, e.rms, c.where)
+          steps += ((f, snapB, snapA))
+          round += 1
+        case _ => done = true
+      }
+    }
+    val cands = new Candidates(e)
+    val fin = steps.result().map { case (f, b, a) =>
+      val g = refresh(f, e)
+      (g.copy(summary = Describe.summary(Cand(g.effect, g.channel, e.spec, 0, 0, g.params, g.unc, g.where), cands.fMin, cands.fMax)), b, a)
+    }
+    val unexplained = Locate.all(e).filter(_.significant)
+    val report = Report(file, "signals", baseRms, baseBic, baselineParams(e), located, fin.map(_._1), unexplained, e.rms, e.bic,
+      rec.length, (System.nanoTime() - t0) / 1e9)
+    Result(report, e, before, fin)
+  }
+
+  /** Parameters of a finding from the final joint fit (linear terms) or the final spec (nonlinear). */
+  private def refresh(f: Finding, e: SignalEngine): Finding = {
+    val v = (e.sumSq(e.resS) + e.sumSq(e.resC)) / (2.0 * e.n)
+    e.termIndex.find { case (t, _) => t.name == f.effect && termMatches(t, f) } match {
+      case Some((t, at)) =>
+        val k = e.termCols(t).size
+        val b = e.sol.beta.slice(at, at + k); val sd = (at until at + k).map(i => math.sqrt(math.max(0, e.sol.inv(i)(i)) * v)).toArray
+        val (p, u, _, _) = Describe.term(t, b, sd, e)
+        f.copy(params = p, unc = u)
+      case None => f.effect match {
+        case "channel_skew" => f.copy(params = f.params + ("skew_s" -> e.spec.skewS))
+        case "bandwidth" => f.copy(params = f.params + ("cutoff_hz" -> e.spec.bw.getOrElse(f.channel, f.params("cutoff_hz"))))
+        case "jitter" => f.copy(params = f.params + ("jitter_s" -> math.sqrt(e.noise.jitter2)))
+        case _ => f
+      }
+    }
+  }
+  private def termMatches(t: Term, f: Finding): Boolean = t match {
+    case Term.Harm(k, ch) => f.params.get("order").contains(k.toDouble) && ch == f.channel
+    case _ => true
+  }
+
+  /** Re-optimises the nonlinear parameters (skew, cut-offs) of the current spec. */
+  def polish(e: SignalEngine): Unit = {
+    val c = new Candidates(e); val st = math.max(1, e.n / 250000)
+    if (e.spec.hasSkew) {
+      val t = e.spec.skewS; val span = math.max(math.abs(t) * 0.3, 1e-10)
+      val best = c.minimize(x => c.profile(e.spec.copy(skewS = x), st), t - span, t + span)
+      e.spec = e.spec.copy(skewS = best)
+    }
+    for ((ch, fc) <- e.spec.bw) {
+      val x0 = 1 / fc
+      val best = c.minimize(x => c.profile(e.spec.copy(bw = e.spec.bw + (ch -> 1 / x)), st), x0 * 0.6, x0 * 1.6)
+      e.spec = e.spec.copy(bw = e.spec.bw + (ch -> 1 / best))
+    }
+  }
+
+  def baselineParams(e: SignalEngine): Map[String, Double] = Map(
+    "offset_sin_fs" -> e.base(0), "offset_cos_fs" -> e.base(3), "amplitude_sin_fs" -> e.ampS, "amplitude_cos_fs" -> e.ampC,
+    "phase_error_deg" -> e.phaseErrorDeg, "noise_sin_fs" -> math.sqrt(e.noise.varS), "noise_cos_fs" -> math.sqrt(e.noise.varC),
+    "typical_fringe_hz" -> e.typicalHz, "trajectory_segments" -> e.traj.nseg)
+}
