@@ -32,7 +32,12 @@ final class Candidates(e: SignalEngine) {
 
   def all(onStep: () => Unit): Seq[Cand] = {
     val out = Seq.newBuilder[Cand]
-    def add(c: => Option[Cand]): Unit = { try c.foreach(out += _) finally onStep() }
+    val timing = sys.props.contains("moire.timing")
+    var last = System.nanoTime()
+    def add(c: => Option[Cand]): Unit = {
+      try c.foreach(out += _) finally onStep()
+      if (timing) { val now = System.nanoTime(); System.err.println(f"candidate ${(now - last) / 1e6}%.0f ms"); last = now }
+    }
     for (k <- 2 to 7; ch <- Seq("sin", "cos", "both")) add(linear(Term.Harm(k, ch)).map(_._1))
     add(linear(Term.Drift).map(_._1))
     if (rec.linesPerRev.isDefined) add(linear(Term.Am).map(_._1))
@@ -116,7 +121,7 @@ final class Candidates(e: SignalEngine) {
     Noise.fit(rs, rc, if (sp.jitter) slopes() else null).m2ll
   }
 
-  private def stride: Int = math.max(1, n / 250000)
+  private def stride: Int = math.max(1, n / 50000)
 
   /** Skew between the channels: needs several speeds, else it is a phase error. */
   def skew(): Option[Cand] = {
@@ -132,7 +137,7 @@ final class Candidates(e: SignalEngine) {
     if (!(hi > lo)) return None
     val tau = minimize(x => profile(spec.copy(hasSkew = true, skewS = x), stride), lo, hi)
     val sp = spec.copy(hasSkew = true, skewS = tau)
-    val sd = curvatureSd(x => fullM2ll(spec.copy(hasSkew = true, skewS = x)), tau, math.max(sd0, 1e-12))
+    val sd = curvatureSd(x => profile(spec.copy(hasSkew = true, skewS = x), 1), tau, math.max(sd0, 1e-12))
     val (p, u, where) = Describe.skew(tau, sd, fMin, fMax)
     Some(Cand("channel_skew", "cos", sp, fullM2ll(sp), 1, p, u, where))
   }
@@ -145,7 +150,7 @@ final class Candidates(e: SignalEngine) {
     if (xs <= 0) return None
     val fc = 1 / xs
     val sp = spec.copy(bw = spec.bw + (ch -> fc))
-    val sdx = curvatureSd(x => fullM2ll(spec.copy(bw = spec.bw + (ch -> 1 / x))), xs, xs * 0.05)
+    val sdx = curvatureSd(x => profile(spec.copy(bw = spec.bw + (ch -> 1 / x)), 1), xs, xs * 0.05)
     val (p, u, where) = Describe.bandwidth(ch, fc, sdx / (xs * xs), fMax)
     Some(Cand("bandwidth", ch, sp, fullM2ll(sp), 1, p, u, where))
   }
@@ -187,21 +192,25 @@ final class Candidates(e: SignalEngine) {
     val adc = rec.adc
     val out = Seq.newBuilder[Cand]
     for ((codes, p, ch) <- Seq((rec.sin, predS, 0), (rec.cos, predC, 1))) {
-      val pc = Array.tabulate(n)(i => adc.pins(adc.signedCode(p(i)).code))
+      val pc = new Array[Int](n); var i = 0
+      while (i < n) { pc(i) = adc.pins(adc.signedCode(p(i)).code); i += 1 }
       val need = math.max(20, n / 1000)
-      def bitCount(a: Array[Int], b: Int) = a.count(c => ((c >> b) & 1) == 1)
-      for (b <- 0 until adc.bits) {
-        val m1 = bitCount(codes, b); val p1 = bitCount(pc, b)
-        val fl =
-          if (m1 == 0 && p1 > need) Some(Fault(ch, b, 0, -1))
-          else if (m1 == n && n - p1 > need) Some(Fault(ch, b, 1, -1))
-          else None
-        fl.foreach(f => out ++= faultCand(f))
-        for (o <- Seq(b + 1) if o < adc.bits) {
-          val same = codes.forall(c => ((c >> b) & 1) == ((c >> o) & 1))
-          val pdiff = pc.count(c => ((c >> b) & 1) != ((c >> o) & 1))
-          if (same && pdiff > need && m1 > 0 && m1 < n) out ++= faultCand(Fault(ch, b, -1, o))
+      val bits = adc.bits
+      val m1 = new Array[Int](bits); val p1 = new Array[Int](bits); val diffM = new Array[Int](bits); val diffP = new Array[Int](bits)
+      i = 0
+      while (i < n) {
+        val c = codes(i); val q = pc(i); var b = 0
+        while (b < bits) {
+          m1(b) += (c >> b) & 1; p1(b) += (q >> b) & 1
+          if (b + 1 < bits) { diffM(b) += ((c >> b) ^ (c >> (b + 1))) & 1; diffP(b) += ((q >> b) ^ (q >> (b + 1))) & 1 }
+          b += 1
         }
+        i += 1
+      }
+      for (b <- 0 until bits) {
+        if (m1(b) == 0 && p1(b) > need) out ++= faultCand(Fault(ch, b, 0, -1))
+        else if (m1(b) == n && n - p1(b) > need) out ++= faultCand(Fault(ch, b, 1, -1))
+        if (b + 1 < bits && diffM(b) == 0 && diffP(b) > need && m1(b) > 0 && m1(b) < n) out ++= faultCand(Fault(ch, b, -1, b + 1))
       }
     }
     out.result()

@@ -43,7 +43,7 @@ object Locate {
         Map("chi2_sd" -> z, "phase_deg" -> 360.0 * (w + 0.5) / pb, "mean_lsb" -> m / lsb), z > Z)
     }
     // against speed: in-phase (amplitude) and quadrature (phase) projections per speed bin
-    val sorted = e.freq.map(math.abs).sorted
+    val sorted = e.freq.map(math.abs); java.util.Arrays.sort(sorted)
     val sb = 8
     val edges = (1 until sb).map(k => sorted(k * n / sb))
     def sbin(i: Int) = { val f = math.abs(e.freq(i)); var b = 0; while (b < edges.size && f > edges(b)) b += 1; b }
@@ -88,11 +88,11 @@ object Locate {
     // code histogram: constant bits and pile-ups at the extremes
     for ((codes, ch) <- Seq((e.rec.sin, "sin"), (e.rec.cos, "cos"))) {
       val bits = e.rec.adc.bits
-      val frac = (0 until bits).map(b => codes.count(c => ((c >> b) & 1) == 1).toDouble / n)
+      val hist = new Array[Int](1 << bits); codes.foreach(c => hist(c) += 1)
+      val frac = (0 until bits).map(b => hist.indices.filter(c => ((c >> b) & 1) == 1).map(hist(_).toLong).sum.toDouble / n)
       val stuck = (0 until bits - 2).filter(b => frac(b) == 0.0 || frac(b) == 1.0)
-      val hist = codes.groupBy(identity).map { case (k, v) => k -> v.length }
-      val hi = hist.keys.max; val lo = hist.keys.min
-      def pile(c: Int, nb: Int) = hist(c).toDouble / math.max(1, hist.getOrElse(nb, 0))
+      val hi = hist.lastIndexWhere(_ > 0); val lo = hist.indexWhere(_ > 0)
+      def pile(c: Int, nb: Int) = hist(c).toDouble / math.max(1, if (nb >= 0 && nb < hist.length) hist(nb) else 0)
       val pileHi = pile(hi, hi - 1); val pileLo = pile(lo, lo + 1)
       val sig = stuck.nonEmpty || (pileHi > 8 && hist(hi) > 50) || (pileLo > 8 && hist(lo) > 50)
       out += Located(s"code histogram, $ch channel",

@@ -14,6 +14,7 @@ object Plots {
     val c = new XYChartBuilder().width(900).height(500).title(title).xAxisTitle(x).yAxisTitle(y).build()
     c.getStyler.setLegendPosition(org.knowm.xchart.style.Styler.LegendPosition.InsideNE)
     c.getStyler.setChartBackgroundColor(java.awt.Color.WHITE)
+    c.getStyler.setXAxisDecimalPattern("0.###"); c.getStyler.setYAxisDecimalPattern("0.####")
     c
   }
   def line(c: XYChart, name: String, xs: Array[Double], ys: Array[Double]): Unit = {

@@ -41,6 +41,9 @@ object SignalExplain {
 
   def run(file: String, rec: Recording, model: Seq[EffectSpec], progress: Progress, maxFindings: Int = 8): Result = {
     val t0 = System.nanoTime()
+    val timing = sys.props.contains("moire.timing")
+    var tl = t0
+    def lap(what: String): Unit = if (timing) { val now = System.nanoTime(); System.err.println(f"$what ${(now - tl) / 1e6}%.0f ms"); tl = now }
     val e = new SignalEngine(rec)
     progress.phase("default fit", 4)
     e.init(); progress.step(4)
@@ -48,13 +51,16 @@ object SignalExplain {
     if (givenModel != ModelSpec()) { e.spec = givenModel; e.refit(3, refineTraj = true); polish(e); e.refit(2, refineTraj = true) }
     val baseRms = e.rms; val baseBic = e.bic
     val before = Snapshot("default model", e.resS.clone(), e.resC.clone())
+    lap("default fit")
     val located = Locate.all(e)
+    lap("locate")
     val steps = Seq.newBuilder[(Finding, Snapshot, Snapshot)]
     var done = false; var round = 0
     while (!done && round < maxFindings) {
       val cands = new Candidates(e)
       progress.phase(s"effects, round ${round + 1}", cands.steps)
       val all = cands.all(() => progress.step(1))
+      lap("candidates")
       val bic0 = e.bic
       def dbic(c: Cand) = bic0 - (c.m2ll + (e.params + c.extraK) * e.lnN)
       val best = all.filter(c => !dbic(c).isNaN).sortBy(c => -dbic(c)).headOption
@@ -63,6 +69,7 @@ object SignalExplain {
           val snapB = Snapshot(s"before ${c.effect}", e.resS.clone(), e.resC.clone())
           val rmsB = e.rms
           e.spec = c.spec; e.refit(3, refineTraj = true); polish(e); e.refit(2, refineTraj = true)
+          lap("refit")
           val snapA = Snapshot(s"after ${c.effect}", e.resS.clone(), e.resC.clone())
           val f = Finding(c.effect, c.channel, "", c.params, c.unc, bic0 - e.bic, rmsB, e.rms, c.where)
           steps += ((f, snapB, snapA))
@@ -105,7 +112,7 @@ object SignalExplain {
 
   /** Re-optimises the nonlinear parameters (skew, cut-offs) of the current spec. */
   def polish(e: SignalEngine): Unit = {
-    val c = new Candidates(e); val st = math.max(1, e.n / 250000)
+    val c = new Candidates(e); val st = math.max(1, e.n / 50000)
     if (e.spec.hasSkew) {
       val t = e.spec.skewS; val span = math.max(math.abs(t) * 0.3, 1e-10)
       val best = c.minimize(x => c.profile(e.spec.copy(skewS = x), st), t - span, t + span)
