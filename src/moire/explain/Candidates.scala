@@ -21,7 +21,7 @@ final class Candidates(e: SignalEngine) {
     val s = LinearFit.solve(cols, resS, resC)
     if (!s.ok) return None
     val rs = sub(resS, LinearFit.combine(cols, s.beta, sinCh = true, n)); val rc = sub(resC, LinearFit.combine(cols, s.beta, sinCh = false, n))
-    val nz = Noise.fit(rs, rc, if (spec.jitter) slopes() else null)
+    val nz = Noise.fit(rs, rc, if (spec.jitter) slopes() else null, cens)
     val v = (sumSq(rs) + sumSq(rc)) / (2.0 * n)
     val b = s.beta.drop(6); val sd = (6 until s.beta.length).map(i => math.sqrt(math.max(0, s.inv(i)(i)) * v)).toArray
     val (p, u, where, ch) = Describe.term(t, b, sd, e)
@@ -118,7 +118,7 @@ final class Candidates(e: SignalEngine) {
     val ts = sub(repS, termPredS); val tcc = sub(repC, termPredC)
     val s = LinearFit.solve(cols, ts, tcc)
     val rs = sub(ts, LinearFit.combine(cols, s.beta, sinCh = true, n)); val rc = sub(tcc, LinearFit.combine(cols, s.beta, sinCh = false, n))
-    Noise.fit(rs, rc, if (sp.jitter) slopes() else null).m2ll
+    Noise.fit(rs, rc, if (sp.jitter) slopes() else null, cens).m2ll
   }
 
   private def stride: Int = math.max(1, n / 50000)
@@ -158,7 +158,7 @@ final class Candidates(e: SignalEngine) {
   def jitter(): Option[Cand] = {
     if (spec.jitter || fMax <= 0) return None
     val (ds, dc) = slopes()
-    val nz = Noise.fit(resS, resC, (ds, dc))
+    val nz = Noise.fit(resS, resC, (ds, dc), cens)
     if (nz.jitter2 <= 0) return None
     var info = 0.0; var i = 0
     while (i < n) {
@@ -219,8 +219,8 @@ final class Candidates(e: SignalEngine) {
   private def faultCand(f: Fault): Option[Cand] = {
     if (spec.faults.exists(g => g.ch == f.ch && g.bit == f.bit)) return None
     val sp = spec.copy(faults = spec.faults :+ f)
-    val (rs, rc) = repair(sp, predS, predC)
-    val nz = Noise.fit(sub(rs, predS), sub(rc, predC), if (spec.jitter) slopes() else null)
+    val r = repair(sp, predS, predC)
+    val nz = Noise.fit(sub(r.s, predS), sub(r.c, predC), if (spec.jitter) slopes() else null, r)
     val (p, u, where) = Describe.fault(f, rec.adc)
     Some(Cand("adc_bit_fault", if (f.ch == 0) "sin" else "cos", sp, nz.m2ll, 1, p, u, where))
   }
@@ -228,7 +228,8 @@ final class Candidates(e: SignalEngine) {
   /** Saturation below the ADC rails: a pile-up of samples at one extreme code the model exceeds. */
   def clips(): Seq[Cand] = {
     val out = Seq.newBuilder[Cand]
-    for ((y, p, ch) <- Seq((ys, predS, 0), (yc, predC, 1)) if !spec.clips.exists(_.ch == ch)) {
+    val raw = repair(spec, predS, predC, censor = false)
+    for ((y, p, ch) <- Seq((raw.s, predS, 0), (raw.c, predC, 1)) if !spec.clips.exists(_.ch == ch)) {
       val hi = y.max; val lo = y.min
       val atHi = y.count(_ >= hi - 0.5 * lsb); val atLo = y.count(_ <= lo + 0.5 * lsb)
       val need = math.max(20, n / 2000)
@@ -238,8 +239,8 @@ final class Candidates(e: SignalEngine) {
       if (useHi || useLo) {
         val c = Clip(ch, if (useLo) lo else Double.NegativeInfinity, if (useHi) hi else Double.PositiveInfinity)
         val sp = spec.copy(clips = spec.clips :+ c)
-        val (rs, rc) = repair(sp, predS, predC)
-        val nz = Noise.fit(sub(rs, predS), sub(rc, predC), if (spec.jitter) slopes() else null)
+        val r = repair(sp, predS, predC)
+        val nz = Noise.fit(sub(r.s, predS), sub(r.c, predC), if (spec.jitter) slopes() else null, r)
         val (pp, u, where) = Describe.clip(c, atLo, atHi, n)
         out += Cand("clipping", if (ch == 0) "sin" else "cos", sp, nz.m2ll, c.params, pp, u, where)
       }

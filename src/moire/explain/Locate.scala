@@ -64,9 +64,10 @@ object Locate {
       // noise against speed (jitter-like)
       val ss = new Array[Double](sb); val cnt = new Array[Int](sb); var i = 0
       while (i < n) { val b = sbin(i); ss(b) += rs(i) * rs(i) / (sdS * sdS) + rc(i) * rc(i) / (sdC * sdC); cnt(b) += 2; i += 1 }
-      val ratio = (0 until sb).map(b => ss(b) / math.max(1, cnt(b)))
+      val all = ss.sum / math.max(1, cnt.sum)
+      val ratio = (0 until sb).map(b => ss(b) / math.max(1, cnt(b)) / all)
       val zz = (0 until sb).map(b => (ratio(b) - 1) / math.sqrt(2.0 / math.max(1, cnt(b))))
-      val z = zOf(zz.map(x => x * x).sum, sb)
+      val z = zOf(zz.map(x => x * x).sum, sb - 1)
       out += Located("noise against speed", f"residual variance x${ratio.head}%.3f at low speed, x${ratio.last}%.3f at high speed (chi-square $z%.1f sd)",
         Map("chi2_sd" -> z, "variance_low_rel" -> ratio.head, "variance_high_rel" -> ratio.last), z > Z)
     }
@@ -88,17 +89,21 @@ object Locate {
     // code histogram: constant bits and pile-ups at the extremes
     for ((codes, ch) <- Seq((e.rec.sin, "sin"), (e.rec.cos, "cos"))) {
       val bits = e.rec.adc.bits
-      val hist = new Array[Int](1 << bits); codes.foreach(c => hist(c) += 1)
-      val frac = (0 until bits).map(b => hist.indices.filter(c => ((c >> b) & 1) == 1).map(hist(_).toLong).sum.toDouble / n)
+      val adc = e.rec.adc
+      val pins = new Array[Int](1 << bits); codes.foreach(c => pins(c) += 1)
+      val frac = (0 until bits).map(b => pins.indices.filter(c => ((c >> b) & 1) == 1).map(pins(_).toLong).sum.toDouble / n)
+      val hist = new Array[Int](1 << bits); codes.foreach(c => hist(adc.fromPins(c) + adc.half) += 1)
       val stuck = (0 until bits - 2).filter(b => frac(b) == 0.0 || frac(b) == 1.0)
       val hi = hist.lastIndexWhere(_ > 0); val lo = hist.indexWhere(_ > 0)
       def pile(c: Int, nb: Int) = hist(c).toDouble / math.max(1, if (nb >= 0 && nb < hist.length) hist(nb) else 0)
       val pileHi = pile(hi, hi - 1); val pileLo = pile(lo, lo + 1)
-      val sig = stuck.nonEmpty || (pileHi > 8 && hist(hi) > 50) || (pileLo > 8 && hist(lo) > 50)
+      val chi = if (ch == "sin") 0 else 1
+      val faulty = e.spec.faults.filter(_.ch == chi).map(_.bit).toSet; val clipped = e.spec.clips.exists(_.ch == chi)
+      val sig = stuck.exists(b => !faulty.contains(b)) || (!clipped && ((pileHi > 8 && hist(hi) > 50 && hi < hist.length - 1) || (pileLo > 8 && hist(lo) > 50 && lo > 0)))
       out += Located(s"code histogram, $ch channel",
         (if (stuck.nonEmpty) s"bits ${stuck.mkString(",")} never change; " else "") +
-          f"codes $lo..$hi, ${hist(hi)} samples at the top code (${pileHi}%.1f x its neighbour), ${hist(lo)} at the bottom (${pileLo}%.1f x)",
-        Map("code_min" -> lo, "code_max" -> hi, "pile_high" -> pileHi, "pile_low" -> pileLo, "constant_bits" -> stuck.size), sig)
+          f"signed codes ${lo - adc.half}..${hi - adc.half}, ${hist(hi)} samples at the top code (${pileHi}%.1f x its neighbour), ${hist(lo)} at the bottom (${pileLo}%.1f x)",
+        Map("code_min" -> (lo - adc.half), "code_max" -> (hi - adc.half), "pile_high" -> pileHi, "pile_low" -> pileLo, "constant_bits" -> stuck.size), sig)
     }
     out.result()
   }

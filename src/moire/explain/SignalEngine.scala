@@ -24,6 +24,7 @@ final class SignalEngine(val rec: Recording) {
   val us = new Array[Double](n); val vs = new Array[Double](n); val uc = new Array[Double](n); val vc = new Array[Double](n)
   var predS = new Array[Double](n); var predC = new Array[Double](n)
   var repS: Array[Double] = ys; var repC: Array[Double] = yc
+  var cens: Repaired = Repaired(ys, yc, null, null)
   val resS = new Array[Double](n); val resC = new Array[Double](n)
   var termPredS = new Array[Double](n); var termPredC = new Array[Double](n)
 
@@ -60,10 +61,15 @@ final class SignalEngine(val rec: Recording) {
     val blk = math.max(16, math.min(4096, n / 64))
     val speeds = (0 until n / blk).map(b => math.abs(raw((b + 1) * blk - 1) - raw(b * blk)) * fs / (blk - 1)).sorted
     typicalHz = if (speeds.isEmpty) 0.0 else speeds(speeds.size / 2)
-    traj = new Trajectory(n, Trajectory.segmentLength(n, fs, typicalHz), fs)
-    traj.addFit(raw, null); evalTraj()
-    base = Array(os, as, 0, oc, 0, ac)
-    refit(4, refineTraj = true)
+    // segment length: the one of 16, 6 or 2.5 fringe periods that gives the lowest BIC
+    def start(len: Int): Unit = {
+      traj = new Trajectory(n, len, fs); traj.addFit(raw, null); evalTraj()
+      base = Array(os, as, 0, oc, 0, ac); spec = ModelSpec(); cens = Repaired(ys, yc, null, null); repS = ys; repC = yc
+      refit(4, refineTraj = true)
+    }
+    val lens = Seq(16.0, 6.0, 2.5).map(p => Trajectory.segmentLength(n, fs, typicalHz, p)).distinct
+    val best = if (lens.size == 1) lens.head else lens.minBy { l => start(l); bic }
+    start(best)
   }
 
   private def mid(a: Array[Double]): (Double, Double) = {
@@ -148,13 +154,16 @@ final class SignalEngine(val rec: Recording) {
     o
   }
 
-  /** Measured values with faults undone (closest preimage to the prediction) and saturated samples censored. */
-  def repair(sp: ModelSpec, ps: Array[Double], pc: Array[Double]): (Array[Double], Array[Double]) = {
+  /** Measured values with faults undone (closest preimage to the prediction); samples at a saturation level
+    * (ADC rails or a clipping effect) are censored: their value is replaced by the prediction and `cens` holds
+    * the distance from the prediction up to the level (NaN where not censored), for the Tobit likelihood.
+    */
+  def repair(sp: ModelSpec, ps: Array[Double], pc: Array[Double], censor: Boolean = true): Repaired = {
     val adc = rec.adc
-    def one(ch: Int, y: Array[Double], codes: Array[Int], p: Array[Double]): Array[Double] = {
+    def one(ch: Int, y: Array[Double], codes: Array[Int], p: Array[Double]): (Array[Double], Array[Double]) = {
       val fl = sp.faults.filter(_.ch == ch); val cl = sp.clips.filter(_.ch == ch)
       val lo = (railLo +: cl.map(_.lo)).max; val hi = (railHi +: cl.map(_.hi)).min
-      val out = y.clone(); var i = 0
+      val out = y.clone(); val cen = Array.fill(n)(Double.NaN); var i = 0
       while (i < n) {
         if (fl.nonEmpty) {
           var best = codes(i); var bestD = Double.MaxValue
@@ -162,12 +171,14 @@ final class SignalEngine(val rec: Recording) {
           cands.foreach { c => val v = adc.fromPins(c) * lsb; val d = math.abs(v - p(i)); if (d < bestD) { bestD = d; best = c } }
           out(i) = adc.fromPins(best) * lsb
         }
-        if ((out(i) >= hi - 0.5 * lsb && p(i) > out(i)) || (out(i) <= lo + 0.5 * lsb && p(i) < out(i))) out(i) = p(i)
+        if (censor && out(i) >= hi - 0.5 * lsb) { cen(i) = out(i) - 0.5 * lsb - p(i); out(i) = p(i) }
+        else if (censor && out(i) <= lo + 0.5 * lsb) { cen(i) = p(i) - (out(i) + 0.5 * lsb); out(i) = p(i) }
         i += 1
       }
-      out
+      (out, cen)
     }
-    (one(0, ys, rec.sin, ps), one(1, yc, rec.cos, pc))
+    val (a, ca) = one(0, ys, rec.sin, ps); val (b, cb) = one(1, yc, rec.cos, pc)
+    Repaired(a, b, ca, cb)
   }
 
   /** Refits the default part and all linear terms (and the trajectory) for the current spec. */
@@ -183,7 +194,7 @@ final class SignalEngine(val rec: Recording) {
         }
         traj.addFit(d, w); evalTraj()
       }
-      if (it > 0) { val r = repair(spec, predS, predC); repS = r._1; repC = r._2 }
+      if (it > 0) { val r = repair(spec, predS, predC); repS = r.s; repC = r.c; cens = r }
       fundamentals(spec, s1, s2, c1, c2)
       if (it == 0) uv()
       val tcols = spec.terms.map(t => t -> termCols(t))
@@ -197,8 +208,16 @@ final class SignalEngine(val rec: Recording) {
       residual()
       uv()
       it += 1
+      noise = Noise.fit(resS, resC, if (spec.jitter) slopes() else null, cens)
+      if (SignalEngine.debug) System.err.println(f"refit $it: rms $rms%.4g bic $bic%.8g")
     }
-    noise = Noise.fit(resS, resC, if (spec.jitter) slopes() else null)
+  }
+
+  /** Refits until BIC stops falling (fault repairs and the trajectory settle over a few iterations). */
+  def converge(maxIters: Int = 12): Unit = {
+    refit(3, refineTraj = true)
+    var prev = Double.PositiveInfinity; var k = 3
+    while (k < maxIters && prev - bic > 0.5) { prev = bic; refit(2, refineTraj = true); k += 2 }
   }
 
   def residual(): Unit = { var i = 0; while (i < n) { resS(i) = repS(i) - predS(i); resC(i) = repC(i) - predC(i); i += 1 } }
@@ -220,16 +239,33 @@ final class SignalEngine(val rec: Recording) {
   def sumSq(a: Array[Double]): Double = { var s = 0.0; var i = 0; while (i < a.length) { s += a(i) * a(i); i += 1 }; s }
 }
 
+object SignalEngine { val debug: Boolean = sys.props.contains("moire.debug") }
+
 /** Noise model: per-channel white variance plus jitter variance jitter2 * slope^2; m2ll = -2 ln L. */
 final case class Noise(varS: Double, varC: Double, jitter2: Double, m2ll: Double)
 object Noise {
-  def fit(rs: Array[Double], rc: Array[Double], slope: (Array[Double], Array[Double])): Noise = {
+  /** -2 ln Q(d / sd) summed over censored samples (d = distance from prediction up to the level). */
+  private def censored(cen: Array[Double], sd: Int => Double): (Double, Int) = {
+    if (cen == null) return (0.0, 0)
+    var m = 0.0; var k = 0; var i = 0
+    while (i < cen.length) {
+      if (!cen(i).isNaN) { m -= 2 * math.log(math.max(1e-300, 0.5 * org.hipparchus.special.Erf.erfc(cen(i) / (sd(i) * math.sqrt(2))))); k += 1 }
+      i += 1
+    }
+    (m, k)
+  }
+
+  def fit(rs: Array[Double], rc: Array[Double], slope: (Array[Double], Array[Double]), cens: Repaired = null): Noise = {
     val n = rs.length
     def ss(a: Array[Double]) = { var s = 0.0; var i = 0; while (i < n) { s += a(i) * a(i); i += 1 }; s }
     val floor = 1e-30
+    val cs = if (cens == null) null else cens.censS; val cc = if (cens == null) null else cens.censC
+    def count(c: Array[Double]) = if (c == null) 0 else c.count(!_.isNaN)
     if (slope == null) {
-      val vs = math.max(floor, ss(rs) / n); val vc = math.max(floor, ss(rc) / n)
-      return Noise(vs, vc, 0, n * (math.log(2 * math.Pi * vs) + 1) + n * (math.log(2 * math.Pi * vc) + 1))
+      val ns = math.max(1, n - count(cs)); val nc = math.max(1, n - count(cc))
+      val vs = math.max(floor, ss(rs) / ns); val vc = math.max(floor, ss(rc) / nc)
+      val (ms, _) = censored(cs, _ => math.sqrt(vs)); val (mc, _) = censored(cc, _ => math.sqrt(vc))
+      return Noise(vs, vc, 0, ns * (math.log(2 * math.Pi * vs) + 1) + nc * (math.log(2 * math.Pi * vc) + 1) + ms + mc)
     }
     val (ds, dc) = slope
     var vs = ss(rs) / n; var vc = ss(rc) / n; var j2 = 0.0
@@ -254,9 +290,14 @@ object Noise {
     var m2 = 0.0; var i = 0
     while (i < n) {
       val a = vs + j2 * ds(i) * ds(i); val b = vc + j2 * dc(i) * dc(i)
-      m2 += math.log(2 * math.Pi * a) + rs(i) * rs(i) / a + math.log(2 * math.Pi * b) + rc(i) * rc(i) / b
+      if (cs == null || cs(i).isNaN) m2 += math.log(2 * math.Pi * a) + rs(i) * rs(i) / a
+      if (cc == null || cc(i).isNaN) m2 += math.log(2 * math.Pi * b) + rc(i) * rc(i) / b
       i += 1
     }
+    m2 += censored(cs, k => math.sqrt(vs + j2 * ds(k) * ds(k)))._1 + censored(cc, k => math.sqrt(vc + j2 * dc(k) * dc(k)))._1
     Noise(vs, vc, j2, m2)
   }
 }
+
+/** Repaired data of both channels and their censoring distances (NaN = not censored; null = none). */
+final case class Repaired(s: Array[Double], c: Array[Double], censS: Array[Double], censC: Array[Double])

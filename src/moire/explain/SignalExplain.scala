@@ -48,7 +48,7 @@ object SignalExplain {
     progress.phase("default fit", 4)
     e.init(); progress.step(4)
     val givenModel = specOf(model, rec.adc.bits)
-    if (givenModel != ModelSpec()) { e.spec = givenModel; e.refit(3, refineTraj = true); polish(e); e.refit(2, refineTraj = true) }
+    if (givenModel != ModelSpec()) { e.spec = givenModel; e.converge(); polish(e); e.converge() }
     val baseRms = e.rms; val baseBic = e.bic
     val before = Snapshot("default model", e.resS.clone(), e.resC.clone())
     lap("default fit")
@@ -68,7 +68,7 @@ object SignalExplain {
         case Some(c) if dbic(c) > Threshold =>
           val snapB = Snapshot(s"before ${c.effect}", e.resS.clone(), e.resC.clone())
           val rmsB = e.rms
-          e.spec = c.spec; e.refit(3, refineTraj = true); polish(e); e.refit(2, refineTraj = true)
+          e.spec = c.spec; e.converge(); polish(e); e.converge()
           lap("refit")
           val snapA = Snapshot(s"after ${c.effect}", e.resS.clone(), e.resC.clone())
           val f = Finding(c.effect, c.channel, "", c.params, c.unc, bic0 - e.bic, rmsB, e.rms, c.where)

@@ -70,9 +70,9 @@ object Trajectory {
     x
   }
 
-  /** Segment length for a recording: about 16 fringe periods at the typical speed, 256 .. 65536 samples. */
-  def segmentLength(n: Int, fs: Double, typicalHz: Double): Int = {
-    val l = if (typicalHz > 0) 16 * fs / typicalHz else n.toDouble
-    math.max(256, math.min(65536, math.min(n, l.toInt)))
+  /** Segment length for a recording: `periods` fringe periods at the typical speed, 64 .. 65536 samples. */
+  def segmentLength(n: Int, fs: Double, typicalHz: Double, periods: Double): Int = {
+    val l = if (typicalHz > 0) periods * fs / typicalHz else n.toDouble
+    math.max(64, math.min(65536, math.min(n, l.toInt)))
   }
 }
