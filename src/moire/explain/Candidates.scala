@@ -147,7 +147,8 @@ final class Candidates(e: SignalEngine) {
     if (spec.bw.contains(ch) || fMax <= 0 || (fMax - fMin) < 0.05 * fMax) return None
     val hiX = 5 / fMax
     val xs = minimize(x => profile(spec.copy(bw = spec.bw + (ch -> (if (x <= 0) Double.PositiveInfinity else 1 / x))), stride), 0, hiX, grid = 16)
-    if (xs <= 0) return None
+    // a cut-off far above the fringe frequencies shows only as a delay, which is a skew, not a bandwidth
+    if (xs <= 1 / (50 * fMax)) return None
     val fc = 1 / xs
     val sp = spec.copy(bw = spec.bw + (ch -> fc))
     val sdx = curvatureSd(x => profile(spec.copy(bw = spec.bw + (ch -> 1 / x)), 1), xs, xs * 0.05)

@@ -48,7 +48,7 @@ object SignalExplain {
     progress.phase("default fit", 4)
     e.init(); progress.step(4)
     val givenModel = specOf(model, rec.adc.bits)
-    if (givenModel != ModelSpec()) { e.spec = givenModel; e.converge(); polish(e); e.converge() }
+    if (givenModel != ModelSpec()) { e.spec = givenModel; e.converge(); settle(e) }
     val baseRms = e.rms; val baseBic = e.bic
     val before = Snapshot("default model", e.resS.clone(), e.resC.clone())
     lap("default fit")
@@ -68,7 +68,7 @@ object SignalExplain {
         case Some(c) if dbic(c) > Threshold =>
           val snapB = Snapshot(s"before ${c.effect}", e.resS.clone(), e.resC.clone())
           val rmsB = e.rms
-          e.spec = c.spec; e.converge(); polish(e); e.converge()
+          e.spec = c.spec; e.converge(); settle(e)
           lap("refit")
           val snapA = Snapshot(s"after ${c.effect}", e.resS.clone(), e.resC.clone())
           val f = Finding(c.effect, c.channel, "", c.params, c.unc, bic0 - e.bic, rmsB, e.rms, c.where)
@@ -108,6 +108,13 @@ object SignalExplain {
   private def termMatches(t: Term, f: Finding): Boolean = t match {
     case Term.Harm(k, ch) => f.params.get("order").contains(k.toDouble) && ch == f.channel
     case _ => true
+  }
+
+  /** Alternates polishing the nonlinear parameters and refitting until BIC settles (at most 4 times). */
+  def settle(e: SignalEngine): Unit = {
+    if (!e.spec.hasSkew && e.spec.bw.isEmpty) return
+    var prev = Double.PositiveInfinity; var k = 0
+    while (k < 4 && prev - e.bic > 0.5) { prev = e.bic; polish(e); e.converge(); k += 1 }
   }
 
   /** Re-optimises the nonlinear parameters (skew, cut-offs) of the current spec. */
