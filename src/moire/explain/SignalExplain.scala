@@ -64,14 +64,16 @@ object SignalExplain {
       val bic0 = e.bic
       def dbic(c: Cand) = bic0 - (c.m2ll + (e.params + c.extraK) * e.lnN)
       val best = all.filter(c => !dbic(c).isNaN).sortBy(c => -dbic(c)).headOption
+      if (SignalEngine.debug) all.sortBy(c => -dbic(c)).take(6).foreach(c => System.err.println(f"  candidate ${c.effect}%s ${c.channel}%s ${c.params}%s dBIC ${dbic(c)}%.1f"))
       best match {
         case Some(c) if dbic(c) > Threshold =>
           val snapB = Snapshot(s"before ${c.effect}", e.resS.clone(), e.resC.clone())
           val rmsB = e.rms
           e.spec = c.spec; e.converge(); settle(e)
+          val c1 = demote(e, c)
           lap("refit")
           val snapA = Snapshot(s"after ${c.effect}", e.resS.clone(), e.resC.clone())
-          val f = Finding(c.effect, c.channel, "", c.params, c.unc, bic0 - e.bic, rmsB, e.rms, c.where)
+          val f = Finding(c1.effect, c1.channel, "", c1.params, c1.unc, bic0 - e.bic, rmsB, e.rms, c1.where)
           steps += ((f, snapB, snapA))
           round += 1
         case _ => done = true
@@ -108,6 +110,24 @@ object SignalExplain {
   private def termMatches(t: Term, f: Finding): Boolean = t match {
     case Term.Harm(k, ch) => f.params.get("order").contains(k.toDouble) && ch == f.channel
     case _ => true
+  }
+
+  /** A harmonic accepted on both channels whose part on one channel is not significant after the refit
+    * (the phase trajectory had leaked it there) becomes a one-channel harmonic.
+    */
+  private def demote(e: SignalEngine, c: Cand): Cand = e.spec.terms.lastOption match {
+    case Some(t @ Term.Harm(k, "both")) if e.termIndex.contains(t) =>
+      val at = e.termIndex(t); val v = (e.sumSq(e.resS) + e.sumSq(e.resC)) / (2.0 * e.n)
+      def chi2(j: Int) = (j until j + 2).map(i => e.sol.beta(i) * e.sol.beta(i) / math.max(1e-300, e.sol.inv(i)(i) * v)).sum
+      val need = 2 * e.lnN + Threshold
+      val keep = Seq("sin" -> chi2(at), "cos" -> chi2(at + 2)).filter(_._2 > need).map(_._1)
+      if (keep.size != 1) c
+      else {
+        val t1 = Term.Harm(k, keep.head)
+        e.spec = e.spec.copy(terms = e.spec.terms.init :+ t1); e.converge()
+        c.copy(channel = keep.head, spec = e.spec, where = s"against fringe phase: ${keep.head} channel, order $k")
+      }
+    case _ => c
   }
 
   /** Alternates polishing the nonlinear parameters and refitting until BIC settles (at most 4 times). */
