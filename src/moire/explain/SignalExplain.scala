@@ -49,7 +49,7 @@ object SignalExplain {
     e.init(); progress.step(4)
     val givenModel = specOf(model, rec.adc.bits)
     if (givenModel != ModelSpec()) { e.spec = givenModel; e.converge(); settle(e) }
-    val baseRms = e.rms; val baseBic = e.bic
+    val baseRms = e.rms; val baseBic = e.bic; val baseParams = baselineParams(e)
     val before = Snapshot("default model", e.resS.clone(), e.resC.clone())
     lap("default fit")
     val located = Locate.all(e)
@@ -85,7 +85,7 @@ object SignalExplain {
       (g.copy(summary = Describe.summary(Cand(g.effect, g.channel, e.spec, 0, 0, g.params, g.unc, g.where), cands.fMin, cands.fMax)), b, a)
     }
     val unexplained = Locate.all(e).filter(_.significant)
-    val report = Report(file, "signals", baseRms, baseBic, baselineParams(e), located, fin.map(_._1), unexplained, e.rms, e.bic,
+    val report = Report(file, "signals", baseRms, baseBic, baseParams, located, fin.map(_._1), unexplained, e.rms, e.bic,
       rec.length, (System.nanoTime() - t0) / 1e9)
     Result(report, e, before, fin)
   }
