@@ -76,12 +76,12 @@ object Describe {
       case "harmonic" =>
         f"harmonic ${g("order").toInt} of the fringe on ${if (c.channel == "both") "both channels" else s"the ${c.channel} channel"}: ${100 * g("amplitude_rel")}%.3f %% of the fundamental"
       case "drift" =>
-        f"offsets drift ${g("offset_sin_per_s") * 2048}%.3g / ${g("offset_cos_per_s") * 2048}%.3g LSB12/s (sin/cos), amplitudes ${100 * g("gain_sin_per_s")}%.3g / ${100 * g("gain_cos_per_s")}%.3g %%/s"
+        f"offsets drift ${g("offset_sin_per_s")}%.3g / ${g("offset_cos_per_s")}%.3g full scale per second (sin/cos), amplitudes ${100 * g("gain_sin_per_s")}%.3g / ${100 * g("gain_cos_per_s")}%.3g %% per second"
       case "amplitude_modulation" => f"amplitude follows the mechanical angle: ${100 * g("depth")}%.2f %% modulation once per revolution"
       case "adc_nonlinearity" => f"ADC integral nonlinearity: bow ${g("inl2_lsb")}%.2f LSB, S-shape ${g("inl3_lsb")}%.2f LSB at full scale"
       case "crosstalk" => f"capacitive crosstalk: sin gets ${g("sin_from_cos_tau_s") * 1e9}%.2f ns x d(cos)/dt, cos gets ${g("cos_from_sin_tau_s") * 1e9}%.2f ns x d(sin)/dt"
-      case "interference" => f"pickup at ${g("frequency_hz")}%.1f Hz, ${g("amplitude_fs") * 2048}%.2f LSB12 amplitude"
-      case "jitter" => f"sampling clock jitter ${g("jitter_s") * 1e12}%.1f ps rms: noise grows with the signal slope, beside ${g("white_noise_fs") * 2048}%.2f LSB12 white noise"
+      case "interference" => f"pickup at ${g("frequency_hz")}%.1f Hz, ${g("amplitude_fs")}%.3g full scale amplitude"
+      case "jitter" => f"sampling clock jitter ${g("jitter_s") * 1e12}%.1f ps rms: noise grows with the signal slope, beside ${g("white_noise_fs")}%.3g full scale white noise"
       case "adc_bit_fault" =>
         if (p.contains("stuck_at")) f"${c.channel} ADC data line ${g("bit").toInt} stuck at ${g("stuck_at").toInt}"
         else f"${c.channel} ADC data lines ${g("bit").toInt} and ${g("bridged_to").toInt} bridged (wired AND)"

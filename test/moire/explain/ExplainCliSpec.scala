@@ -37,6 +37,24 @@ class ExplainCliSpec extends AnyFlatSpec with Matchers {
     pngs should contain allOf ("rec_residual_time.png", "rec_residual_phase.png", "rec_residual_spectrum.png", "rec_effect_1_channel_skew.png")
   }
 
+  "explain on calibration data" should "write a calibration report and its plots" in {
+    val dir = os.temp.dir()
+    val rows = for (d <- Seq("cw", "ccw"); k <- 0 until 360) yield {
+      val r = math.toRadians(k); val e = 4 * math.cos(r) + 1.5 * math.sin(2 * r) + 0.8 * math.cos(5 * r) + (if (d == "cw") 0.3 else -0.3) +
+        0.2 * math.sin(k * 12.9898 + (if (d == "cw") 0 else 1)) // deterministic small scatter
+      s"$k,$e,$d"
+    }
+    os.write(dir / "turntable.csv", ("# moire-calibration v1\n# instrument: test\nangle_deg,error_arcsec,direction\n" +: rows).mkString("\n") + "\n")
+    val (c, out, err) = run("explain", (dir / "turntable.csv").toString, "--json-dir", (dir / "j").toString, "--plots", (dir / "p").toString)
+    withClue(err) { c shouldBe 0 }
+    val j = ujson.read(os.read(dir / "j" / "turntable.json"))
+    j("kind").str shouldBe "calibration"
+    j("findings").arr.map(_("effect").str).toSet shouldBe Set("harmonic_order", "reversal")
+    j("findings").arr.find(_("effect").str == "reversal").get("params")("reversal_arcsec").num shouldBe 0.6 +- 0.05
+    os.list(dir / "p").map(_.last) should contain allOf ("turntable_fit.png", "turntable_residual_angle.png", "turntable_residual_spectrum.png")
+    out should include("harmonic_order")
+  }
+
   "explain" should "name the file and line of malformed input, exit 2, one line" in {
     val dir = os.temp.dir()
     os.write(dir / "bad.csv", "# moire-recording v1\n# sample_rate_hz: 1e6\n# adc_bits: 12\nsin,cos\n1,2\n3\n")
