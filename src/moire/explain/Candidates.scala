@@ -179,6 +179,7 @@ final class Candidates(e: SignalEngine) {
     for (r <- Seq(resS, resC)) { val p = Fft.power(r, m); for (k <- 1 until m / 2) ps(k) += p(k) }
     val k0 = (4 until m / 2).maxBy(ps(_))
     val bin = fs / m
+    if (spec.terms.exists { case Term.Interference(h) => math.abs(h - k0 * bin) < 3 * bin; case _ => false }) return None
     def power(hz: Double): Double = {
       var a = 0.0; var b = 0.0; var c = 0.0; var d = 0.0; var i = 0
       val st = stride

@@ -86,7 +86,7 @@ object SignalExplain {
     }
     val unexplained = Locate.all(e).filter(_.significant)
     val report = Report(file, "signals", baseRms, baseBic, baseParams, located, fin.map(_._1), unexplained, e.rms, e.bic,
-      rec.length, (System.nanoTime() - t0) / 1e9)
+      rec.length, (System.nanoTime() - t0) / 1e9, notes(e))
     Result(report, e, before, fin)
   }
 
@@ -109,6 +109,7 @@ object SignalExplain {
   }
   private def termMatches(t: Term, f: Finding): Boolean = t match {
     case Term.Harm(k, ch) => f.params.get("order").contains(k.toDouble) && ch == f.channel
+    case Term.Interference(hz) => f.params.get("frequency_hz").contains(hz)
     case _ => true
   }
 
@@ -150,6 +151,13 @@ object SignalExplain {
       val best = c.minimize(x => c.profile(e.spec.copy(bw = e.spec.bw + (ch -> 1 / x)), st), x0 * 0.6, x0 * 1.6)
       e.spec = e.spec.copy(bw = e.spec.bw + (ch -> 1 / best))
     }
+  }
+
+  /** Warnings about the recording itself. */
+  def notes(e: SignalEngine): Seq[String] = {
+    val sd = math.sqrt(math.min(e.noise.varS, e.noise.varC)) / e.lsb
+    (if (sd < 0.5) Seq(f"noise is $sd%.2f LSB rms, below 0.5 LSB: the quantization error is not white noise here, so structure below about 1 LSB may be quantization, not physics") else Nil) ++
+      (if (e.typicalHz * 4 > e.fs) Seq("fewer than 4 samples per fringe period: the phase trajectory is poorly sampled") else Nil)
   }
 
   def baselineParams(e: SignalEngine): Map[String, Double] = Map(
