@@ -57,7 +57,6 @@ final class Candidates(e: SignalEngine) {
 
   /** -2 ln L (white noise per channel) of the default part refitted with modified fundamentals, on every stride-th sample, scaled to n. */
   def profile(sp: ModelSpec, stride: Int): Double = {
-    val a1 = new Array[Double](1); val a2 = a1
     val fcB = sp.bw.getOrElse("both", Double.PositiveInfinity); val fcS = sp.bw.getOrElse("sin", Double.PositiveInfinity)
     val fcC = sp.bw.getOrElse("cos", Double.PositiveInfinity); val w = 2 * math.Pi * sp.skewS
     val ms = new Array[Double](10); val mc = new Array[Double](10)
@@ -152,7 +151,7 @@ final class Candidates(e: SignalEngine) {
     val fc = 1 / xs
     val sp = spec.copy(bw = spec.bw + (ch -> fc))
     val sdx = curvatureSd(x => profile(spec.copy(bw = spec.bw + (ch -> 1 / x)), 1), xs, xs * 0.05)
-    val (p, u, where) = Describe.bandwidth(ch, fc, sdx / (xs * xs), fMax)
+    val (p, u, where) = Describe.bandwidth(ch, fc, sdx / (xs * xs))
     Some(Cand("bandwidth", ch, sp, fullM2ll(sp), 1, p, u, where))
   }
 
@@ -167,7 +166,7 @@ final class Candidates(e: SignalEngine) {
       info += 0.5 * (a * a + b * b); i += 1
     }
     val j = math.sqrt(nz.jitter2); val sdj = (1 / math.sqrt(info)) / (2 * j)
-    val (p, u, where) = Describe.jitter(j, sdj, fMax, math.sqrt(0.5 * (nz.varS + nz.varC)), e)
+    val (p, u, where) = Describe.jitter(j, sdj, math.sqrt(0.5 * (nz.varS + nz.varC)))
     Some(Cand("jitter", "both", spec.copy(jitter = true), nz.m2ll, 1, p, u, where))
   }
 

@@ -44,10 +44,10 @@ object Describe {
   def skew(tau: Double, sd: Double, f0: Double, f1: Double): Out =
     (Map("skew_s" -> tau), Map("skew_s" -> sd), f"against speed: cos channel phase, ${f0 / 1e3}%.1f to ${f1 / 1e3}%.1f kHz")
 
-  def bandwidth(ch: String, fc: Double, sd: Double, f1: Double): Out =
+  def bandwidth(ch: String, fc: Double, sd: Double): Out =
     (Map("cutoff_hz" -> fc), Map("cutoff_hz" -> sd), s"against speed: ${if (ch == "both") "amplitude of both channels" else s"$ch channel amplitude and phase"}")
 
-  def jitter(j: Double, sd: Double, f1: Double, white: Double, e: SignalEngine): Out =
+  def jitter(j: Double, sd: Double, white: Double): Out =
     (Map("jitter_s" -> j, "white_noise_fs" -> white), Map("jitter_s" -> sd, "white_noise_fs" -> 0.0), "noise against signal slope (speed and fringe phase)")
 
   def fault(f: Fault, adc: Adc): Out = {

@@ -20,7 +20,7 @@ object SignalExplain {
 
   final case class Result(report: Report, engine: SignalEngine, before: Snapshot, steps: Seq[(Finding, Snapshot, Snapshot)])
 
-  def specOf(model: Seq[EffectSpec], adcBits: Int): ModelSpec = model.foldLeft(ModelSpec()) { (sp, e) =>
+  def specOf(model: Seq[EffectSpec]): ModelSpec = model.foldLeft(ModelSpec()) { (sp, e) =>
     val ch = if (e.channel == "cos") 1 else 0
     e.effect match {
       case "harmonic" => sp.copy(terms = sp.terms :+ Term.Harm(e.p("order", 2).toInt, e.channel))
@@ -47,7 +47,7 @@ object SignalExplain {
     val e = new SignalEngine(rec)
     progress.phase("default fit", 4)
     e.init(); progress.step(4)
-    val givenModel = specOf(model, rec.adc.bits)
+    val givenModel = specOf(model)
     if (givenModel != ModelSpec()) { e.spec = givenModel; e.converge(); settle(e) }
     val baseRms = e.rms; val baseBic = e.bic; val baseParams = baselineParams(e)
     val before = Snapshot("default model", e.resS.clone(), e.resC.clone())

@@ -35,6 +35,14 @@ class IndependentCheckSpec extends AnyFlatSpec with Matchers {
     assert(within(r.findings.head.params("amplitude_rel"), 6e-4), r.findings.head.params)
   }
 
+  it should "report an offset jump, which no catalogued effect explains, as located and unexplained" in {
+    val r = run(SecondGenerator.Spec(stepLsb = 2.0))
+    info(r.unexplained.map(u => s"${u.where}: ${u.summary}").mkString("; "))
+    r.unexplained.map(_.where) should contain("against time, sin channel")
+    val u = r.unexplained.find(_.where == "against time, sin channel").get
+    math.abs(u.params("mean_lsb")) should be > 0.3
+  }
+
   it should "name nothing in its clean recordings" in {
     for (seed <- 1 to 3) run(SecondGenerator.Spec(seed = seed)).findings shouldBe empty
   }

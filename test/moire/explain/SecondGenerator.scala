@@ -8,7 +8,8 @@ import java.util.Random
 object SecondGenerator {
   final case class Spec(n: Int = 100000, fs: Double = 10e6, f0: Double = 20e3, f1: Double = 220e3, amp: Double = 0.8,
                         offS: Double = 0.01, offC: Double = -0.005, phaseErrDeg: Double = 1.5, noiseLsb: Double = 1.2,
-                        skewS: Double = 0.0, h3Sin: Double = 0.0, iirCutoffHz: Double = 0.0, seed: Long = 1)
+                        skewS: Double = 0.0, h3Sin: Double = 0.0, iirCutoffHz: Double = 0.0, seed: Long = 1,
+                        stepLsb: Double = 0.0)
 
   def text(s: Spec): String = {
     val rnd = new Random(s.seed)
@@ -26,7 +27,8 @@ object SecondGenerator {
       if (i == 0) { ys = xs; yc = xc } else { ys += alpha * (xs - ys); yc += alpha * (xc - yc) }
       if (i >= warm) {
         def code(v: Double) = math.max(0, math.min(4095, math.round(v * 2048).toInt + 2048))
-        sb.append(code(s.offS + ys + s.noiseLsb / 2048 * rnd.nextGaussian())).append(',')
+        val step = if (i - warm >= s.n / 2) s.stepLsb / 2048 else 0.0 // an offset jump: not in the catalogue
+        sb.append(code(s.offS + step + ys + s.noiseLsb / 2048 * rnd.nextGaussian())).append(',')
           .append(code(s.offC + yc + s.noiseLsb / 2048 * rnd.nextGaussian())).append('\n')
       }
     }
