@@ -92,11 +92,16 @@ object ExplainCmd {
     else throw new UsageError(s"$p:1: first line must be '${Recording.Magic}' or '${Calibration.Magic}', got '${first.take(40)}'")
   }
 
-  /** Simulates a recording with two concealed effects and explains it; prints time and samples per second. */
+  /** Simulates a recording with five effects (skew, bandwidth, harmonic, stuck bit, interference) and explains it;
+    * prints the time and samples per second.
+    */
   def bench(samples: Int, out: Option[String]): String = {
-    val m = PhysicsModel(SignalParams(amplitude = 0.85, offsetSin = 0.01, gainCos = 1.02, phaseErrorDeg = 1.5, noiseRms = 1.5 / 2048, seed = 7),
-      moire.signal.Motion.Ramp(20e3, 200e3, samples / 10e6), 10e6, samples, Adc(12), None,
-      Seq(EffectSpec("channel_skew", Map("skew_s" -> 25e-9)), EffectSpec("harmonic", Map("order" -> 3, "amplitude_rel" -> 0.002), "sin")))
+    val m = PhysicsModel(SignalParams(amplitude = 0.9, phaseErrorDeg = 1.0, noiseRms = 0.0007, seed = 7),
+      moire.signal.Motion.Ramp(20e3, 250e3, samples / 10e6), 10e6, samples, Adc(12), None,
+      Seq(EffectSpec("channel_skew", Map("skew_s" -> 20e-9)), EffectSpec("bandwidth", Map("cutoff_hz" -> 600e3)),
+        EffectSpec("harmonic", Map("order" -> 3, "amplitude_rel" -> 0.001), "sin"),
+        EffectSpec("adc_bit_fault", Map("bit" -> 2, "stuck_at" -> 0), "cos"),
+        EffectSpec("interference", Map("frequency_hz" -> 50e3, "amplitude_fs" -> 3e-4))))
     val (rec, _) = m.generate()
     val dir = out.map(os.Path(_, os.pwd)).getOrElse(os.temp.dir(prefix = "moire-bench"))
     val file = dir / "bench.csv"

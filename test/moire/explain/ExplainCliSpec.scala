@@ -37,6 +37,11 @@ class ExplainCliSpec extends AnyFlatSpec with Matchers {
     pngs should contain allOf ("rec_residual_time.png", "rec_residual_phase.png", "rec_residual_spectrum.png", "rec_effect_1_channel_skew.png")
   }
 
+  "explain-bench" should "print the time and the samples per second (small recording, not timed)" in {
+    val line = ExplainCmd.bench(40000, Some(os.temp.dir().toString))
+    line should fullyMatch regex """explain-bench: 40000 samples explained in [0-9.]+ s .* = [0-9]+ samples/s; .*findings: .*"""
+  }
+
   "explain on calibration data" should "write a calibration report and its plots" in {
     val dir = os.temp.dir()
     val rows = for (d <- Seq("cw", "ccw"); k <- 0 until 360) yield {
