@@ -67,6 +67,7 @@ object ExplainCmd {
 
   /** Options may also follow the file names (mainargs puts everything after the first file into `rest`). */
   def explainArgs(rest: Seq[String], jsonDir: Option[String], plots: Option[String], model: Option[String], quiet: Boolean): Unit = {
+    if (rest.contains("--help") || rest.contains("-h")) { println(Usage); return }
     var j = jsonDir; var p = plots; var m = model; var q = quiet; val files = Seq.newBuilder[String]
     var i = 0
     def value(o: String) = { i += 1; rest.lift(i).getOrElse(throw new UsageError(s"$o needs a value")) }
@@ -83,6 +84,15 @@ object ExplainCmd {
     }
     explain(files.result(), j, p, m, q)
   }
+
+  val Usage: String =
+    """Usage: explain FILE... [--json-dir DIR] [--plots DIR] [--model MODEL.json] [--quiet]
+      |  Fit the physics model to each recording (moire-recording v1) or calibration file (moire-calibration v1),
+      |  locate where the residual departs from noise, and name the catalogued effects that lower BIC by more than 10.
+      |    --json-dir DIR       one JSON report per file (DIR/<name>.json)
+      |    --plots DIR          PNG plots (residual against time, phase, frequency; one per finding)
+      |    --model MODEL.json   effects the simulation already has: fitted, not reported
+      |    --quiet              no progress bar or text report""".stripMargin
 
   def kindOf(p: os.Path): String = {
     if (!os.isFile(p)) throw new UsageError(s"$p: no such file")
