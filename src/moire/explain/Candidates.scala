@@ -242,7 +242,7 @@ final class Candidates(e: SignalEngine) {
         val sp = spec.copy(clips = spec.clips :+ c)
         val r = repair(sp, predS, predC)
         val nz = Noise.fit(sub(r.s, predS), sub(r.c, predC), if (spec.jitter) slopes() else null, r)
-        val (pp, u, where) = Describe.clip(c, atLo, atHi, n)
+        val (pp, u, where) = Describe.clip(c, lsb)
         out += Cand("clipping", if (ch == 0) "sin" else "cos", sp, nz.m2ll, c.params, pp, u, where)
       }
     }

@@ -55,9 +55,10 @@ object Describe {
     (p, p.map { case (k, _) => k -> 0.0 }, s"code histogram: ${if (f.ch == 0) "sin" else "cos"} channel, bit ${f.bit}")
   }
 
-  def clip(c: Clip, atLo: Int, atHi: Int, n: Int): Out = {
+  /** Clip levels are read off the codes: uncertain by half an LSB. */
+  def clip(c: Clip, lsb: Double): Out = {
     val p = Seq("low_fs" -> c.lo, "high_fs" -> c.hi).filter(!_._2.isInfinite).toMap
-    (p, p.map { case (k, _) => k -> 0.5 / 2048 }, s"code histogram: ${if (c.ch == 0) "sin" else "cos"} channel pile-up at the extremes")
+    (p, p.map { case (k, _) => k -> 0.5 * lsb }, s"code histogram: ${if (c.ch == 0) "sin" else "cos"} channel pile-up at the extremes")
   }
 
   /** One plain sentence for a finding. */
