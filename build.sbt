@@ -22,6 +22,7 @@ lazy val root = (project in file("."))
       "org.hipparchus" % "hipparchus-stat" % "4.0.3",
       "org.hipparchus" % "hipparchus-fitting" % "4.0.3",
       "org.hipparchus" % "hipparchus-optim" % "4.0.3",
+      "org.hipparchus" % "hipparchus-fft" % "4.0.3",
       "org.knowm.xchart" % "xchart" % "3.8.8",
       "me.tongfei" % "progressbar" % "0.10.2",
       "com.fazecast" % "jSerialComm" % "2.11.4",

@@ -114,6 +114,37 @@ object Main {
                 @arg(doc = "output folder (default calibration)") out: String = "calibration"): Unit =
     CalibrateCmd.run(input, harmonics, maxOrder, lines, subdivision, out)
 
+  @main(doc = "Write a moire-recording v1 file from the physics model (default part plus named effects).")
+  def simulate(@arg(doc = "output CSV file") out: String,
+               @arg(doc = "number of samples") samples: Int = 100000,
+               @arg(doc = "sample rate in Hz") sampleRateHz: Double = 10e6,
+               @arg(doc = "ADC bits") adcBits: Int = 12,
+               @arg(doc = "offset-binary | twos-complement") adc: String = "offset-binary",
+               @arg(doc = "constant:HZ | ramp:HZ0:HZ1:SECONDS | oscillate:PERIODS:RATE_HZ") motion: String = "ramp:20000:200000:0.01",
+               @arg(doc = "fringe amplitude, full scale 1") amplitude: Double = 0.9,
+               offsetSin: Double = 0.0, offsetCos: Double = 0.0, gainSin: Double = 1.0, gainCos: Double = 1.0,
+               @arg(doc = "quadrature phase error, degrees") phaseErrorDeg: Double = 0.0,
+               @arg(doc = "white noise rms, full scale") noise: Double = 0.0005,
+               seed: Long = 1L,
+               @arg(doc = "grating lines per revolution (amplitude_modulation)") linesPerRev: Option[Double] = None,
+               @arg(doc = "an effect NAME:key=value,...,channel=sin|cos|both (repeat); see docs/explain.md") effect: Seq[String] = Nil,
+               @arg(doc = "a model JSON file (the JSON simulate writes into the # model: line); overrides the options") model: Option[String] = None): Unit =
+    println(moire.explain.ExplainCmd.simulate(moire.explain.ExplainCmd.SimOptions(out, samples, sampleRateHz, adcBits, adc, motion,
+      amplitude, offsetSin, offsetCos, gainSin, gainCos, phaseErrorDeg, noise, seed, linesPerRev, effect, model)))
+
+  @main(doc = "Fit the physics model to recordings, locate the misfit, name the effects left out (JSON and PNG per file).")
+  def explain(@arg(doc = "recording or calibration files") files: mainargs.Leftover[String],
+              @arg(doc = "folder for one JSON report per file") jsonDir: Option[String] = None,
+              @arg(doc = "folder for PNG plots") plots: Option[String] = None,
+              @arg(doc = "model JSON whose effects are part of the simulation (fitted, not reported)") model: Option[String] = None,
+              @arg(doc = "no progress bar or text report") quiet: Flag = Flag()): Unit =
+    moire.explain.ExplainCmd.explainArgs(files.value, jsonDir, plots, model, quiet.value)
+
+  @main(doc = "Benchmark: simulate and explain one recording, print the time and samples per second.")
+  def explainBench(@arg(doc = "samples in the recording") samples: Int = 1000000,
+                   @arg(doc = "folder for the recording, JSON and plots (default: a temporary folder)") out: Option[String] = None): Unit =
+    println(moire.explain.ExplainCmd.bench(samples, out))
+
   private val badValue = """Invalid argument (--\S+) <(\w+)> failed to parse "(.*)" due to.*""".r
   /** The first line of a mainargs error, reworded for a user. */
   def oneLine(msg: String): String = {

@@ -1,0 +1,251 @@
+package moire.explain
+
+
+/** One fitted effect proposal: the model with it, its -2 ln L, extra parameters, and readable parameters. */
+final case class Cand(effect: String, channel: String, spec: ModelSpec, m2ll: Double, extraK: Int,
+                      params: Map[String, Double], unc: Map[String, Double], where: String)
+
+/** Proposes and fits every catalogued effect against the engine's current state. */
+final class Candidates(e: SignalEngine) {
+  import e._
+
+  private val absF: Array[Double] = { val a = freq.map(math.abs); java.util.Arrays.sort(a); a }
+  private def pct(q: Double) = absF(math.min(n - 1, (q * n).toInt))
+  val fMax: Double = pct(0.98)
+  val fMin: Double = pct(0.02)
+
+  /** Linear term fitted with the default part on the current residual. */
+  def linear(t: Term): Option[(Cand, LinSol)] = {
+    if (spec.terms.contains(t)) return None
+    val cols = baseCols(s1, s2, c1, c2) ++ termCols(t)
+    val s = LinearFit.solve(cols, resS, resC)
+    if (!s.ok) return None
+    val rs = sub(resS, LinearFit.combine(cols, s.beta, sinCh = true, n)); val rc = sub(resC, LinearFit.combine(cols, s.beta, sinCh = false, n))
+    val nz = Noise.fit(rs, rc, if (spec.jitter) slopes() else null, cens)
+    val v = (sumSq(rs) + sumSq(rc)) / (2.0 * n)
+    val b = s.beta.drop(6); val sd = (6 until s.beta.length).map(i => math.sqrt(math.max(0, s.inv(i)(i)) * v)).toArray
+    val (p, u, where, ch) = Describe.term(t, b, sd, e)
+    Some((Cand(t.name, ch, spec.copy(terms = spec.terms :+ t), nz.m2ll, t.params, p, u, where), s))
+  }
+
+  private def sub(a: Array[Double], b: Array[Double]) = { val o = new Array[Double](n); var i = 0; while (i < n) { o(i) = a(i) - b(i); i += 1 }; o }
+
+  def all(onStep: () => Unit): Seq[Cand] = {
+    val out = Seq.newBuilder[Cand]
+    val timing = sys.props.contains("moire.timing")
+    var last = System.nanoTime()
+    def add(c: => Option[Cand]): Unit = {
+      try c.foreach(out += _) finally onStep()
+      if (timing) { val now = System.nanoTime(); System.err.println(f"candidate ${(now - last) / 1e6}%.0f ms"); last = now }
+    }
+    for (k <- 2 to 7; ch <- Seq("sin", "cos", "both")) add(linear(Term.Harm(k, ch)).map(_._1))
+    add(linear(Term.Drift).map(_._1))
+    if (rec.linesPerRev.isDefined) add(linear(Term.Am).map(_._1))
+    add(linear(Term.Inl).map(_._1))
+    add(linear(Term.Crosstalk).map(_._1))
+    add(interference())
+    add(skew())
+    for (ch <- Seq("both", "sin", "cos")) add(bandwidth(ch))
+    add(jitter())
+    faults().foreach(c => out += c)
+    clips().foreach(c => out += c)
+    out.result()
+  }
+  def steps: Int = 18 + 1 + (if (rec.linesPerRev.isDefined) 1 else 0) + 3 + 1 + 3 + 1
+
+  // ---- nonlinear: skew and bandwidth, by profile likelihood over one parameter ----
+
+  /** -2 ln L (white noise per channel) of the default part refitted with modified fundamentals, on every stride-th sample, scaled to n. */
+  def profile(sp: ModelSpec, stride: Int): Double = {
+    val fcB = sp.bw.getOrElse("both", Double.PositiveInfinity); val fcS = sp.bw.getOrElse("sin", Double.PositiveInfinity)
+    val fcC = sp.bw.getOrElse("cos", Double.PositiveInfinity); val w = 2 * math.Pi * sp.skewS
+    val ms = new Array[Double](10); val mc = new Array[Double](10)
+    def acc(m: Array[Double], x1: Double, x2: Double, y: Double): Unit = {
+      m(0) += 1; m(1) += x1; m(2) += x2; m(3) += x1 * x1; m(4) += x1 * x2; m(5) += x2 * x2
+      m(6) += y; m(7) += y * x1; m(8) += y * x2; m(9) += y * y
+    }
+    var i = 0; var cnt = 0
+    while (i < n) {
+      val f = freq(i); var gs = 1.0; var gc = 1.0; var ls = -0.5 * w * f; var lc = 0.5 * w * f
+      if (!fcB.isInfinite) { val u = f / fcB; val g = 1 / math.sqrt(1 + u * u); gs *= g; gc *= g }
+      var lagS = 0.0; var lagC = 0.0
+      if (!fcS.isInfinite) { val u = f / fcS; gs /= math.sqrt(1 + u * u); lagS = math.atan(u) }
+      if (!fcC.isInfinite) { val u = f / fcC; gc /= math.sqrt(1 + u * u); lagC = math.atan(u) }
+      val m = 0.5 * (lagS + lagC); ls += m - lagS; lc += m - lagC
+      val cls = math.cos(ls); val sls = math.sin(ls); val clc = math.cos(lc); val slc = math.sin(lc)
+      acc(ms, gs * (sn(i) * cls + cs(i) * sls), gs * (cs(i) * cls - sn(i) * sls), repS(i) - termPredS(i))
+      acc(mc, gc * (sn(i) * clc + cs(i) * slc), gc * (cs(i) * clc - sn(i) * slc), repC(i) - termPredC(i))
+      cnt += 1; i += stride
+    }
+    def rss(m: Array[Double]): Double = {
+      val a = Array(Array(m(0), m(1), m(2), 0, m(6)), Array(m(1), m(3), m(4), 0, m(7)), Array(m(2), m(4), m(5), 0, m(8)), Array(0.0, 0, 0, 1, 0))
+      val x = Trajectory.solve4(a)
+      math.max(1e-300, m(9) - x(0) * m(6) - x(1) * m(7) - x(2) * m(8))
+    }
+    n * (math.log(2 * math.Pi * rss(ms) / cnt) + 1) + n * (math.log(2 * math.Pi * rss(mc) / cnt) + 1)
+  }
+
+  /** Minimum of f on [lo, hi]: a grid, then golden section around the best grid point. */
+  def minimize(f: Double => Double, lo: Double, hi: Double, grid: Int = 12, golden: Int = 14): Double = {
+    val xs = (0 to grid).map(k => lo + (hi - lo) * k / grid)
+    val best = xs.indices.minBy(k => f(xs(k)))
+    var a = xs(math.max(0, best - 1)); var b = xs(math.min(grid, best + 1))
+    val r = (math.sqrt(5) - 1) / 2
+    var x1 = b - r * (b - a); var x2 = a + r * (b - a); var f1 = f(x1); var f2 = f(x2)
+    for (_ <- 0 until golden) {
+      if (f1 < f2) { b = x2; x2 = x1; f2 = f1; x1 = b - r * (b - a); f1 = f(x1) }
+      else { a = x1; x1 = x2; f1 = f2; x2 = a + r * (b - a); f2 = f(x2) }
+    }
+    if (f1 < f2) x1 else x2
+  }
+
+  /** Standard deviation of a profile parameter from the curvature of -2 ln L (full data). */
+  def curvatureSd(f: Double => Double, x: Double, h0: Double): Double = {
+    var h = h0; var sd = Double.NaN
+    for (_ <- 0 until 2) {
+      val c = (f(x + h) - 2 * f(x) + f(x - h)) / (h * h)
+      if (c > 0) { sd = math.sqrt(2 / c); h = sd } else return Double.NaN
+    }
+    sd
+  }
+
+  /** Full -2 ln L of a spec with modified fundamentals (current noise model), with the fitted default part. */
+  def fullM2ll(sp: ModelSpec): Double = {
+    val a1 = new Array[Double](n); val a2 = new Array[Double](n); val b1 = new Array[Double](n); val b2 = new Array[Double](n)
+    fundamentals(sp, a1, a2, b1, b2)
+    val cols = baseCols(a1, a2, b1, b2)
+    val ts = sub(repS, termPredS); val tcc = sub(repC, termPredC)
+    val s = LinearFit.solve(cols, ts, tcc)
+    val rs = sub(ts, LinearFit.combine(cols, s.beta, sinCh = true, n)); val rc = sub(tcc, LinearFit.combine(cols, s.beta, sinCh = false, n))
+    Noise.fit(rs, rc, if (sp.jitter) slopes() else null, cens).m2ll
+  }
+
+  private def stride: Int = math.max(1, n / 50000)
+
+  /** Skew between the channels: needs several speeds, else it is a phase error. */
+  def skew(): Option[Cand] = {
+    if (spec.hasSkew) return None
+    val w = Array.tabulate(n)(i => 2 * math.Pi * freq(i))
+    val cols = baseCols(s1, s2, c1, c2) :+ Col(Array.tabulate(n)(i => -0.5 * vs(i) * w(i)), Array.tabulate(n)(i => 0.5 * vc(i) * w(i)))
+    val s = LinearFit.solve(cols, resS, resC)
+    if (!s.ok) return None
+    val sd0 = math.sqrt(s.inv(6)(6) * (sumSq(resS) + sumSq(resC)) / (2.0 * n))
+    val t0 = s.beta(6); val span = 6 * sd0 + 0.3 * math.abs(t0)
+    val limit = 0.5 / (2 * math.Pi * math.max(fMax, 1))
+    val lo = math.max(-limit, t0 - span); val hi = math.min(limit, t0 + span)
+    if (!(hi > lo)) return None
+    val tau = minimize(x => profile(spec.copy(hasSkew = true, skewS = x), stride), lo, hi)
+    val sp = spec.copy(hasSkew = true, skewS = tau)
+    val sd = curvatureSd(x => profile(spec.copy(hasSkew = true, skewS = x), 1), tau, math.max(sd0, 1e-12))
+    val (p, u, where) = Describe.skew(tau, sd, fMin, fMax)
+    Some(Cand("channel_skew", "cos", sp, fullM2ll(sp), 1, p, u, where))
+  }
+
+  /** First-order low-pass on one channel or both, searched over 1 / cut-off. */
+  def bandwidth(ch: String): Option[Cand] = {
+    if (spec.bw.contains(ch) || fMax <= 0 || (fMax - fMin) < 0.05 * fMax) return None
+    val hiX = 5 / fMax
+    val xs = minimize(x => profile(spec.copy(bw = spec.bw + (ch -> (if (x <= 0) Double.PositiveInfinity else 1 / x))), stride), 0, hiX, grid = 16)
+    // a cut-off far above the fringe frequencies shows only as a delay, which is a skew, not a bandwidth
+    if (xs <= 1 / (50 * fMax)) return None
+    val fc = 1 / xs
+    val sp = spec.copy(bw = spec.bw + (ch -> fc))
+    val sdx = curvatureSd(x => profile(spec.copy(bw = spec.bw + (ch -> 1 / x)), 1), xs, xs * 0.05)
+    val (p, u, where) = Describe.bandwidth(ch, fc, sdx / (xs * xs))
+    Some(Cand("bandwidth", ch, sp, fullM2ll(sp), 1, p, u, where))
+  }
+
+  def jitter(): Option[Cand] = {
+    if (spec.jitter || fMax <= 0) return None
+    val (ds, dc) = slopes()
+    val nz = Noise.fit(resS, resC, (ds, dc), cens)
+    if (nz.jitter2 <= 0) return None
+    var info = 0.0; var i = 0
+    while (i < n) {
+      val a = ds(i) * ds(i) / (nz.varS + nz.jitter2 * ds(i) * ds(i)); val b = dc(i) * dc(i) / (nz.varC + nz.jitter2 * dc(i) * dc(i))
+      info += 0.5 * (a * a + b * b); i += 1
+    }
+    val j = math.sqrt(nz.jitter2); val sdj = (1 / math.sqrt(info)) / (2 * j)
+    val (p, u, where) = Describe.jitter(j, sdj, math.sqrt(0.5 * (nz.varS + nz.varC)))
+    Some(Cand("jitter", "both", spec.copy(jitter = true), nz.m2ll, 1, p, u, where))
+  }
+
+  /** Fixed-frequency pickup: strongest line of the residual spectrum, refined by least squares. */
+  def interference(): Option[Cand] = {
+    val m = Integer.highestOneBit(math.min(n, 1 << 20))
+    if (m < 64) return None
+    val ps = new Array[Double](m / 2)
+    for (r <- Seq(resS, resC)) { val p = Fft.power(r, m); for (k <- 1 until m / 2) ps(k) += p(k) }
+    val k0 = (4 until m / 2).maxBy(ps(_))
+    val bin = fs / m
+    if (spec.terms.exists { case Term.Interference(h) => math.abs(h - k0 * bin) < 3 * bin; case _ => false }) return None
+    def power(hz: Double): Double = {
+      var a = 0.0; var b = 0.0; var c = 0.0; var d = 0.0; var i = 0
+      val st = stride
+      while (i < n) { val x = 2 * math.Pi * hz * i / fs; val sx = math.sin(x); val cx = math.cos(x); a += resS(i) * sx; b += resS(i) * cx; c += resC(i) * sx; d += resC(i) * cx; i += st }
+      -(a * a + b * b + c * c + d * d)
+    }
+    val hz = minimize(power, (k0 - 1) * bin, (k0 + 1) * bin, grid = 8, golden = 16)
+    linear(Term.Interference(hz)).map(_._1)
+  }
+
+  def faults(): Seq[Cand] = {
+    val adc = rec.adc
+    val out = Seq.newBuilder[Cand]
+    for ((codes, p, ch) <- Seq((rec.sin, predS, 0), (rec.cos, predC, 1))) {
+      val pc = new Array[Int](n); var i = 0
+      while (i < n) { pc(i) = adc.pins(adc.signedCode(p(i)).code); i += 1 }
+      val need = math.max(20, n / 1000)
+      val bits = adc.bits
+      val m1 = new Array[Int](bits); val p1 = new Array[Int](bits); val diffM = new Array[Int](bits); val diffP = new Array[Int](bits)
+      i = 0
+      while (i < n) {
+        val c = codes(i); val q = pc(i); var b = 0
+        while (b < bits) {
+          m1(b) += (c >> b) & 1; p1(b) += (q >> b) & 1
+          if (b + 1 < bits) { diffM(b) += ((c >> b) ^ (c >> (b + 1))) & 1; diffP(b) += ((q >> b) ^ (q >> (b + 1))) & 1 }
+          b += 1
+        }
+        i += 1
+      }
+      for (b <- 0 until bits) {
+        if (m1(b) == 0 && p1(b) > need) out ++= faultCand(Fault(ch, b, 0, -1))
+        else if (m1(b) == n && n - p1(b) > need) out ++= faultCand(Fault(ch, b, 1, -1))
+        if (b + 1 < bits && diffM(b) == 0 && diffP(b) > need && m1(b) > 0 && m1(b) < n) out ++= faultCand(Fault(ch, b, -1, b + 1))
+      }
+    }
+    out.result()
+  }
+
+  private def faultCand(f: Fault): Option[Cand] = {
+    if (spec.faults.exists(g => g.ch == f.ch && g.bit == f.bit)) return None
+    val sp = spec.copy(faults = spec.faults :+ f)
+    val r = repair(sp, predS, predC)
+    val nz = Noise.fit(sub(r.s, predS), sub(r.c, predC), if (spec.jitter) slopes() else null, r)
+    val (p, u, where) = Describe.fault(f, rec.adc)
+    Some(Cand("adc_bit_fault", if (f.ch == 0) "sin" else "cos", sp, nz.m2ll, 1, p, u, where))
+  }
+
+  /** Saturation below the ADC rails: a pile-up of samples at one extreme code the model exceeds. */
+  def clips(): Seq[Cand] = {
+    val out = Seq.newBuilder[Cand]
+    val raw = repair(spec, predS, predC, censor = false)
+    for ((y, p, ch) <- Seq((raw.s, predS, 0), (raw.c, predC, 1)) if !spec.clips.exists(_.ch == ch)) {
+      val hi = y.max; val lo = y.min
+      val atHi = y.count(_ >= hi - 0.5 * lsb); val atLo = y.count(_ <= lo + 0.5 * lsb)
+      val need = math.max(20, n / 2000)
+      val overHi = p.count(_ > hi + lsb); val underLo = p.count(_ < lo - lsb)
+      val useHi = hi < railHi && atHi > need && overHi > need
+      val useLo = lo > railLo && atLo > need && underLo > need
+      if (useHi || useLo) {
+        val c = Clip(ch, if (useLo) lo else Double.NegativeInfinity, if (useHi) hi else Double.PositiveInfinity)
+        val sp = spec.copy(clips = spec.clips :+ c)
+        val r = repair(sp, predS, predC)
+        val nz = Noise.fit(sub(r.s, predS), sub(r.c, predC), if (spec.jitter) slopes() else null, r)
+        val (pp, u, where) = Describe.clip(c, lsb)
+        out += Cand("clipping", if (ch == 0) "sin" else "cos", sp, nz.m2ll, c.params, pp, u, where)
+      }
+    }
+    out.result()
+  }
+}

@@ -1,0 +1,110 @@
+package moire.explain
+
+
+/** Where the residual departs from white noise: against time, fringe phase, speed, frequency, per channel,
+  * and in the code histogram. Each test is a chi-square (or spectral peak) test with a strict threshold
+  * (about 6 standard deviations) so that clean recordings locate nothing.
+  */
+object Locate {
+  /** chi-square with `dof` degrees of freedom, as standard deviations above its mean. */
+  def zOf(chi2: Double, dof: Int): Double = (chi2 - dof) / math.sqrt(2.0 * dof)
+  val Z = 6.0
+
+  def all(e: SignalEngine): Seq[Located] = {
+    val rs = e.resS; val rc = e.resC; val lsb = e.lsb
+    val sdS = math.sqrt(e.noise.varS); val sdC = math.sqrt(e.noise.varC)
+    val out = Seq.newBuilder[Located]
+    val n = e.n
+
+    /** Bin means of one channel's residual by bin index; returns (chi2, worst bin, its mean). */
+    def binMeans(r: Array[Double], sd: Double, bins: Int, bin: Int => Int): (Double, Int, Double, Array[Double]) = {
+      val sum = new Array[Double](bins); val cnt = new Array[Int](bins); var i = 0
+      while (i < n) { val b = bin(i); sum(b) += r(i); cnt(b) += 1; i += 1 }
+      val mean = Array.tabulate(bins)(b => if (cnt(b) > 0) sum(b) / cnt(b) else 0.0)
+      val z2 = Array.tabulate(bins)(b => if (cnt(b) > 0) mean(b) * mean(b) * cnt(b) / (sd * sd) else 0.0)
+      val used = cnt.count(_ > 0)
+      val worst = z2.indices.maxBy(z2(_))
+      (z2.sum - 1, worst, mean(worst), mean) -> used match { case ((c, w, m, a), u) => (zOf(c, math.max(1, u - 1)), w, m, a) }
+    }
+
+    // against time
+    val tb = 32
+    for ((r, sd, ch) <- Seq((rs, sdS, "sin"), (rc, sdC, "cos"))) {
+      val (z, w, m, _) = binMeans(r, sd, tb, i => (i.toLong * tb / n).toInt)
+      val t0 = w * n / tb / e.fs; val t1 = (w + 1) * n / tb / e.fs
+      out += Located(s"against time, $ch channel", f"residual mean ${m / lsb}%.2f LSB at $t0%.4g..$t1%.4g s (chi-square ${z}%.1f sd)",
+        Map("chi2_sd" -> z, "t0_s" -> t0, "t1_s" -> t1, "mean_lsb" -> m / lsb), z > Z)
+    }
+    // against fringe phase
+    val pb = 64
+    for ((r, sd, ch) <- Seq((rs, sdS, "sin"), (rc, sdC, "cos"))) {
+      val (z, w, m, _) = binMeans(r, sd, pb, i => { val p = e.phase(i) - math.floor(e.phase(i)); math.min(pb - 1, (p * pb).toInt) })
+      out += Located(s"against fringe phase, $ch channel", f"residual mean ${m / lsb}%.2f LSB near ${360.0 * (w + 0.5) / pb}%.0f degree (chi-square $z%.1f sd)",
+        Map("chi2_sd" -> z, "phase_deg" -> 360.0 * (w + 0.5) / pb, "mean_lsb" -> m / lsb), z > Z)
+    }
+    // against speed: in-phase (amplitude) and quadrature (phase) projections per speed bin
+    val sorted = e.freq.map(math.abs); java.util.Arrays.sort(sorted)
+    val sb = 8
+    val edges = (1 until sb).map(k => sorted(k * n / sb))
+    def sbin(i: Int) = { val f = math.abs(e.freq(i)); var b = 0; while (b < edges.size && f > edges(b)) b += 1; b }
+    if (sorted(n - 1) - sorted(0) > 0.05 * sorted(n - 1)) {
+      for ((r, sd, u, v, ch) <- Seq((rs, sdS, e.us, e.vs, "sin"), (rc, sdC, e.uc, e.vc, "cos"))) {
+        val pu = new Array[Double](sb); val pv = new Array[Double](sb); val uu = new Array[Double](sb); val vv = new Array[Double](sb)
+        var i = 0
+        while (i < n) { val b = sbin(i); pu(b) += r(i) * u(i); uu(b) += u(i) * u(i); pv(b) += r(i) * v(i); vv(b) += v(i) * v(i); i += 1 }
+        val za = (0 until sb).map(b => if (uu(b) > 0) pu(b) * pu(b) / (uu(b) * sd * sd) else 0.0)
+        val zp = (0 until sb).map(b => if (vv(b) > 0) pv(b) * pv(b) / (vv(b) * sd * sd) else 0.0)
+        val amp = (0 until sb).map(b => if (uu(b) > 0) pu(b) / uu(b) else 0.0); val ph = (0 until sb).map(b => if (vv(b) > 0) math.toDegrees(pv(b) / vv(b)) else 0.0)
+        val z = zOf(za.sum + zp.sum - 4, 2 * sb - 4)
+        val lo = sorted(0) / 1e3; val hi = sorted(n - 1) / 1e3
+        out += Located(s"against speed, $ch channel",
+          f"amplitude ${100 * amp.head}%+.3f %% .. ${100 * amp.last}%+.3f %%, phase ${ph.head}%+.3f .. ${ph.last}%+.3f degree from $lo%.1f to $hi%.1f kHz (chi-square $z%.1f sd)",
+          Map("chi2_sd" -> z, "amplitude_low_rel" -> amp.head, "amplitude_high_rel" -> amp.last, "phase_low_deg" -> ph.head, "phase_high_deg" -> ph.last), z > Z)
+      }
+      // noise against speed (jitter-like)
+      val ss = new Array[Double](sb); val cnt = new Array[Int](sb); var i = 0
+      while (i < n) { val b = sbin(i); ss(b) += rs(i) * rs(i) / (sdS * sdS) + rc(i) * rc(i) / (sdC * sdC); cnt(b) += 2; i += 1 }
+      val all = ss.sum / math.max(1, cnt.sum)
+      val ratio = (0 until sb).map(b => ss(b) / math.max(1, cnt(b)) / all)
+      val zz = (0 until sb).map(b => (ratio(b) - 1) / math.sqrt(2.0 / math.max(1, cnt(b))))
+      val z = zOf(zz.map(x => x * x).sum, sb - 1)
+      out += Located("noise against speed", f"residual variance x${ratio.head}%.3f at low speed, x${ratio.last}%.3f at high speed (chi-square $z%.1f sd)",
+        Map("chi2_sd" -> z, "variance_low_rel" -> ratio.head, "variance_high_rel" -> ratio.last), z > Z)
+    }
+    // spectrum
+    val m = Integer.highestOneBit(math.min(n, 1 << 18))
+    if (m >= 256) {
+      for ((r, ch) <- Seq((rs, "sin"), (rc, "cos"))) {
+        val p = Fft.power(r, m).drop(1)
+        val mean = p.sum / p.size
+        val k = p.indices.maxBy(p(_))
+        val x = p(k) / mean; val thr = math.log(p.size.toDouble) + 14
+        val hz = (k + 1) * e.fs / m; val ampl = 2 * math.sqrt(p(k)) / m
+        out += Located(s"spectrum, $ch channel", f"strongest line $hz%.1f Hz, ${ampl / lsb}%.2f LSB, ${x}%.1f x the mean power (threshold $thr%.1f)",
+          Map("frequency_hz" -> hz, "amplitude_lsb" -> ampl / lsb, "peak_to_mean" -> x), x > thr)
+      }
+    }
+    // per channel
+    out += Located("per channel", f"residual rms sin ${sdS / lsb}%.2f LSB, cos ${sdC / lsb}%.2f LSB", Map("rms_sin_lsb" -> sdS / lsb, "rms_cos_lsb" -> sdC / lsb), false)
+    // code histogram: constant bits and pile-ups at the extremes
+    for ((codes, ch) <- Seq((e.rec.sin, "sin"), (e.rec.cos, "cos"))) {
+      val bits = e.rec.adc.bits
+      val adc = e.rec.adc
+      val pins = new Array[Int](1 << bits); codes.foreach(c => pins(c) += 1)
+      val frac = (0 until bits).map(b => pins.indices.filter(c => ((c >> b) & 1) == 1).map(pins(_).toLong).sum.toDouble / n)
+      val hist = new Array[Int](1 << bits); codes.foreach(c => hist(adc.fromPins(c) + adc.half) += 1)
+      val stuck = (0 until bits - 2).filter(b => frac(b) == 0.0 || frac(b) == 1.0)
+      val hi = hist.lastIndexWhere(_ > 0); val lo = hist.indexWhere(_ > 0)
+      def pile(c: Int, nb: Int) = hist(c).toDouble / math.max(1, if (nb >= 0 && nb < hist.length) hist(nb) else 0)
+      val pileHi = pile(hi, hi - 1); val pileLo = pile(lo, lo + 1)
+      val chi = if (ch == "sin") 0 else 1
+      val faulty = e.spec.faults.filter(_.ch == chi).map(_.bit).toSet; val clipped = e.spec.clips.exists(_.ch == chi)
+      val sig = stuck.exists(b => !faulty.contains(b)) || (!clipped && ((pileHi > 8 && hist(hi) > 50 && hi < hist.length - 1) || (pileLo > 8 && hist(lo) > 50 && lo > 0)))
+      out += Located(s"code histogram, $ch channel",
+        (if (stuck.nonEmpty) s"bits ${stuck.mkString(",")} never change; " else "") +
+          f"signed codes ${lo - adc.half}..${hi - adc.half}, ${hist(hi)} samples at the top code (${pileHi}%.1f x its neighbour), ${hist(lo)} at the bottom (${pileLo}%.1f x)",
+        Map("code_min" -> (lo - adc.half), "code_max" -> (hi - adc.half), "pile_high" -> pileHi, "pile_low" -> pileLo, "constant_bits" -> stuck.size), sig)
+    }
+    out.result()
+  }
+}

@@ -1,0 +1,136 @@
+package moire.explain
+
+import org.knowm.xchart.{BitmapEncoder, XYChart, XYChartBuilder}
+import org.knowm.xchart.BitmapEncoder.BitmapFormat
+import org.knowm.xchart.style.markers.SeriesMarkers
+
+/** PNG plots of an explained recording: residual before/after against time, phase and frequency,
+  * and one plot per finding showing the structure it removed against its natural axis.
+  */
+object Plots {
+  System.setProperty("java.awt.headless", "true")
+
+  def chart(title: String, x: String, y: String): XYChart = {
+    val c = new XYChartBuilder().width(900).height(500).title(title).xAxisTitle(x).yAxisTitle(y).build()
+    c.getStyler.setLegendPosition(org.knowm.xchart.style.Styler.LegendPosition.InsideNE)
+    c.getStyler.setChartBackgroundColor(java.awt.Color.WHITE)
+    c.getStyler.setXAxisDecimalPattern("0.###"); c.getStyler.setYAxisDecimalPattern("0.####")
+    c
+  }
+  def line(c: XYChart, name: String, xs: Array[Double], ys: Array[Double]): Unit = {
+    val ok = xs.indices.filter(i => !xs(i).isNaN && !ys(i).isNaN && !ys(i).isInfinite)
+    if (ok.nonEmpty) c.addSeries(name, ok.map(xs).toArray, ok.map(ys).toArray).setMarker(SeriesMarkers.NONE)
+  }
+  def save(c: XYChart, path: os.Path): os.Path = {
+    os.makeDir.all(path / os.up)
+    BitmapEncoder.saveBitmap(c, path.toString.stripSuffix(".png"), BitmapFormat.PNG)
+    path
+  }
+
+  /** Mean of y per bin of x (bins over [lo, hi)). */
+  def binned(x: Int => Double, y: Int => Double, n: Int, lo: Double, hi: Double, bins: Int, rms: Boolean = false): (Array[Double], Array[Double]) = {
+    val s = new Array[Double](bins); val c = new Array[Int](bins); var i = 0
+    while (i < n) {
+      val xv = x(i); val b = math.min(bins - 1, math.max(0, ((xv - lo) / (hi - lo) * bins).toInt))
+      val v = y(i); s(b) += (if (rms) v * v else v); c(b) += 1; i += 1
+    }
+    (Array.tabulate(bins)(b => lo + (b + 0.5) * (hi - lo) / bins),
+      Array.tabulate(bins)(b => if (c(b) == 0) Double.NaN else if (rms) math.sqrt(s(b) / c(b)) else s(b) / c(b)))
+  }
+
+  def signals(r: SignalExplain.Result, dir: os.Path, stem: String): Seq[os.Path] = {
+    val e = r.engine; val n = e.n; val lsb = e.lsb
+    val after = Snapshot("final model", e.resS.clone(), e.resC.clone())
+    val snaps = Seq(r.before, after)
+    val out = Seq.newBuilder[os.Path]
+    // time
+    val ct = chart(s"$stem: residual rms against time", "time (s)", "residual rms (LSB)")
+    for (s <- snaps; (res, ch) <- Seq((s.resS, "sin"), (s.resC, "cos"))) {
+      val (x, y) = binned(i => i / e.fs, i => res(i) / lsb, n, 0, n / e.fs, 64, rms = true); line(ct, s"$ch, ${s.label}", x, y)
+    }
+    out += save(ct, dir / s"${stem}_residual_time.png")
+    // fringe phase
+    val cp = chart(s"$stem: mean residual against fringe phase", "fringe phase (degree)", "mean residual (LSB)")
+    for (s <- snaps; (res, ch) <- Seq((s.resS, "sin"), (s.resC, "cos"))) {
+      val (x, y) = binned(i => 360 * (e.phase(i) - math.floor(e.phase(i))), i => res(i) / lsb, n, 0, 360, 72); line(cp, s"$ch, ${s.label}", x, y)
+    }
+    out += save(cp, dir / s"${stem}_residual_phase.png")
+    // spectrum
+    out += spectrum(s"$stem: residual spectrum", snaps, e, dir / s"${stem}_residual_spectrum.png")
+    // effects
+    for (((f, b, a), k) <- r.steps.zipWithIndex) out += effect(f, b, a, e, dir / s"${stem}_effect_${k + 1}_${f.effect}.png", stem)
+    out.result()
+  }
+
+  def spectrum(title: String, snaps: Seq[Snapshot], e: SignalEngine, path: os.Path): os.Path = {
+    val m = Integer.highestOneBit(math.min(e.n, 1 << 18)); val c = chart(title, "frequency (kHz)", "amplitude (dB LSB)")
+    for (s <- snaps) {
+      val p = Fft.power(s.resS, m); val q = Fft.power(s.resC, m)
+      val g = math.max(1, p.length / 1500)
+      val xs = (0 until p.length / g).map(k => (k * g + g / 2) * e.fs / m / 1e3).toArray
+      val ys = (0 until p.length / g).map { k => val mx = (k * g until (k + 1) * g).map(j => p(j) + q(j)).max; 10 * math.log10(2 * mx / m.toDouble / m / (e.lsb * e.lsb) + 1e-30) }.toArray
+      line(c, s.label, xs, ys)
+    }
+    save(c, path)
+  }
+
+  private def effect(f: Finding, b: Snapshot, a: Snapshot, e: SignalEngine, path: os.Path, stem: String): os.Path = {
+    val n = e.n; val lsb = e.lsb; val fAbs = (i: Int) => math.abs(e.freq(i))
+    val fLo = e.freq.map(math.abs).min; val fHi = e.freq.map(math.abs).max + 1e-9
+    def phaseDev(s: Snapshot, u: Array[Double], v: Array[Double], res: Snapshot => Array[Double]) = {
+      // per speed bin: phase (degree) = sum r v / sum v^2 ; amplitude (%) = sum r u / sum u^2
+      val bins = 24; val pv = new Array[Double](bins); val vv = new Array[Double](bins); val pu = new Array[Double](bins); val uu = new Array[Double](bins)
+      val r = res(s); var i = 0
+      while (i < n) { val k = math.min(bins - 1, ((fAbs(i) - fLo) / (fHi - fLo) * bins).toInt); pv(k) += r(i) * v(i); vv(k) += v(i) * v(i); pu(k) += r(i) * u(i); uu(k) += u(i) * u(i); i += 1 }
+      (Array.tabulate(bins)(k => (fLo + (k + 0.5) * (fHi - fLo) / bins) / 1e3),
+        Array.tabulate(bins)(k => if (vv(k) > 0) math.toDegrees(pv(k) / vv(k)) else Double.NaN),
+        Array.tabulate(bins)(k => if (uu(k) > 0) 100 * pu(k) / uu(k) else Double.NaN))
+    }
+    val title = s"$stem: ${f.effect} (${f.channel}), residual before and after"
+    f.effect match {
+      case "channel_skew" | "bandwidth" | "crosstalk" =>
+        val c = chart(title, "fringe frequency (kHz)", "phase (degree) / amplitude (%) left in the residual")
+        for (s <- Seq(b, a)) {
+          val (x, ps, as) = phaseDev(s, e.us, e.vs, _.resS); val (_, pc, ac) = phaseDev(s, e.uc, e.vc, _.resC)
+          line(c, s"cos - sin phase (degree), ${s.label}", x, pc.zip(ps).map { case (p, q) => p - q })
+          if (f.effect != "channel_skew") { line(c, s"sin amplitude (%), ${s.label}", x, as); line(c, s"cos amplitude (%), ${s.label}", x, ac) }
+        }
+        save(c, path)
+      case "jitter" =>
+        val c = chart(title, "|signal slope| (full scale per microsecond)", "residual rms (LSB)")
+        val (ds, dc) = e.slopes(); val hi = (ds.map(math.abs).max max dc.map(math.abs).max) * 1e-6 + 1e-12
+        for (s <- Seq(b, a)) {
+          val (x, y) = binned(i => math.abs(ds(i)) * 1e-6, i => s.resS(i) / lsb, n, 0, hi, 24, rms = true); line(c, s"sin, ${s.label}", x, y)
+          val (x2, y2) = binned(i => math.abs(dc(i)) * 1e-6, i => s.resC(i) / lsb, n, 0, hi, 24, rms = true); line(c, s"cos, ${s.label}", x2, y2)
+        }
+        save(c, path)
+      case "drift" =>
+        val c = chart(title, "time (s)", "mean residual (LSB)")
+        for (s <- Seq(b, a); (r, ch) <- Seq((s.resS, "sin"), (s.resC, "cos"))) { val (x, y) = binned(i => i / e.fs, i => r(i) / lsb, n, 0, n / e.fs, 48); line(c, s"$ch, ${s.label}", x, y) }
+        save(c, path)
+      case "amplitude_modulation" =>
+        val l = e.rec.linesPerRev.getOrElse(1.0)
+        val c = chart(title, "mechanical angle (degree)", "amplitude left in the residual (%)")
+        for (s <- Seq(b, a)) {
+          val w = (i: Int) => e.us(i) * e.us(i) + e.uc(i) * e.uc(i)
+          val (x, num) = binned(i => { val m = e.phase(i) / l; 360 * (m - math.floor(m)) }, i => s.resS(i) * e.us(i) + s.resC(i) * e.uc(i), n, 0, 360, 36)
+          val (_, den) = binned(i => { val m = e.phase(i) / l; 360 * (m - math.floor(m)) }, w, n, 0, 360, 36)
+          line(c, s.label, x, num.zip(den).map { case (p, q) => 100 * p / q })
+        }
+        save(c, path)
+      case "adc_nonlinearity" | "adc_bit_fault" | "clipping" =>
+        val c = chart(title, "predicted value (full scale)", "mean residual (LSB)")
+        for (s <- Seq(b, a); (r, p, ch) <- Seq((s.resS, e.predS, "sin"), (s.resC, e.predC, "cos"))) {
+          val (x, y) = binned(i => p(i), i => r(i) / lsb, n, -1, 1, 128); line(c, s"$ch, ${s.label}", x, y)
+        }
+        save(c, path)
+      case "interference" => spectrum(title, Seq(b, a), e, path)
+      case _ =>
+        val c = chart(title, "fringe phase (degree)", "mean residual (LSB)")
+        for (s <- Seq(b, a); (r, ch) <- Seq((s.resS, "sin"), (s.resC, "cos")) if f.channel == "both" || f.channel == ch) {
+          val (x, y) = binned(i => 360 * (e.phase(i) - math.floor(e.phase(i))), i => r(i) / lsb, n, 0, 360, 72); line(c, s"$ch, ${s.label}", x, y)
+        }
+        save(c, path)
+    }
+  }
+}

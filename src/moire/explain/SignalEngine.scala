@@ -1,0 +1,303 @@
+package moire.explain
+
+import moire.recording.Recording
+
+/** Fits the backward model to a recording: phase trajectory, default part, accepted effects.
+  * All per-sample work is on primitive arrays; the state after `refit` is consistent
+  * (prediction, residual, noise model and -2 ln L of the current `spec`).
+  */
+final class SignalEngine(val rec: Recording) {
+  val n: Int = rec.length
+  val fs: Double = rec.sampleRateHz
+  val lsb: Double = rec.adc.lsb
+  val ys: Array[Double] = rec.values(rec.sin)
+  val yc: Array[Double] = rec.values(rec.cos)
+  val railLo: Double = -1.0
+  val railHi: Double = (rec.adc.half - 1) * lsb
+  val tc: Array[Double] = Array.tabulate(n)(i => (i - 0.5 * (n - 1)) / fs)
+  val ones: Array[Double] = Array.fill(n)(1.0)
+  val lnN: Double = math.log(2.0 * n)
+
+  val phase = new Array[Double](n); val freq = new Array[Double](n)
+  val sn = new Array[Double](n); val cs = new Array[Double](n)
+  val s1 = new Array[Double](n); val s2 = new Array[Double](n); val c1 = new Array[Double](n); val c2 = new Array[Double](n)
+  val us = new Array[Double](n); val vs = new Array[Double](n); val uc = new Array[Double](n); val vc = new Array[Double](n)
+  var predS = new Array[Double](n); var predC = new Array[Double](n)
+  var repS: Array[Double] = ys; var repC: Array[Double] = yc
+  var cens: Repaired = Repaired(ys, yc, null, null)
+  val resS = new Array[Double](n); val resC = new Array[Double](n)
+  var termPredS = new Array[Double](n); var termPredC = new Array[Double](n)
+
+  var spec: ModelSpec = ModelSpec()
+  var base: Array[Double] = new Array[Double](6)
+  var sol: LinSol = _
+  var termIndex: Map[Term, Int] = Map.empty
+  var noise: Noise = Noise(1, 1, 0, 0)
+  var traj: Trajectory = _
+  var typicalHz = 0.0
+
+  def ampS: Double = math.hypot(base(1), base(2))
+  def ampC: Double = math.hypot(base(4), base(5))
+  /** Quadrature phase error in degrees: cos channel phase minus sin channel phase minus 90. */
+  def phaseErrorDeg: Double = {
+    val d = math.toDegrees(math.atan2(base(5), base(4)) - math.atan2(base(2), base(1))) - 90
+    ((d + 540) % 360) - 180
+  }
+  def params: Int = 6 + traj.params + 2 + spec.extraParams
+  def bic: Double = noise.m2ll + params * lnN
+  def rms: Double = math.sqrt((sumSq(resS) + sumSq(resC)) / (2.0 * n))
+  def rmsOf(a: Array[Double]): Double = math.sqrt(sumSq(a) / a.length)
+
+  /** Initial ellipse from the extremes, raw phase by atan2, first trajectory, then the full default fit. */
+  def init(): Unit = {
+    val (os, as) = mid(ys); val (oc, ac) = mid(yc)
+    val raw = new Array[Double](n)
+    var prev = 0.0; var turns = 0.0; var i = 0
+    while (i < n) {
+      val p = math.atan2((ys(i) - os) / as, (yc(i) - oc) / ac) / (2 * math.Pi)
+      if (i > 0) { val d = p - prev; if (d > 0.5) turns -= 1 else if (d < -0.5) turns += 1 }
+      raw(i) = p + turns; prev = p; i += 1
+    }
+    val blk = math.max(16, math.min(4096, n / 64))
+    val speeds = (0 until n / blk).map(b => math.abs(raw((b + 1) * blk - 1) - raw(b * blk)) * fs / (blk - 1)).sorted
+    typicalHz = if (speeds.isEmpty) 0.0 else speeds(speeds.size / 2)
+    // segment length: the one of 16, 6 or 2.5 fringe periods that gives the lowest BIC
+    def start(len: Int): Unit = {
+      traj = new Trajectory(n, len, fs); traj.addFit(raw, null); evalTraj()
+      base = Array(os, as, 0, oc, 0, ac); spec = ModelSpec(); cens = Repaired(ys, yc, null, null); repS = ys; repC = yc
+      refit(4, refineTraj = true)
+    }
+    val lens = Seq(16.0, 6.0, 2.5).map(p => Trajectory.segmentLength(n, fs, typicalHz, p)).distinct
+    val best = if (lens.size == 1) lens.head else lens.minBy { l => start(l); bic }
+    start(best)
+  }
+
+  private def mid(a: Array[Double]): (Double, Double) = {
+    var lo = Double.MaxValue; var hi = -Double.MaxValue
+    a.foreach { v => if (v < lo) lo = v; if (v > hi) hi = v }
+    (0.5 * (lo + hi), math.max(0.5 * (hi - lo), lsb))
+  }
+
+  def evalTraj(): Unit = {
+    traj.eval(phase, freq)
+    var i = 0
+    while (i < n) { val a = 2 * math.Pi * (phase(i) - math.floor(phase(i))); sn(i) = math.sin(a); cs(i) = math.cos(a); i += 1 }
+  }
+
+  /** Fundamental columns of both channels under the skew and bandwidth of `sp`. */
+  def fundamentals(sp: ModelSpec, a1: Array[Double], a2: Array[Double], b1: Array[Double], b2: Array[Double]): Unit = {
+    val fcB = sp.bw.getOrElse("both", Double.PositiveInfinity); val fcS = sp.bw.getOrElse("sin", Double.PositiveInfinity)
+    val fcC = sp.bw.getOrElse("cos", Double.PositiveInfinity)
+    val plain = !sp.hasSkew && sp.bw.isEmpty
+    val w = 2 * math.Pi * sp.skewS
+    var i = 0
+    while (i < n) {
+      if (plain) { a1(i) = sn(i); a2(i) = cs(i); b1(i) = sn(i); b2(i) = cs(i) }
+      else {
+        val f = freq(i); var gs = 1.0; var gc = 1.0; var ls = -0.5 * w * f; var lc = 0.5 * w * f
+        if (!fcB.isInfinite) { val u = f / fcB; val g = 1 / math.sqrt(1 + u * u); gs *= g; gc *= g }
+        var lagS = 0.0; var lagC = 0.0
+        if (!fcS.isInfinite) { val u = f / fcS; gs /= math.sqrt(1 + u * u); lagS = math.atan(u) }
+        if (!fcC.isInfinite) { val u = f / fcC; gc /= math.sqrt(1 + u * u); lagC = math.atan(u) }
+        val m = 0.5 * (lagS + lagC); ls += m - lagS; lc += m - lagC
+        val cls = math.cos(ls); val sls = math.sin(ls); val clc = math.cos(lc); val slc = math.sin(lc)
+        a1(i) = gs * (sn(i) * cls + cs(i) * sls); a2(i) = gs * (cs(i) * cls - sn(i) * sls)
+        b1(i) = gc * (sn(i) * clc + cs(i) * slc); b2(i) = gc * (cs(i) * clc - sn(i) * slc)
+      }
+      i += 1
+    }
+  }
+
+  def baseCols(a1: Array[Double], a2: Array[Double], b1: Array[Double], b2: Array[Double]): IndexedSeq[Col] =
+    IndexedSeq(Col(ones, null), Col(a1, null), Col(a2, null), Col(null, ones), Col(null, b1), Col(null, b2))
+
+  /** Columns of a linear term at the current state. */
+  def termCols(t: Term): IndexedSeq[Col] = t match {
+    case Term.Harm(k, ch) =>
+      def harm(u: Array[Double], v: Array[Double]): (Array[Double], Array[Double]) = {
+        val hs = new Array[Double](n); val hc = new Array[Double](n); var i = 0
+        while (i < n) {
+          val a = math.hypot(u(i), v(i))
+          if (a > 0) {
+            val s = u(i) / a; val c = v(i) / a; var re = 1.0; var im = 0.0; var j = 0
+            while (j < k) { val r2 = re * c - im * s; im = re * s + im * c; re = r2; j += 1 }
+            hs(i) = a * im; hc(i) = a * re
+          }
+          i += 1
+        }
+        (hs, hc)
+      }
+      val sin = if (ch != "cos") { val (a, b) = harm(us, vs); IndexedSeq(Col(a, null), Col(b, null)) } else IndexedSeq()
+      val cos = if (ch != "sin") { val (a, b) = harm(uc, vc); IndexedSeq(Col(null, a), Col(null, b)) } else IndexedSeq()
+      sin ++ cos
+    case Term.Drift =>
+      IndexedSeq(Col(tc, null), Col(null, tc), Col(mul(us, tc), null), Col(null, mul(uc, tc)))
+    case Term.Am =>
+      val l = rec.linesPerRev.getOrElse(1.0)
+      val ca = Array.tabulate(n)(i => math.cos(2 * math.Pi * phase(i) / l)); val sa = Array.tabulate(n)(i => math.sin(2 * math.Pi * phase(i) / l))
+      IndexedSeq(Col(mul(us, ca), mul(uc, ca)), Col(mul(us, sa), mul(uc, sa)))
+    case Term.Inl =>
+      def t2(p: Array[Double]) = Array.tabulate(n)(i => (2 * p(i) * p(i) - 1) * lsb)
+      def t3(p: Array[Double]) = Array.tabulate(n)(i => (4 * p(i) * p(i) * p(i) - 3 * p(i)) * lsb)
+      IndexedSeq(Col(t2(predS), t2(predC)), Col(t3(predS), t3(predC)))
+    case Term.Crosstalk =>
+      val w = Array.tabulate(n)(i => 2 * math.Pi * freq(i))
+      IndexedSeq(Col(mul(vc, w), null), Col(null, mul(vs, w)))
+    case Term.Interference(hz) =>
+      val a = Array.tabulate(n)(i => math.sin(2 * math.Pi * hz * i / fs)); val b = Array.tabulate(n)(i => math.cos(2 * math.Pi * hz * i / fs))
+      IndexedSeq(Col(a, null), Col(b, null), Col(null, a), Col(null, b))
+  }
+
+  private def mul(a: Array[Double], b: Array[Double]): Array[Double] = {
+    val o = new Array[Double](n); var i = 0
+    while (i < n) { o(i) = a(i) * b(i); i += 1 }
+    o
+  }
+
+  /** Measured values with faults undone (closest preimage to the prediction); samples at a saturation level
+    * (ADC rails or a clipping effect) are censored: their value is replaced by the prediction and `cens` holds
+    * the distance from the prediction up to the level (NaN where not censored), for the Tobit likelihood.
+    */
+  def repair(sp: ModelSpec, ps: Array[Double], pc: Array[Double], censor: Boolean = true): Repaired = {
+    val adc = rec.adc
+    def one(ch: Int, y: Array[Double], codes: Array[Int], p: Array[Double]): (Array[Double], Array[Double]) = {
+      val fl = sp.faults.filter(_.ch == ch); val cl = sp.clips.filter(_.ch == ch)
+      val lo = (railLo +: cl.map(_.lo)).max; val hi = (railHi +: cl.map(_.hi)).min
+      val out = y.clone(); val cen = Array.fill(n)(Double.NaN); var i = 0
+      while (i < n) {
+        if (fl.nonEmpty) {
+          var best = codes(i); var bestD = Double.MaxValue
+          val cands = fl.foldLeft(Seq(codes(i)))((cs, f) => cs.flatMap(f.preimages)).distinct
+          cands.foreach { c => val v = adc.fromPins(c) * lsb; val d = math.abs(v - p(i)); if (d < bestD) { bestD = d; best = c } }
+          out(i) = adc.fromPins(best) * lsb
+        }
+        if (censor && out(i) >= hi - 0.5 * lsb) { cen(i) = out(i) - 0.5 * lsb - p(i); out(i) = p(i) }
+        else if (censor && out(i) <= lo + 0.5 * lsb) { cen(i) = p(i) - (out(i) + 0.5 * lsb); out(i) = p(i) }
+        i += 1
+      }
+      (out, cen)
+    }
+    val (a, ca) = one(0, ys, rec.sin, ps); val (b, cb) = one(1, yc, rec.cos, pc)
+    Repaired(a, b, ca, cb)
+  }
+
+  /** Refits the default part and all linear terms (and the trajectory) for the current spec. */
+  def refit(iters: Int, refineTraj: Boolean): Unit = {
+    var it = 0
+    while (it < iters) {
+      if (it > 0 && refineTraj) {
+        val d = new Array[Double](n); val w = new Array[Double](n); var i = 0
+        while (i < n) {
+          val ww = vs(i) * vs(i) + vc(i) * vc(i)
+          if (ww > 0) { d(i) = (resS(i) * vs(i) + resC(i) * vc(i)) / ww / (2 * math.Pi); w(i) = ww }
+          i += 1
+        }
+        traj.addFit(d, w); evalTraj()
+      }
+      if (it > 0) { val r = repair(spec, predS, predC); repS = r.s; repC = r.c; cens = r }
+      fundamentals(spec, s1, s2, c1, c2)
+      if (it == 0) uv()
+      val tcols = spec.terms.map(t => t -> termCols(t))
+      val cols = baseCols(s1, s2, c1, c2) ++ tcols.flatMap(_._2)
+      sol = LinearFit.solve(cols, repS, repC)
+      base = sol.beta.take(6)
+      var at = 6; termIndex = tcols.map { case (t, c) => val k = t -> at; at += c.size; k }.toMap
+      predS = LinearFit.combine(cols, sol.beta, sinCh = true, n); predC = LinearFit.combine(cols, sol.beta, sinCh = false, n)
+      val tb = sol.beta.clone(); for (j <- 0 until 6) tb(j) = 0
+      termPredS = LinearFit.combine(cols, tb, sinCh = true, n); termPredC = LinearFit.combine(cols, tb, sinCh = false, n)
+      residual()
+      uv()
+      it += 1
+      noise = Noise.fit(resS, resC, if (spec.jitter) slopes() else null, cens)
+      if (SignalEngine.debug) System.err.println(f"refit $it: rms $rms%.4g bic $bic%.8g")
+    }
+  }
+
+  /** Refits until BIC stops falling (fault repairs and the trajectory settle over a few iterations). */
+  def converge(maxIters: Int = 12): Unit = {
+    refit(3, refineTraj = true)
+    var prev = Double.PositiveInfinity; var k = 3
+    while (k < maxIters && prev - bic > 0.5) { prev = bic; refit(2, refineTraj = true); k += 2 }
+  }
+
+  def residual(): Unit = { var i = 0; while (i < n) { resS(i) = repS(i) - predS(i); resC(i) = repC(i) - predC(i); i += 1 } }
+
+  /** Fitted fundamental (u) and its derivative by the fringe phase (v) per channel. */
+  def uv(): Unit = {
+    var i = 0
+    while (i < n) {
+      us(i) = base(1) * s1(i) + base(2) * s2(i); vs(i) = base(1) * s2(i) - base(2) * s1(i)
+      uc(i) = base(4) * c1(i) + base(5) * c2(i); vc(i) = base(4) * c2(i) - base(5) * c1(i)
+      i += 1
+    }
+  }
+
+  /** Slope of each channel against time (full scale per second), for the jitter noise model. */
+  def slopes(): (Array[Double], Array[Double]) =
+    (Array.tabulate(n)(i => vs(i) * 2 * math.Pi * freq(i)), Array.tabulate(n)(i => vc(i) * 2 * math.Pi * freq(i)))
+
+  def sumSq(a: Array[Double]): Double = { var s = 0.0; var i = 0; while (i < a.length) { s += a(i) * a(i); i += 1 }; s }
+}
+
+object SignalEngine { val debug: Boolean = sys.props.contains("moire.debug") }
+
+/** Noise model: per-channel white variance plus jitter variance jitter2 * slope^2; m2ll = -2 ln L. */
+final case class Noise(varS: Double, varC: Double, jitter2: Double, m2ll: Double)
+object Noise {
+  /** -2 ln Q(d / sd) summed over censored samples (d = distance from prediction up to the level). */
+  private def censored(cen: Array[Double], sd: Int => Double): (Double, Int) = {
+    if (cen == null) return (0.0, 0)
+    var m = 0.0; var k = 0; var i = 0
+    while (i < cen.length) {
+      if (!cen(i).isNaN) { m -= 2 * math.log(math.max(1e-300, 0.5 * org.hipparchus.special.Erf.erfc(cen(i) / (sd(i) * math.sqrt(2))))); k += 1 }
+      i += 1
+    }
+    (m, k)
+  }
+
+  def fit(rs: Array[Double], rc: Array[Double], slope: (Array[Double], Array[Double]), cens: Repaired = null): Noise = {
+    val n = rs.length
+    def ss(a: Array[Double]) = { var s = 0.0; var i = 0; while (i < n) { s += a(i) * a(i); i += 1 }; s }
+    val floor = 1e-30
+    val cs = if (cens == null) null else cens.censS; val cc = if (cens == null) null else cens.censC
+    def count(c: Array[Double]) = if (c == null) 0 else c.count(!_.isNaN)
+    if (slope == null) {
+      val ns = math.max(1, n - count(cs)); val nc = math.max(1, n - count(cc))
+      val vs = math.max(floor, ss(rs) / ns); val vc = math.max(floor, ss(rc) / nc)
+      val (ms, _) = censored(cs, _ => math.sqrt(vs)); val (mc, _) = censored(cc, _ => math.sqrt(vc))
+      return Noise(vs, vc, 0, ns * (math.log(2 * math.Pi * vs) + 1) + nc * (math.log(2 * math.Pi * vc) + 1) + ms + mc)
+    }
+    val (ds, dc) = slope
+    var vs = ss(rs) / n; var vc = ss(rc) / n; var j2 = 0.0
+    for (_ <- 0 until 8) {
+      // weighted least squares of r^2 on (1_sin, 1_cos, d^2) with weights 1 / var_i^2 (Gaussian ML scoring)
+      val m = Array.ofDim[Double](3, 4)
+      def acc(r: Array[Double], d: Array[Double], v0: Double, ch: Int): Unit = {
+        var i = 0
+        while (i < n) {
+          val d2 = d(i) * d(i); val v = math.max(floor, v0 + j2 * d2); val w = 1 / (v * v); val y = r(i) * r(i)
+          m(ch)(ch) += w; m(ch)(2) += w * d2; m(2)(2) += w * d2 * d2; m(ch)(3) += w * y; m(2)(3) += w * d2 * y
+          i += 1
+        }
+      }
+      acc(rs, ds, vs, 0); acc(rc, dc, vc, 1)
+      m(2)(0) = m(0)(2); m(2)(1) = m(1)(2)
+      val a = Array(Array(m(0)(0), 0, m(0)(2), 0, m(0)(3)), Array(0, m(1)(1), m(1)(2), 0, m(1)(3)),
+        Array(m(2)(0), m(2)(1), m(2)(2), 0, m(2)(3)), Array(0.0, 0, 0, 1, 0))
+      val x = Trajectory.solve4(a)
+      vs = math.max(floor, x(0)); vc = math.max(floor, x(1)); j2 = math.max(0, x(2))
+    }
+    var m2 = 0.0; var i = 0
+    while (i < n) {
+      val a = vs + j2 * ds(i) * ds(i); val b = vc + j2 * dc(i) * dc(i)
+      if (cs == null || cs(i).isNaN) m2 += math.log(2 * math.Pi * a) + rs(i) * rs(i) / a
+      if (cc == null || cc(i).isNaN) m2 += math.log(2 * math.Pi * b) + rc(i) * rc(i) / b
+      i += 1
+    }
+    m2 += censored(cs, k => math.sqrt(vs + j2 * ds(k) * ds(k)))._1 + censored(cc, k => math.sqrt(vc + j2 * dc(k) * dc(k)))._1
+    Noise(vs, vc, j2, m2)
+  }
+}
+
+/** Repaired data of both channels and their censoring distances (NaN = not censored; null = none). */
+final case class Repaired(s: Array[Double], c: Array[Double], censS: Array[Double], censC: Array[Double])

@@ -1,0 +1,167 @@
+package moire.explain
+
+import moire.recording.Recording
+
+/** One accepted effect, as reported. `before`/`after` are the residuals around its acceptance (for plots). */
+final case class Finding(effect: String, channel: String, summary: String, params: Map[String, Double], unc: Map[String, Double],
+                         deltaBic: Double, rmsBefore: Double, rmsAfter: Double, where: String) {
+  def json: ujson.Obj = ujson.Obj("effect" -> effect, "channel" -> channel, "summary" -> summary,
+    "params" -> Report.nums(params), "uncertainty" -> Report.nums(unc), "delta_bic" -> deltaBic,
+    "rms_before" -> rmsBefore, "rms_after" -> rmsAfter, "where" -> where)
+}
+
+/** Residual snapshots for the plots. */
+final case class Snapshot(label: String, resS: Array[Double], resC: Array[Double])
+
+/** explain for signal recordings: default fit, locate, greedy effect search by BIC, final locate. */
+object SignalExplain {
+  /** Accept an effect only when it lowers BIC by more than this (strong evidence on the Kass-Raftery scale). */
+  val Threshold = 10.0
+
+  final case class Result(report: Report, engine: SignalEngine, before: Snapshot, steps: Seq[(Finding, Snapshot, Snapshot)])
+
+  def specOf(model: Seq[EffectSpec]): ModelSpec = model.foldLeft(ModelSpec()) { (sp, e) =>
+    val ch = if (e.channel == "cos") 1 else 0
+    e.effect match {
+      case "harmonic" => sp.copy(terms = sp.terms :+ Term.Harm(e.p("order", 2).toInt, e.channel))
+      case "drift" => sp.copy(terms = sp.terms :+ Term.Drift)
+      case "amplitude_modulation" => sp.copy(terms = sp.terms :+ Term.Am)
+      case "adc_nonlinearity" => sp.copy(terms = sp.terms :+ Term.Inl)
+      case "crosstalk" => sp.copy(terms = sp.terms :+ Term.Crosstalk)
+      case "interference" => sp.copy(terms = sp.terms :+ Term.Interference(e.p("frequency_hz", 50)))
+      case "channel_skew" => sp.copy(hasSkew = true, skewS = e.p("skew_s", 0.0))
+      case "bandwidth" => sp.copy(bw = sp.bw + (e.channel -> e.p("cutoff_hz", 1e6)))
+      case "jitter" => sp.copy(jitter = true)
+      case "adc_bit_fault" => sp.copy(faults = sp.faults :+ Fault(ch, e.p("bit", 0).toInt, if (e.p("stuck_at").isNaN) -1 else e.p("stuck_at").toInt,
+        if (e.p("bridged_to").isNaN) -1 else e.p("bridged_to").toInt))
+      case "clipping" => sp.copy(clips = sp.clips :+ Clip(ch, e.p("low_fs", Double.NegativeInfinity), e.p("high_fs", Double.PositiveInfinity)))
+      case _ => sp
+    }
+  }
+
+  def run(file: String, rec: Recording, model: Seq[EffectSpec], progress: Progress, maxFindings: Int = 8): Result = {
+    val t0 = System.nanoTime()
+    val timing = sys.props.contains("moire.timing")
+    var tl = t0
+    def lap(what: String): Unit = if (timing) { val now = System.nanoTime(); System.err.println(f"$what ${(now - tl) / 1e6}%.0f ms"); tl = now }
+    val e = new SignalEngine(rec)
+    progress.phase("default fit", 4)
+    e.init(); progress.step(4)
+    val givenModel = specOf(model)
+    if (givenModel != ModelSpec()) { e.spec = givenModel; e.converge(); settle(e) }
+    val baseRms = e.rms; val baseBic = e.bic; val baseParams = baselineParams(e)
+    val before = Snapshot("default model", e.resS.clone(), e.resC.clone())
+    lap("default fit")
+    val located = Locate.all(e)
+    lap("locate")
+    val steps = Seq.newBuilder[(Finding, Snapshot, Snapshot)]
+    var done = false; var round = 0
+    while (!done && round < maxFindings) {
+      val cands = new Candidates(e)
+      progress.phase(s"effects, round ${round + 1}", cands.steps)
+      val all = cands.all(() => progress.step(1))
+      lap("candidates")
+      val bic0 = e.bic
+      def dbic(c: Cand) = bic0 - (c.m2ll + (e.params + c.extraK) * e.lnN)
+      val best = all.filter(c => !dbic(c).isNaN).sortBy(c => -dbic(c)).headOption
+      if (SignalEngine.debug) all.sortBy(c => -dbic(c)).take(6).foreach(c => System.err.println(f"  candidate ${c.effect}%s ${c.channel}%s ${c.params}%s dBIC ${dbic(c)}%.1f"))
+      best match {
+        case Some(c) if dbic(c) > Threshold =>
+          val snapB = Snapshot(s"before ${c.effect}", e.resS.clone(), e.resC.clone())
+          val rmsB = e.rms
+          e.spec = c.spec; e.converge(); settle(e)
+          val c1 = demote(e, c)
+          lap("refit")
+          val snapA = Snapshot(s"after ${c.effect}", e.resS.clone(), e.resC.clone())
+          val f = Finding(c1.effect, c1.channel, "", c1.params, c1.unc, bic0 - e.bic, rmsB, e.rms, c1.where)
+          steps += ((f, snapB, snapA))
+          round += 1
+        case _ => done = true
+      }
+    }
+    val cands = new Candidates(e)
+    val fin = steps.result().map { case (f, b, a) =>
+      val g = refresh(f, e)
+      (g.copy(summary = Describe.summary(Cand(g.effect, g.channel, e.spec, 0, 0, g.params, g.unc, g.where), cands.fMin, cands.fMax)), b, a)
+    }
+    val unexplained = Locate.all(e).filter(_.significant)
+    val report = Report(file, "signals", baseRms, baseBic, baseParams, located, fin.map(_._1), unexplained, e.rms, e.bic,
+      rec.length, (System.nanoTime() - t0) / 1e9, notes(e))
+    Result(report, e, before, fin)
+  }
+
+  /** Parameters of a finding from the final joint fit (linear terms) or the final spec (nonlinear). */
+  private def refresh(f: Finding, e: SignalEngine): Finding = {
+    val v = (e.sumSq(e.resS) + e.sumSq(e.resC)) / (2.0 * e.n)
+    e.termIndex.find { case (t, _) => t.name == f.effect && termMatches(t, f) } match {
+      case Some((t, at)) =>
+        val k = e.termCols(t).size
+        val b = e.sol.beta.slice(at, at + k); val sd = (at until at + k).map(i => math.sqrt(math.max(0, e.sol.inv(i)(i)) * v)).toArray
+        val (p, u, _, _) = Describe.term(t, b, sd, e)
+        f.copy(params = p, unc = u)
+      case None => f.effect match {
+        case "channel_skew" => f.copy(params = f.params + ("skew_s" -> e.spec.skewS))
+        case "bandwidth" => f.copy(params = f.params + ("cutoff_hz" -> e.spec.bw.getOrElse(f.channel, f.params("cutoff_hz"))))
+        case "jitter" => f.copy(params = f.params + ("jitter_s" -> math.sqrt(e.noise.jitter2)))
+        case _ => f
+      }
+    }
+  }
+  private def termMatches(t: Term, f: Finding): Boolean = t match {
+    case Term.Harm(k, ch) => f.params.get("order").contains(k.toDouble) && ch == f.channel
+    case Term.Interference(hz) => f.params.get("frequency_hz").contains(hz)
+    case _ => true
+  }
+
+  /** A harmonic accepted on both channels whose part on one channel is not significant after the refit
+    * (the phase trajectory had leaked it there) becomes a one-channel harmonic.
+    */
+  private def demote(e: SignalEngine, c: Cand): Cand = e.spec.terms.lastOption match {
+    case Some(t @ Term.Harm(k, "both")) if e.termIndex.contains(t) =>
+      val at = e.termIndex(t); val v = (e.sumSq(e.resS) + e.sumSq(e.resC)) / (2.0 * e.n)
+      def chi2(j: Int) = (j until j + 2).map(i => e.sol.beta(i) * e.sol.beta(i) / math.max(1e-300, e.sol.inv(i)(i) * v)).sum
+      val need = 2 * e.lnN + Threshold
+      val keep = Seq("sin" -> chi2(at), "cos" -> chi2(at + 2)).filter(_._2 > need).map(_._1)
+      if (keep.size != 1) c
+      else {
+        val t1 = Term.Harm(k, keep.head)
+        e.spec = e.spec.copy(terms = e.spec.terms.init :+ t1); e.converge()
+        c.copy(channel = keep.head, spec = e.spec, where = s"against fringe phase: ${keep.head} channel, order $k")
+      }
+    case _ => c
+  }
+
+  /** Alternates polishing the nonlinear parameters and refitting until BIC settles (at most 4 times). */
+  def settle(e: SignalEngine): Unit = {
+    if (!e.spec.hasSkew && e.spec.bw.isEmpty) return
+    var prev = Double.PositiveInfinity; var k = 0
+    while (k < 4 && prev - e.bic > 0.5) { prev = e.bic; polish(e); e.converge(); k += 1 }
+  }
+
+  /** Re-optimises the nonlinear parameters (skew, cut-offs) of the current spec. */
+  def polish(e: SignalEngine): Unit = {
+    val c = new Candidates(e); val st = math.max(1, e.n / 50000)
+    if (e.spec.hasSkew) {
+      val t = e.spec.skewS; val span = math.max(math.abs(t) * 0.3, 1e-10)
+      val best = c.minimize(x => c.profile(e.spec.copy(skewS = x), st), t - span, t + span)
+      e.spec = e.spec.copy(skewS = best)
+    }
+    for ((ch, fc) <- e.spec.bw) {
+      val x0 = 1 / fc
+      val best = c.minimize(x => c.profile(e.spec.copy(bw = e.spec.bw + (ch -> 1 / x)), st), x0 * 0.6, x0 * 1.6)
+      e.spec = e.spec.copy(bw = e.spec.bw + (ch -> 1 / best))
+    }
+  }
+
+  /** Warnings about the recording itself. */
+  def notes(e: SignalEngine): Seq[String] = {
+    val sd = math.sqrt(math.min(e.noise.varS, e.noise.varC)) / e.lsb
+    (if (sd < 0.5) Seq(f"noise is $sd%.2f LSB rms, below 0.5 LSB: the quantization error is not white noise here, so structure below about 1 LSB may be quantization, not physics") else Nil) ++
+      (if (e.typicalHz * 4 > e.fs) Seq("fewer than 4 samples per fringe period: the phase trajectory is poorly sampled") else Nil)
+  }
+
+  def baselineParams(e: SignalEngine): Map[String, Double] = Map(
+    "offset_sin_fs" -> e.base(0), "offset_cos_fs" -> e.base(3), "amplitude_sin_fs" -> e.ampS, "amplitude_cos_fs" -> e.ampC,
+    "phase_error_deg" -> e.phaseErrorDeg, "noise_sin_fs" -> math.sqrt(e.noise.varS), "noise_cos_fs" -> math.sqrt(e.noise.varC),
+    "typical_fringe_hz" -> e.typicalHz, "trajectory_segments" -> e.traj.nseg)
+}

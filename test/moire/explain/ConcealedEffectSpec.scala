@@ -1,0 +1,110 @@
+package moire.explain
+
+import moire.signal.Motion
+import org.scalatest.flatspec.AnyFlatSpec
+import org.scalatest.matchers.should.Matchers
+
+/** Each effect concealed (smaller than the noise per sample, or behind a larger default-model effect):
+  * explain must name it first and recover its parameter within 20 %.
+  */
+class ConcealedEffectSpec extends AnyFlatSpec with Matchers {
+  import ExplainSupport._
+
+  private def first(r: Report, effect: String): Finding = {
+    info(describe(r) + " | unexplained: " + r.unexplained.map(_.where).mkString(", "))
+    withClue(describe(r)) { r.findings should not be empty; r.findings.head.effect shouldBe effect }
+    r.findings.head.rmsAfter should be < r.findings.head.rmsBefore
+    r.finalRms should be < r.baselineRms
+    r.findings.head
+  }
+
+  "explain" should "find a channel skew hidden behind a phase error (several speeds in one ramp)" in {
+    val f = first(explain(sim(Seq(EffectSpec("channel_skew", Map("skew_s" -> 30e-9))), phaseErrorDeg = 2.0)), "channel_skew")
+    assert(within(f.params("skew_s"), 30e-9), f.params)
+    f.summary should include("after sin")
+  }
+
+  it should "call a skew at one constant speed a phase error, not a skew" in {
+    val r = explain(sim(Seq(EffectSpec("channel_skew", Map("skew_s" -> 30e-9))), motion = Motion.Constant(150e3)))
+    withClue(describe(r)) { r.findings.map(_.effect) should not contain "channel_skew" }
+  }
+
+  it should "find a read-head bandwidth that looks like amplitude drift on a ramp" in {
+    val r = explain(sim(Seq(EffectSpec("bandwidth", Map("cutoff_hz" -> 400e3))), motion = Motion.Ramp(20e3, 250e3, 0.01)))
+    val f = first(r, "bandwidth")
+    r.findings.map(_.effect) should not contain "drift"
+    assert(within(f.params("cutoff_hz"), 400e3), f.params)
+    f.channel shouldBe "both"
+  }
+
+  it should "find a one-channel bandwidth (gain and lag of the cos channel only)" in {
+    val f = first(explain(sim(Seq(EffectSpec("bandwidth", Map("cutoff_hz" -> 1.5e6), "cos")))), "bandwidth")
+    assert(within(f.params("cutoff_hz"), 1.5e6), f.params)
+    f.channel shouldBe "cos"
+  }
+
+  it should "find clock jitter that looks like white noise" in {
+    val f = first(explain(sim(Seq(EffectSpec("jitter", Map("jitter_s" -> 300e-12))), motion = Motion.Constant(200e3))), "jitter")
+    assert(within(f.params("jitter_s"), 300e-12), f.params)
+  }
+
+  it should "find a harmonic smaller than the noise per sample" in {
+    val f = first(explain(sim(Seq(EffectSpec("harmonic", Map("order" -> 3, "amplitude_rel" -> 5e-4), "sin")))), "harmonic")
+    f.params("order") shouldBe 3.0
+    f.channel shouldBe "sin"
+    assert(within(f.params("amplitude_rel"), 5e-4), f.params)
+  }
+
+  it should "find offset and gain drift" in {
+    val r = explain(sim(Seq(EffectSpec("drift", Map("offset_sin_per_s" -> 0.02, "gain_cos_per_s" -> 0.05))),
+      motion = Motion.Ramp(5e3, 40e3, 0.1), fs = 1e6))
+    val f = first(r, "drift")
+    assert(within(f.params("offset_sin_per_s"), 0.02), f.params)
+    assert(within(f.params("gain_cos_per_s"), 0.05), f.params)
+  }
+
+  it should "find amplitude modulation with the mechanical angle" in {
+    val f = first(explain(sim(Seq(EffectSpec("amplitude_modulation", Map("depth" -> 0.002))), motion = Motion.Constant(100e3),
+      linesPerRev = Some(100))), "amplitude_modulation")
+    assert(within(f.params("depth"), 0.002), f.params)
+  }
+
+  it should "find a stuck ADC data line" in {
+    val f = first(explain(sim(Seq(EffectSpec("adc_bit_fault", Map("bit" -> 3, "stuck_at" -> 1), "cos")))), "adc_bit_fault")
+    f.channel shouldBe "cos"; f.params("bit") shouldBe 3.0; f.params("stuck_at") shouldBe 1.0
+  }
+
+  it should "find two bridged ADC data lines" in {
+    val f = first(explain(sim(Seq(EffectSpec("adc_bit_fault", Map("bit" -> 5, "bridged_to" -> 6), "sin")))), "adc_bit_fault")
+    f.channel shouldBe "sin"; f.params("bit") shouldBe 5.0; f.params("bridged_to") shouldBe 6.0
+  }
+
+  it should "find amplifier clipping below the ADC range" in {
+    val f = first(explain(sim(Seq(EffectSpec("clipping", Map("high_fs" -> 0.8), "sin")))), "clipping")
+    f.channel shouldBe "sin"
+    f.params("high_fs") shouldBe 0.8 +- 0.002
+  }
+
+  it should "find ADC integral nonlinearity (not two harmonics)" in {
+    val f = first(explain(sim(Seq(EffectSpec("adc_nonlinearity", Map("inl2_lsb" -> 2.0, "inl3_lsb" -> 1.5))))), "adc_nonlinearity")
+    assert(within(f.params("inl2_lsb"), 2.0) && within(f.params("inl3_lsb"), 1.5), f.params)
+  }
+
+  it should "find capacitive crosstalk (amplitude changing with speed)" in {
+    val f = first(explain(sim(Seq(EffectSpec("crosstalk", Map("sin_from_cos_tau_s" -> 2e-9))))), "crosstalk")
+    assert(within(f.params("sin_from_cos_tau_s"), 2e-9), f.params)
+  }
+
+  it should "find interference below the noise" in {
+    val f = first(explain(sim(Seq(EffectSpec("interference", Map("frequency_hz" -> 12345.0, "amplitude_fs" -> 0.6 * lsb12))))), "interference")
+    f.params("frequency_hz") shouldBe 12345.0 +- 50
+    assert(within(f.params("amplitude_fs"), 0.6 * lsb12), f.params)
+  }
+
+  it should "separate two effects in one recording" in {
+    val r = explain(sim(Seq(EffectSpec("channel_skew", Map("skew_s" -> 20e-9)),
+      EffectSpec("harmonic", Map("order" -> 2, "amplitude_rel" -> 1e-3), "cos"))))
+    withClue(describe(r)) { r.findings.map(_.effect).toSet shouldBe Set("channel_skew", "harmonic") }
+    assert(within(r.findings.find(_.effect == "channel_skew").get.params("skew_s"), 20e-9))
+  }
+}

@@ -1,0 +1,76 @@
+package moire.explain
+
+import org.scalatest.flatspec.AnyFlatSpec
+import org.scalatest.matchers.should.Matchers
+
+import scala.sys.process._
+
+/** simulate and explain as a user runs them: a fresh JVM, files, exit codes. */
+class ExplainCliSpec extends AnyFlatSpec with Matchers {
+  private val javaBin = new java.io.File(System.getProperty("java.home"), "bin/java").getPath
+  private val cp = System.getProperty("java.class.path")
+  def run(args: String*): (Int, String, String) = {
+    val out = new StringBuilder; val err = new StringBuilder
+    val code = Process(Seq(javaBin, "-Xmx2g", "-cp", cp, "moire.cli.Main") ++ args)
+      .!(ProcessLogger(l => out.append(l).append('\n'), l => err.append(l).append('\n')))
+    (code, out.toString, err.toString)
+  }
+
+  "simulate then explain" should "write a JSON report with the documented fields and the PNG plots" in {
+    val dir = os.temp.dir()
+    val (c1, _, e1) = run("simulate", "--out", (dir / "rec.csv").toString, "--samples", "60000", "--phase-error-deg", "2",
+      "--effect", "channel_skew:skew_s=3e-8")
+    withClue(e1) { c1 shouldBe 0 }
+    val (c2, out, e2) = run("explain", (dir / "rec.csv").toString, "--json-dir", (dir / "json").toString, "--plots", (dir / "png").toString, "--quiet")
+    withClue(e2) { c2 shouldBe 0 }
+    val j = ujson.read(os.read(dir / "json" / "rec.json"))
+    j("kind").str shouldBe "signals"
+    j("file").str should endWith("rec.csv")
+    j("baseline")("rms").num should be > j("final")("rms").num
+    j("baseline")("bic").num should be > j("final")("bic").num
+    val f = j("findings").arr.head
+    f("effect").str shouldBe "channel_skew"
+    for (k <- Seq("summary", "params", "uncertainty", "delta_bic", "rms_before", "rms_after", "where")) f.obj.keySet should contain(k)
+    f("params")("skew_s").num shouldBe 3e-8 +- 6e-9
+    j("unexplained").arr shouldBe empty
+    val pngs = os.list(dir / "png").map(_.last)
+    pngs should contain allOf ("rec_residual_time.png", "rec_residual_phase.png", "rec_residual_spectrum.png", "rec_effect_1_channel_skew.png")
+  }
+
+  "explain-bench" should "print the time and the samples per second (small recording, not timed)" in {
+    val line = ExplainCmd.bench(40000, Some(os.temp.dir().toString))
+    line should fullyMatch regex """explain-bench: 40000 samples explained in [0-9.]+ s .* = [0-9]+ samples/s; .*findings: .*"""
+  }
+
+  "explain on calibration data" should "write a calibration report and its plots" in {
+    val dir = os.temp.dir()
+    val rows = for (d <- Seq("cw", "ccw"); k <- 0 until 360) yield {
+      val r = math.toRadians(k); val e = 4 * math.cos(r) + 1.5 * math.sin(2 * r) + 0.8 * math.cos(5 * r) + (if (d == "cw") 0.3 else -0.3) +
+        0.2 * math.sin(k * 12.9898 + (if (d == "cw") 0 else 1)) // deterministic small scatter
+      s"$k,$e,$d"
+    }
+    os.write(dir / "turntable.csv", ("# moire-calibration v1\n# instrument: test\nangle_deg,error_arcsec,direction\n" +: rows).mkString("\n") + "\n")
+    val (c, out, err) = run("explain", (dir / "turntable.csv").toString, "--json-dir", (dir / "j").toString, "--plots", (dir / "p").toString)
+    withClue(err) { c shouldBe 0 }
+    val j = ujson.read(os.read(dir / "j" / "turntable.json"))
+    j("kind").str shouldBe "calibration"
+    j("findings").arr.map(_("effect").str).toSet shouldBe Set("harmonic_order", "reversal")
+    j("findings").arr.find(_("effect").str == "reversal").get("params")("reversal_arcsec").num shouldBe 0.6 +- 0.05
+    os.list(dir / "p").map(_.last) should contain allOf ("turntable_fit.png", "turntable_residual_angle.png", "turntable_residual_spectrum.png")
+    out should include("harmonic_order")
+  }
+
+  "explain" should "name the file and line of malformed input, exit 2, one line" in {
+    val dir = os.temp.dir()
+    os.write(dir / "bad.csv", "# moire-recording v1\n# sample_rate_hz: 1e6\n# adc_bits: 12\nsin,cos\n1,2\n3\n")
+    val (c, _, err) = run("explain", (dir / "bad.csv").toString, "--quiet")
+    c shouldBe 2
+    val lines = err.linesIterator.filter(_.nonEmpty).toSeq
+    lines.size shouldBe 1
+    lines.head should include("bad.csv:6: 1 cells, the header has 2")
+    val (c2, _, err2) = run("explain", (dir / "none.csv").toString)
+    c2 shouldBe 2; err2 should include("no such file")
+    val (c3, _, err3) = run("simulate", "--out", (dir / "x.csv").toString, "--effect", "wobble:x=1")
+    c3 shouldBe 2; err3 should include("'wobble' is not an effect")
+  }
+}

@@ -1,0 +1,59 @@
+package moire.recording
+
+import moire.cli.UsageError
+import moire.signal.{Adc, AdcFormat}
+import org.scalatest.flatspec.AnyFlatSpec
+import org.scalatest.matchers.should.Matchers
+
+class RecordingSpec extends AnyFlatSpec with Matchers {
+  private val good = IndexedSeq("# moire-recording v1", "# sample_rate_hz: 1000000", "# adc_bits: 12", "# lines_per_rev: 2500",
+    "# operator: bench A", "sin,cos,ref_deg", "2048,4095,0.5", "0,100,1.5")
+
+  "Recording" should "parse metadata, codes and extra columns" in {
+    val r = Recording.parse("f.csv", good)
+    r.sampleRateHz shouldBe 1e6; r.adc shouldBe Adc(12, AdcFormat.OffsetBinary); r.linesPerRev shouldBe Some(2500.0)
+    r.sin.toSeq shouldBe Seq(2048, 0); r.cos.toSeq shouldBe Seq(4095, 100); r.extra("ref_deg").toSeq shouldBe Seq(0.5, 1.5)
+    r.meta("operator") shouldBe "bench A"
+    r.values(r.sin).toSeq shouldBe Seq(0.0, -1.0)
+  }
+
+  it should "read back what it writes, in both ADC formats" in {
+    for (f <- AdcFormat.all) {
+      val r = Recording(2e6, Adc(14, f), Array(0, 16383, 8192), Array(1, 2, 3), Map("note" -> "x"), Map("position" -> Array(0.0, 0.25, 0.5)))
+      val p = os.temp(suffix = ".csv"); Recording.write(p, r)
+      val b = Recording.read(p)
+      b.sin.toSeq shouldBe r.sin.toSeq; b.cos.toSeq shouldBe r.cos.toSeq; b.adc shouldBe r.adc; b.sampleRateHz shouldBe 2e6
+      b.extra("position").toSeq shouldBe Seq(0.0, 0.25, 0.5); b.meta("note") shouldBe "x"
+    }
+  }
+
+  it should "reject malformed input with one message naming file, line and problem" in {
+    def bad(lines: IndexedSeq[String], expect: String): Unit = {
+      val e = intercept[UsageError](Recording.parse("f.csv", lines))
+      e.getMessage should startWith("f.csv:")
+      e.getMessage should include(expect)
+      e.getMessage.linesIterator.size shouldBe 1
+    }
+    bad(IndexedSeq(), "f.csv:1: empty file")
+    bad(IndexedSeq("sin,cos", "1,2"), "f.csv:1: first line must be")
+    bad(good.filterNot(_.contains("sample_rate")), "metadata 'sample_rate_hz' is missing")
+    bad(good.filterNot(_.contains("adc_bits")), "metadata 'adc_bits' is missing")
+    bad(good.updated(2, "# adc_bits: twelve"), "adc_bits 'twelve'")
+    bad(good.updated(6, "2048,x,0.5"), "f.csv:7: cos 'x' is not an integer")
+    bad(good.updated(7, "0,4096,1.5"), "f.csv:8: cos code 4096 is outside the 12-bit ADC range 0..4095")
+    bad(good.updated(7, "0,-1,1.5"), "outside the 12-bit ADC range")
+    bad(good.updated(6, "2048,4095"), "f.csv:7: 2 cells, the header has 3")
+    bad(good.updated(6, "2048,4095,NaN"), "f.csv:7: ref_deg 'NaN' is not a number")
+    bad(good.take(6), "no data rows")
+    bad(good.updated(5, "a,b"), "header must name columns sin and cos")
+    bad(good.updated(4, "# operator bench A"), "f.csv:5: metadata line must be")
+  }
+
+  "Calibration" should "reject duplicate angles and bad directions, naming the line" in {
+    val c = IndexedSeq("# moire-calibration v1", "angle_deg,error_arcsec,direction", "0,1.5,cw", "10,2,cw", "0,1,ccw", "20,1,cw")
+    Calibration.parse("c.csv", c).hasDirection shouldBe true
+    intercept[UsageError](Calibration.parse("c.csv", c :+ "10,3,cw")).getMessage should include("c.csv:7: angle 10.0 deg appears twice (also line 4)")
+    intercept[UsageError](Calibration.parse("c.csv", c :+ "30,3,up")).getMessage should include("c.csv:7: direction 'up'")
+    intercept[UsageError](Calibration.parse("c.csv", c :+ "30,nan,cw")).getMessage should include("c.csv:7: error_arcsec 'nan'")
+  }
+}
