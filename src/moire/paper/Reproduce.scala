@@ -103,6 +103,7 @@ object Reproduce {
     out ++= { progress("subdivision"); moire.subdiv.SubdivAccuracy.rows() }
     out ++= moire.adapt.AdaptFigures.rows(progress)
     out ++= moire.quadcomp.QuadCompPaper.rows(progress)
+    out ++= moire.chain.CorrectedSubdivRows.rows(progress)
     out.result()
   }
 }
