@@ -105,6 +105,11 @@ object Main {
                    @arg(doc = "output folder (default generated)") out: String = "generated"): Unit =
     CalibrateCmd.emit(lines, subdivision, harmonics, iterations, dataBits, out)
 
+  @main(doc = "Write the SystemVerilog of a datapath at its default parameters (quadcomp | adapt | corrected).")
+  def emitDatapath(@arg(doc = "quadcomp | adapt | corrected") design: String,
+                   @arg(doc = "output folder (default generated)") out: String = "generated"): Unit =
+    DatapathCmd.run(design, out)
+
   @main(doc = "Fit the m largest harmonics to a moire-calibration v1 CSV; write the coefficient file, register listing and plot.")
   def calibrate(@arg(doc = "calibration CSV (moire-calibration v1)") input: String,
                 @arg(doc = "m, harmonics kept (parallel CORDICs on the board), 1..32 (default 4)") harmonics: Int = 4,
