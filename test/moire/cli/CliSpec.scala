@@ -5,16 +5,7 @@ import scala.sys.process._
 
 /** The command line as a user meets it: a fresh JVM, exit codes, one-line errors. */
 class CliSpec extends AnyFlatSpec {
-  private val javaBin = new java.io.File(System.getProperty("java.home"), "bin/java").getPath
-  private val cp = System.getProperty("java.class.path")
-
-  /** Runs the CLI in its own JVM; returns (exit code, stdout, stderr). */
-  def run(args: String*): (Int, String, String) = {
-    val out = new StringBuilder; val err = new StringBuilder
-    val code = Process(Seq(javaBin, "-cp", cp, "moire.cli.Main") ++ args)
-      .!(ProcessLogger(l => out.append(l).append('\n'), l => err.append(l).append('\n')))
-    (code, out.toString, err.toString)
-  }
+  def run(args: String*): (Int, String, String) = moire.cli.CliProcess.run(args: _*)
 
   "A bad argument" should "print one line naming the parameter, exit 2, no stack trace" in {
     val cases = Seq(

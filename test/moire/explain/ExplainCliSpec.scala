@@ -7,14 +7,7 @@ import scala.sys.process._
 
 /** simulate and explain as a user runs them: a fresh JVM, files, exit codes. */
 class ExplainCliSpec extends AnyFlatSpec with Matchers {
-  private val javaBin = new java.io.File(System.getProperty("java.home"), "bin/java").getPath
-  private val cp = System.getProperty("java.class.path")
-  def run(args: String*): (Int, String, String) = {
-    val out = new StringBuilder; val err = new StringBuilder
-    val code = Process(Seq(javaBin, "-Xmx2g", "-cp", cp, "moire.cli.Main") ++ args)
-      .!(ProcessLogger(l => out.append(l).append('\n'), l => err.append(l).append('\n')))
-    (code, out.toString, err.toString)
-  }
+  def run(args: String*): (Int, String, String) = moire.cli.CliProcess.run(args: _*)
 
   "simulate then explain" should "write a JSON report with the documented fields and the PNG plots" in {
     val dir = os.temp.dir()

@@ -5,14 +5,7 @@ import scala.sys.process._
 
 /** `moire calibrate` in a fresh JVM: files written, exit codes, one-line errors naming file and line. */
 class CalibrateCliSpec extends AnyFlatSpec {
-  private val javaBin = new java.io.File(System.getProperty("java.home"), "bin/java").getPath
-  private val cp = System.getProperty("java.class.path")
-  def run(args: String*): (Int, String, String) = {
-    val out = new StringBuilder; val err = new StringBuilder
-    val code = Process(Seq(javaBin, "-cp", cp, "moire.cli.Main") ++ args)
-      .!(ProcessLogger(l => out.append(l).append('\n'), l => err.append(l).append('\n')))
-    (code, out.toString, err.toString)
-  }
+  def run(args: String*): (Int, String, String) = moire.cli.CliProcess.run(args: _*)
 
   "calibrate" should "write the coefficient file, register listing and plot, and report the reversal" in {
     val dir = os.temp.dir()

@@ -23,16 +23,12 @@ class SubdivEmitSpec extends AnyFlatSpec {
   }
 
   "emit-subdiv" should "reject bad options with one line and exit code 2" in {
-    val javaBin = new java.io.File(System.getProperty("java.home"), "bin/java").getPath
-    val cp = System.getProperty("java.class.path")
     for ((args, expected) <- Seq(
       Seq("--counts", "1000") -> "--counts (M) must be a power of two in 4..65536, got 1000",
       Seq("--method", "tan") -> "--method: 'tan' is not a phase method",
       Seq("--adc-format", "gray") -> "--adc-format: ADC format 'gray' is unknown",
       Seq("--min-edge-clocks", "0") -> "--min-edge-clocks must be in 1..4096")) {
-      val err = new StringBuilder
-      val code = Process(Seq(javaBin, "-cp", cp, "moire.cli.Main", "emit-subdiv") ++ args)
-        .!(ProcessLogger(_ => (), l => err.append(l).append('\n')))
+      val (code, _, err) = moire.cli.CliProcess.run("emit-subdiv" +: args: _*)
       val lines = err.toString.linesIterator.filter(_.nonEmpty).toSeq
       assert(code == 2 && lines.size == 1 && lines.head.startsWith(s"moire: $expected"), s"$args: exit $code, $err")
     }
