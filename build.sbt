@@ -11,6 +11,9 @@ lazy val root = (project in file("."))
     Compile / scalaSource := baseDirectory.value / "src",
     Compile / javaSource := baseDirectory.value / "src",
     Compile / resourceDirectory := baseDirectory.value / "src" / "resources",
+    // Board wrappers live apart from the designs: Scala under boards/, vendor Verilog under boards/resources.
+    Compile / unmanagedSourceDirectories += baseDirectory.value / "boards",
+    Compile / unmanagedResourceDirectories += baseDirectory.value / "boards" / "resources",
     Test / scalaSource := baseDirectory.value / "test",
     Test / javaSource := baseDirectory.value / "test",
     Test / resourceDirectory := baseDirectory.value / "test" / "resources",
