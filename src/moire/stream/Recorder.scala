@@ -110,7 +110,7 @@ object Recorder {
     val file = os.Path(o.out, os.pwd)
     Recording.write(file, rec.recording(s, meta))
     val summary = Seq(
-      f"wrote $file: ${rec.rows} records, ${s.sampleRateHz}%.6g Hz (adc clock ${s.adcClockHz}%.6g Hz / D ${s.decimation}), $elapsed%.2f s",
+      f"wrote $file: ${rec.rows} records at ${num(s.sampleRateHz)} Hz (adc clock ${num(s.adcClockHz)} Hz / D ${s.decimation}) in $elapsed%.2f s",
       s"frames ${stats.frames}, records ${stats.records}, CRC errors ${stats.crcErrors}, bad headers ${stats.badHeaders}, " +
         s"seq gaps ${stats.seqGaps} (${stats.seqMissing} frames), sample-index gaps ${stats.indexGaps} (${stats.indexMissing} records), " +
         s"dropped records ${stats.dropped}, truncated ${stats.truncated}")
@@ -123,10 +123,10 @@ object Recorder {
   /** One WARNING line when anything was lost, naming each figure that is not zero. */
   def lossWarning(st: StreamStats): Option[String] = {
     val parts = Seq(
-      st.crcErrors -> s"${st.crcErrors} frames failed the CRC", st.badHeaders -> s"${st.badHeaders} frames had a bad header",
+      st.crcErrors -> s"${st.crcErrors} frame(s) failed the CRC", st.badHeaders -> s"${st.badHeaders} frame(s) had a bad header",
       st.seqGaps -> s"${st.seqGaps} seq gaps (${st.seqMissing} frames missing)",
       st.indexGaps -> s"${st.indexGaps} sample-index gaps (${st.indexMissing} records missing)",
-      st.dropped -> s"the board dropped ${st.dropped} records (FIFO overflow)",
+      st.dropped -> s"the board dropped ${st.dropped} record(s) (FIFO overflow)",
       st.truncated -> s"the stream ended inside a frame").collect { case (n, t) if n > 0 => t }
     if (parts.isEmpty) None else Some(s"WARNING: data lost: ${parts.mkString(", ")}; the file holds every record received and these figures (docs/recording.md)")
   }
@@ -141,7 +141,7 @@ object Recorder {
     "setup" -> (if (s.fromBoard) "registers" else "by hand (listen-only)"),
     "started_utc" -> java.time.Instant.now().minusMillis((elapsed * 1000).toLong).toString)
 
-  private def num(d: Double): String = if (d == math.rint(d) && math.abs(d) < 1e15) d.toLong.toString else d.toString
+  private def num(d: Double): String = if (d == math.rint(d) && math.abs(d) < 1e15) d.toLong.toString else f"$d%.6f".reverse.dropWhile(_ == '0').reverse
 
   /** Hunts the stream for two consecutive records D apart; returns the bytes after that frame. */
   private def settle(c: BoardClient, o: RecordOptions, s: BoardSetup): Array[Byte] = {

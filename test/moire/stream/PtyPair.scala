@@ -94,6 +94,7 @@ final case class Sent(frame: RecordFrame, wire: Array[Byte], damaged: Boolean)
   * Commands are decoded with [[CommandDecoder]] and answered from a register map: writes change writable
   * registers ([[Registers.writable]], the harmonic window only up to `harmonicSlots`), others reply unchanged;
   * bad commands count in cmd_errors. `stream` sends record frames; seq is shared with the replies.
+  * Several boards may follow one another on a pair (close one before making the next).
   * `streamWhen`: the stream starts (if `stream` was called) after the reply to the first command it
   * accepts; None: at once.
   */
@@ -119,10 +120,11 @@ final class FakeBoard(pty: PtyPair, initial: Map[Int, Long], harmonicSlots: Int 
 
   private val reader = new Thread(() => {
     val buf = new Array[Byte](256)
+    // polls (available) instead of blocking in read, so that close() ends it and a later board on the same pair gets every byte
     try while (!stopped) {
-      val n = pty.boardIn.read(buf)
+      val n = if (pty.boardIn.available() > 0) pty.boardIn.read(buf) else { Thread.sleep(1); 0 }
       if (n < 0) stopped = true
-      else cmdDecoder.feed(java.util.Arrays.copyOf(buf, n)).foreach { c =>
+      else if (n > 0) cmdDecoder.feed(java.util.Arrays.copyOf(buf, n)).foreach { c =>
         cmds.add(c)
         synchronized {
           regs(Registers.CmdErrors.addr) = cmdDecoder.errors
@@ -132,7 +134,7 @@ final class FakeBoard(pty: PtyPair, initial: Map[Int, Long], harmonicSlots: Int 
         }
         if (!go && streamWhen.exists(_(c))) go = true
       }
-    } catch { case _: IOException => }
+    } catch { case _: IOException | _: InterruptedException => }
   }, "fake-board-reader")
   reader.setDaemon(true); reader.start()
 
@@ -166,7 +168,7 @@ final class FakeBoard(pty: PtyPair, initial: Map[Int, Long], harmonicSlots: Int 
   def close(): Unit = {
     stopped = true
     streamer.foreach(_.join(2000))
-    // the reader stops when the pty pair closes (its read fails); it is a daemon thread
+    reader.join(2000)
   }
 }
 
