@@ -32,8 +32,8 @@ final case class RecordResult(file: os.Path, rows: Int, stats: StreamStats, setu
 
 /** `moire record`: board setup by register commands, a timed read of the stream, a moire-recording v1 file.
   *
-  * The recording starts after the setup, once two consecutive records are D apart (records that were
-  * waiting in the board's FIFO at the old decimation are not recorded), and ends at the first frame
+  * The recording starts after the setup and after the first frame whose records are D apart (records
+  * that were waiting in the board's FIFO at the old decimation are not recorded), and ends at the first frame
   * boundary after `seconds`. Every loss after that start is counted, printed and written to the metadata.
   */
 object Recorder {
@@ -143,13 +143,17 @@ object Recorder {
 
   private def num(d: Double): String = if (d == math.rint(d) && math.abs(d) < 1e15) d.toLong.toString else f"$d%.6f".reverse.dropWhile(_ == '0').reverse
 
-  /** Hunts the stream for two consecutive records D apart; returns the bytes after that frame. */
+  /** Hunts the stream for the first record frame whose records are D apart (with n = 1: D after the previous
+    * frame's record); returns the bytes after that frame.
+    */
   private def settle(c: BoardClient, o: RecordOptions, s: BoardSetup): Array[Byte] = {
     val dec = new Decoder(s.decimation)
     dec.feed(c.decoder.pending)
     val buf = new Array[Byte](4096)
-    // --seconds, plus the time to empty a full 1024-record FIFO at the link rate (old-decimation records may wait there)
-    val limitS = o.seconds + 1024 * 12.5 * 10 / o.baud
+    // --seconds, plus the time to empty a full 1024-record FIFO at the link rate (old-decimation records may wait
+    // there), plus two frames at the record rate (slow when D is large)
+    val n = s.frameRecords.getOrElse(8L)
+    val limitS = o.seconds + 1024 * 12.5 * 10 / o.baud + 2.0 * n / s.sampleRateHz
     val until = System.nanoTime() + (limitS * 1e9).toLong
     var last = -1L; var lastSeq = -1
     val steps = scala.collection.mutable.LinkedHashSet.empty[Long]
@@ -166,7 +170,7 @@ object Recorder {
               val firstOk = last >= 0 && f.seq == ((lastSeq + 1) & 0xFFFF) && ((idx.head - last) & Wire.MaxU32) == s.decimation
               val inner = idx.sliding(2).forall(p => p.size < 2 || ((p(1) - p(0)) & Wire.MaxU32) == s.decimation)
               idx.sliding(2).foreach(p => if (p.size == 2 && steps.size < 5) steps += ((p(1) - p(0)) & Wire.MaxU32))
-              if (firstOk && inner) return java.util.Arrays.copyOfRange(buf, i + 1, n)
+              if (inner && (idx.size >= 2 || firstOk)) return java.util.Arrays.copyOfRange(buf, i + 1, n)
               last = idx.last; lastSeq = f.seq
             case r: RegisterReply => lastSeq = r.seq
           }
@@ -180,7 +184,7 @@ object Recorder {
       throw new UsageError(f"${o.port}: no frames in $limitS%.1f s at ${o.baud} baud ($got): check --baud, the wiring " +
         "(board TXD -> host RXD) and that streaming is on")
     throw new UsageError(f"${o.port}: records are ${steps.mkString(", ")} samples apart, never the decimation ${s.decimation} " +
-      f"twice in a row in $limitS%.1f s: wrong --decimation, or the board drops records")
+      f"in one frame in $limitS%.1f s: wrong --decimation?")
   }
 
   /** Growing columns of the records received. */

@@ -101,6 +101,35 @@ class RecorderSpec extends AnyFlatSpec with Matchers {
     idx.last should be > 4294967295.0
   }
 
+  it should "start after the records at the old decimation that were waiting in the board's FIFO" in PtyPair { pty =>
+    val old = BoardStreamFixture.records(5 * n + 3, 1000, clock.toDouble)
+    val fresh = BoardStreamFixture.records(150 * n, d, clock.toDouble, first = old.last.index + 777)
+    val frames = (old ++ fresh).grouped(n).map(rs => Planned(rs)).toIndexedSeq // frame 5 holds both
+    val board = new FakeBoard(pty, FakeBoard.registers(decimation = 1000), streamWhen = Some(_.addr == Registers.FrameRecords.addr))
+    board.stream(frames.iterator)
+    val out = pty.dir / "settle.csv"
+    val warned = Vector.newBuilder[String]
+    val r = try Recorder.run(opts(pty, out, 0.5).copy(decimation = Some(d)), _ => (), warned += _) finally board.close()
+    warned.result() shouldBe empty
+    val idx = Recording.read(out).extra("sample_index").map(_.toLong)
+    idx.head shouldBe frames(7).records.head.index // frame 6 is the first all at D; the recording starts after it
+    r.stats.indexGaps shouldBe 0; r.stats.seqGaps shouldBe 0
+  }
+
+  it should "name the record spacing when --decimation given by hand is not the board's (no pty needed)" in {
+    val recs = BoardStreamFixture.records(40 * n, 1000, clock.toDouble)
+    val bytes = Encoder.frames(recs.grouped(n).zipWithIndex.map { case (rs, k) => RecordFrame(k, 0, rs) }.toSeq)
+    val o = RecordOptions("memory", 0.2, "never.csv", baud = 1000000, quiet = true, listenOnly = true, decimation = Some(d),
+      adcClockHz = Some(clock.toDouble), adcFormat = Some("offset-binary"), countsPerPeriod = Some(1024))
+    val e = intercept[UsageError](Recorder.record(new MemoryLink(bytes), o, _ => (), _ => ()))
+    e.getMessage should startWith(s"memory: records are 1000 samples apart, never the decimation $d in one frame")
+    os.exists(os.pwd / "never.csv") shouldBe false
+    // with the right D the same bytes record cleanly: all frames after the first
+    val out = os.temp.dir() / "mem.csv"
+    val r = Recorder.record(new MemoryLink(bytes), o.copy(decimation = Some(1000), out = out.toString), _ => (), _ => ())
+    r.rows shouldBe 39 * n; r.stats.lost shouldBe false
+  }
+
   it should "say in one line when the board does not answer, and write no file" in PtyPair { pty =>
     val out = pty.dir / "none.csv"
     val e = intercept[UsageError](Recorder.run(opts(pty, out), _ => (), _ => ()))
