@@ -150,6 +150,15 @@ object Main {
                    @arg(doc = "folder for the recording, JSON and plots (default: a temporary folder)") out: Option[String] = None): Unit =
     println(moire.explain.ExplainCmd.bench(samples, out))
 
+  @main(doc = "Run a recording's ADC codes through the generated RTL (Verilator); see replay --help.")
+  def replay(@arg(doc = "FILE [--design subdiv|corrected] [--out OUT.csv] [--quiet] [emit-subdiv options]") args: mainargs.Leftover[String]): Unit =
+    moire.replay.ReplayCmd.main(args.value)
+
+  @main(doc = "Samples per second of the Verilator harness, chiseltest peek/poke and the Scala model.")
+  def bench(@arg(doc = "also write the figures as JSON to this file") json: Option[String] = None,
+            @arg(doc = "samples through the Verilator harness (default 4000000)") samples: Int = 4000000): Unit =
+    moire.replay.Bench.run(json, samples)
+
   private val badValue = """Invalid argument (--\S+) <(\w+)> failed to parse "(.*)" due to.*""".r
   /** The first line of a mainargs error, reworded for a user. */
   def oneLine(msg: String): String = {
