@@ -36,7 +36,7 @@ object Bench {
     val ctCycles = math.min(samples, 200000)
     say(s"(b) chiseltest peek/poke (${if (hasVerilator) "verilator" else "treadle"} backend), $ctCycles cycles")
     val dir = os.temp.dir(prefix = "moire-bench-chiseltest")
-    val annos = Seq(firrtl2.options.TargetDirAnnotation(dir.toString)) ++ (if (hasVerilator) Seq(VerilatorBackendAnnotation) else Nil)
+    val annos = Seq(firrtl2.options.TargetDirAnnotation(dir.relativeTo(os.pwd).toString)) ++ (if (hasVerilator) Seq(VerilatorBackendAnnotation) else Nil)
     var ctLoop = 0.0; var sink = 0L
     val tc = System.nanoTime()
     RawTester.test(new SubdivAdc(p, fmt), annos) { dut =>
