@@ -142,8 +142,10 @@ object Main {
               @arg(doc = "folder for one JSON report per file") jsonDir: Option[String] = None,
               @arg(doc = "folder for PNG plots") plots: Option[String] = None,
               @arg(doc = "model JSON whose effects are part of the simulation (fitted, not reported)") model: Option[String] = None,
-              @arg(doc = "no progress bar or text report") quiet: Flag = Flag()): Unit =
-    moire.explain.ExplainCmd.explainArgs(files.value, jsonDir, plots, model, quiet.value)
+              @arg(doc = "no progress bar or text report") quiet: Flag = Flag(),
+              @arg(doc = "emit-subdiv options of the board's subdivider, e.g. \"--counts 4096\" (default: from the metadata)") subdiv: Option[String] = None,
+              @arg(doc = "do not compare a recording's board outputs (position column) with the RTL") noRtl: Flag = Flag()): Unit =
+    moire.explain.ExplainCmd.explainArgs(files.value, jsonDir, plots, model, quiet.value, subdiv, noRtl.value)
 
   @main(doc = "Benchmark: simulate and explain one recording, print the time and samples per second.")
   def explainBench(@arg(doc = "samples in the recording") samples: Int = 1000000,

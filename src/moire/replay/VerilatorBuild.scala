@@ -7,7 +7,7 @@ final case class Harness(exe: os.Path, cached: Boolean, buildSeconds: Double, di
 
 /** Compiles a design with Verilator and the C++ harness (src/resources/moire/replay/harness.cpp), once per
   * configuration: the cache folder is keyed by a hash of the Verilog, the harness, the flags and the
-  * Verilator version. Cache root: $MOIRE_REPLAY_CACHE, else $XDG_CACHE_HOME/moire/replay, else ~/.cache/moire/replay.
+  * Verilator version. Cache root: system property moire.replay.cache or $MOIRE_REPLAY_CACHE, else $XDG_CACHE_HOME/moire/replay, else ~/.cache/moire/replay.
   */
 object VerilatorBuild {
   /** Verilator and C++ options for speed (measured in docs/replay.md): single thread, no tracing or assertions. */
@@ -22,7 +22,7 @@ object VerilatorBuild {
     try new String(in.readAllBytes(), "UTF-8") finally in.close()
   }
 
-  def cacheRoot: os.Path = sys.env.get("MOIRE_REPLAY_CACHE").filter(_.nonEmpty).map(os.Path(_, os.pwd))
+  def cacheRoot: os.Path = sys.props.get("moire.replay.cache").orElse(sys.env.get("MOIRE_REPLAY_CACHE")).filter(_.nonEmpty).map(os.Path(_, os.pwd))
     .orElse(sys.env.get("XDG_CACHE_HOME").filter(_.nonEmpty).map(d => os.Path(d, os.pwd) / "moire" / "replay"))
     .getOrElse(os.home / ".cache" / "moire" / "replay")
 
