@@ -59,3 +59,19 @@ class ReplaySpec extends AnyFlatSpec {
     assert(VerilatorBuild.key(v) == VerilatorBuild.key(d.verilog()), "emitting twice gives the same Verilog")
   }
 }
+
+/** The second design: ADC front end + adaptive corrector + subdivider. */
+class ReplayCorrectedSpec extends AnyFlatSpec {
+  ReplaySupport.init()
+
+  "replay of the corrected chain" should "equal its clock-level model on every row" in {
+    SimSupport.requireTool(this, "verilator")
+    val d = ReplayDesign("corrected", moire.cli.SubdivConfig())
+    val s = SignalSim.generate(moire.subdiv.SubdivAccuracy.imperfect.copy(noiseRms = 0.001), Motion.Oscillate(40, 4000), Adc(d.inputBits, d.format), 50e6, 30000)
+    val pins = PinStream(s.sin, s.cos, s.otrSin, s.otrCos)
+    val out = Replay.run(ReplaySupport.harness(d), d, pins)
+    val check = ModelCheck.run(d, pins, out, head = pins.length)
+    assert(check.ok && check.rows == pins.length, check.text)
+    assert(out.position.max - out.position.min > 10 * d.out.counts)
+  }
+}
