@@ -37,11 +37,13 @@ object Bench {
     say(s"(b) chiseltest peek/poke (${if (hasVerilator) "verilator" else "treadle"} backend), $ctCycles cycles")
     val dir = os.temp.dir(prefix = "moire-bench-chiseltest")
     val annos = Seq(firrtl2.options.TargetDirAnnotation(dir.relativeTo(os.pwd).toString)) ++ (if (hasVerilator) Seq(VerilatorBackendAnnotation) else Nil)
-    var ctLoop = 0.0; var sink = 0L
+    val threads = java.lang.management.ManagementFactory.getThreadMXBean
+    def cpuNow = threads.getCurrentThreadCpuTime / 1e9
+    var ctLoop = 0.0; var ctCpu = 0.0; var sink = 0L
     val tc = System.nanoTime()
     RawTester.test(new SubdivAdc(p, fmt), annos) { dut =>
       dut.io.in.valid.poke(true.B); dut.io.clearStatus.poke(false.B)
-      val t0 = System.nanoTime()
+      val t0 = System.nanoTime(); val c0 = cpuNow
       var i = 0
       while (i < ctCycles) {
         dut.io.in.bits.sin.poke(pins.sin(i).U); dut.io.in.bits.cos.poke(pins.cos(i).U)
@@ -49,36 +51,38 @@ object Bench {
         sink += dut.io.out.bits.position.peekInt().toLong
         i += 1
       }
-      ctLoop = (System.nanoTime() - t0) / 1e9
+      ctLoop = (System.nanoTime() - t0) / 1e9; ctCpu = cpuNow - c0
     }
     val ctBuild = (System.nanoTime() - tc) / 1e9 - ctLoop
     os.remove.all(dir)
-    val ct = ctCycles / ctLoop
+    val ct = ctCycles / ctLoop; val ctC = ctCycles / ctCpu
 
     // (c) clock-level Scala model (after a warm-up run)
     val mN = math.min(samples, 1000000)
     say(s"(c) Scala model (clock-level), $mN samples")
-    def modelRun(): Double = {
-      val m = d.model(); val t0 = System.nanoTime(); var i = 0
+    def modelRun(): (Double, Double) = {
+      val m = d.model(); val t0 = System.nanoTime(); val c0 = cpuNow; var i = 0
       while (i < mN) { sink ^= m.clock(true, pins.sin(i), pins.cos(i), false, false).out.position; i += 1 }
-      (System.nanoTime() - t0) / 1e9
+      ((System.nanoTime() - t0) / 1e9, cpuNow - c0)
     }
     modelRun()
-    val model = mN / modelRun()
+    val (mWall, mCpu) = modelRun()
+    val model = mN / mWall; val modelC = mN / mCpu
 
     val load = java.lang.management.ManagementFactory.getOperatingSystemMXBean.getSystemLoadAverage
     val cores = Runtime.getRuntime.availableProcessors
     println(s"bench: ${d.describe}, latency ${d.latency} clocks; $cores cores, load average ${f"$load%.1f"} (sink $sink)")
     println(f"  (a) Verilator harness   ${vWall / 1e6}%8.2f M samples/s  ($samples samples, loop ${o.loopSeconds}%.2f s wall, ${vCpu / 1e6}%.2f M/s by CPU time; " +
       f"end to end incl. file I/O ${samples / endToEnd / 1e6}%.2f M/s; build ${if (h.cached) "cached" else f"${h.buildSeconds}%.1f s"})")
-    println(f"  (b) chiseltest peek/poke ${ct / 1e6}%8.3f M samples/s  ($ctCycles cycles in ${ctLoop}%.2f s; build and start ${ctBuild}%.1f s)")
-    println(f"  (c) Scala model          ${model / 1e6}%8.3f M samples/s  ($mN samples)")
-    println(f"  ratios: harness / chiseltest ${vWall / ct}%.1f x, harness / model ${vWall / model}%.1f x, model / chiseltest ${model / ct}%.2f x")
+    println(f"  (b) chiseltest peek/poke ${ct / 1e6}%8.3f M samples/s  ($ctCycles cycles in ${ctLoop}%.2f s wall, ${ctC / 1e6}%.3f M/s by CPU time; build and start ${ctBuild}%.1f s)")
+    println(f"  (c) Scala model          ${model / 1e6}%8.3f M samples/s  ($mN samples, ${modelC / 1e6}%.3f M/s by CPU time)")
+    println(f"  ratios (wall): harness / chiseltest ${vWall / ct}%.1f x, harness / model ${vWall / model}%.1f x, model / chiseltest ${model / ct}%.2f x")
+    println(f"  ratios (CPU):  harness / chiseltest ${vCpu / ctC}%.1f x, harness / model ${vCpu / modelC}%.1f x, model / chiseltest ${modelC / ctC}%.2f x")
     println(f"  goal ${Goal / 1e6}%.0f M samples/s on one core: the harness reaches ${vWall / Goal * 100}%.0f %% of it (${vCpu / Goal * 100}%.0f %% by CPU time)")
     json.foreach { f =>
       val path = os.Path(f, os.pwd)
       val j = ujson.Obj("verilator_samples_per_s" -> vWall, "chiseltest_samples_per_s" -> ct, "model_samples_per_s" -> model,
-        "verilator_cpu_samples_per_s" -> vCpu, "verilator_end_to_end_samples_per_s" -> samples / endToEnd,
+        "verilator_cpu_samples_per_s" -> vCpu, "chiseltest_cpu_samples_per_s" -> ctC, "model_cpu_samples_per_s" -> modelC, "verilator_end_to_end_samples_per_s" -> samples / endToEnd,
         "verilator_build_seconds" -> h.buildSeconds, "verilator_build_cached" -> h.cached, "chiseltest_build_seconds" -> ctBuild,
         "chiseltest_backend" -> (if (hasVerilator) "verilator" else "treadle"), "samples" -> samples, "chiseltest_samples" -> ctCycles,
         "model_samples" -> mN, "goal_samples_per_s" -> Goal, "design" -> d.topName, "cores" -> cores, "load_average" -> load)

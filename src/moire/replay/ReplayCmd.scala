@@ -57,9 +57,11 @@ object ReplayCmd {
   /** Emits and builds (or finds in the cache) the harness of a design. */
   def build(d: ReplayDesign, log: String => Unit): Harness = {
     VerilatorBuild.verilatorVersion
+    val t0 = System.nanoTime()
     val v = d.verilog()
+    val emitS = (System.nanoTime() - t0) / 1e9
     val h = VerilatorBuild.harness(v, d.topName)
-    log(if (h.cached) s"cached build ${h.dir}" else f"built ${h.dir} in ${h.buildSeconds}%.1f s")
+    log((if (h.cached) s"cached build ${h.dir}" else f"built ${h.dir} in ${h.buildSeconds}%.1f s") + f" (emitting the Verilog took $emitS%.1f s)")
     h
   }
 
@@ -69,8 +71,12 @@ object ReplayCmd {
     val bar = if (quiet || p.length < 2000000) None
       else Some(new me.tongfei.progressbar.ProgressBarBuilder().setTaskName("replay").setInitialMax(p.length.toLong)
         .setConsumer(new me.tongfei.progressbar.ConsoleProgressBarConsumer(System.err)).build())
+    val t0 = System.nanoTime()
     val out = try Replay.run(h, d, p, k => bar.foreach(_.stepTo(k))) finally bar.foreach(_.close())
-    (out, ModelCheck.run(d, p, out))
+    val t1 = System.nanoTime()
+    val check = ModelCheck.run(d, p, out)
+    log(f"harness ${(t1 - t0) / 1e9}%.1f s (clocking loop ${out.loopSeconds}%.2f s), model check ${(System.nanoTime() - t1) / 1e9}%.1f s")
+    (out, check)
   }
 
   def main(args: Seq[String]): Unit = {
@@ -92,15 +98,21 @@ object ReplayCmd {
     }
     val f = file.getOrElse(throw new UsageError("replay: name a recording file (see --help)"))
     val path = os.Path(f, os.pwd)
+    var t = System.nanoTime()
+    def lap(): Double = { val now = System.nanoTime(); val s = (now - t) / 1e9; t = now; s }
     val rec = Recording.read(path)
+    val readS = lap()
     val d = ReplayDesign(design, config(rest.result(), rec.meta))
     matchAdc(f, rec, d)
     val p = pins(f, rec)
     def log(s: String): Unit = if (!quiet) System.err.println(s"replay: $s")
     log(s"${d.describe}, latency ${d.latency} clocks, ${p.length} samples")
     val (o, check) = replay(d, p, quiet, log)
+    val replayS = lap()
     val dest = os.Path(out.getOrElse(path.last.stripSuffix(".csv") + "-replay.csv"), os.pwd)
     OutputCsv.write(dest, f, d, o, rec.extra.get("sample_index"))
+    val writeS = lap()
+    log(f"read CSV $readS%.1f s, emit + build + replay + check $replayS%.1f s, write CSV $writeS%.1f s")
     println(f"wrote $dest (${o.length} rows; harness ${o.length / o.loopSeconds / 1e6}%.2f M samples/s)")
     println(check.text)
     if (!check.ok) sys.exit(1)
