@@ -7,11 +7,13 @@ import moire.recording.Recording
 /** `replay FILE [--design subdiv|corrected] [--out OUT.csv] [emit-subdiv options]`. */
 object ReplayCmd {
   val Usage: String =
-    """Usage: replay FILE [--design subdiv|corrected] [--out OUT.csv] [--check-rows N] [--quiet] [emit-subdiv options]
+    """Usage: replay FILE [--design subdiv|corrected] [--out OUT.csv] [--check-rows N] [--check-windows W] [--quiet] [emit-subdiv options]
       |  Runs a moire-recording v1 file's ADC codes through the generated RTL (Verilator, built once per
       |  configuration and cached), writes the outputs (row i = outputs for input sample i) and checks a
       |  sample of the rows against the bit-accurate model. Design options default from the recording's
-      |  metadata (adc_bits -> --input-bits, adc -> --adc-format, counts_per_period -> --counts).""".stripMargin
+      |  metadata (adc_bits -> --input-bits, adc -> --adc-format, counts_per_period -> --counts).
+      |    --check-rows N      rows checked clock by clock from the start (default 100000)
+      |    --check-windows W   windows of 5000 rows checked over the rest (default 20)""".stripMargin
 
   private val subdivParser = ParserForClass[SubdivConfig]
 
@@ -66,7 +68,7 @@ object ReplayCmd {
   }
 
   /** Replays pins through a design: build, run with a progress bar on long runs, check against the model. */
-  def replay(d: ReplayDesign, p: PinStream, quiet: Boolean, log: String => Unit): (ReplayOutput, CheckResult) = {
+  def replay(d: ReplayDesign, p: PinStream, quiet: Boolean, log: String => Unit, head: Int = 100000, windows: Int = 20): (ReplayOutput, CheckResult) = {
     val h = build(d, log)
     val bar = if (quiet || p.length < 2000000) None
       else Some(new me.tongfei.progressbar.ProgressBarBuilder().setTaskName("replay").setInitialMax(p.length.toLong)
@@ -74,7 +76,7 @@ object ReplayCmd {
     val t0 = System.nanoTime()
     val out = try Replay.run(h, d, p, k => bar.foreach(_.stepTo(k))) finally bar.foreach(_.close())
     val t1 = System.nanoTime()
-    val check = ModelCheck.run(d, p, out)
+    val check = ModelCheck.run(d, p, out, head, windows)
     log(f"harness ${(t1 - t0) / 1e9}%.1f s (clocking loop ${out.loopSeconds}%.2f s), model check ${(System.nanoTime() - t1) / 1e9}%.1f s")
     (out, check)
   }
@@ -82,6 +84,8 @@ object ReplayCmd {
   def main(args: Seq[String]): Unit = {
     if (args.contains("--help") || args.contains("-h")) { println(Usage); return }
     var design = "subdiv"; var out: Option[String] = None; var file: Option[String] = None; var quiet = false
+    var head = 100000; var windows = 20
+    def count(o: String, v: String, min: Int) = v.toIntOption.filter(_ >= min).getOrElse(throw new UsageError(s"$o: '$v' is not an integer >= $min"))
     val rest = Seq.newBuilder[String]
     var i = 0
     def value(o: String) = { i += 1; args.lift(i).getOrElse(throw new UsageError(s"$o needs a value")) }
@@ -90,6 +94,8 @@ object ReplayCmd {
         case "--design" => design = value("--design")
         case "--out" => out = Some(value("--out"))
         case "--quiet" => quiet = true
+        case "--check-rows" => head = count("--check-rows", value("--check-rows"), 1)
+        case "--check-windows" => windows = count("--check-windows", value("--check-windows"), 0)
         case o if o.startsWith("--") => rest += o; rest += value(o)
         case f if file.isEmpty => file = Some(f)
         case f => throw new UsageError(s"replay: one recording at a time, got '${file.get}' and '$f'")
@@ -107,7 +113,7 @@ object ReplayCmd {
     val p = pins(f, rec)
     def log(s: String): Unit = if (!quiet) System.err.println(s"replay: $s")
     log(s"${d.describe}, latency ${d.latency} clocks, ${p.length} samples")
-    val (o, check) = replay(d, p, quiet, log)
+    val (o, check) = replay(d, p, quiet, log, head, windows)
     val replayS = lap()
     val dest = os.Path(out.getOrElse(path.last.stripSuffix(".csv") + "-replay.csv"), os.pwd)
     OutputCsv.write(dest, f, d, o, rec.extra.get("sample_index"))
