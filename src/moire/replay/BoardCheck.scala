@@ -23,7 +23,12 @@ object BoardCheck {
     if (firstAt < 0) return Comparison("none", None, s"the board position equals the RTL on all $n samples", Map("samples" -> n))
     val first = index(firstAt)
     val base = Map("samples" -> n.toDouble, "first_mismatch_sample" -> first.toDouble, "mismatching_samples" -> d.count(_ != 0).toDouble)
-    val mode = d.groupBy(identity).maxBy(_._2.length)._1
+    val mode = { // the most common difference (longest run of a sorted copy)
+      val sorted = d.clone(); java.util.Arrays.sort(sorted)
+      var best = sorted(0); var bestLen = 0; var i = 0
+      while (i < n) { var j = i; while (j < n && sorted(j) == sorted(i)) j += 1; if (j - i > bestLen) { best = sorted(i); bestLen = j - i }; i = j }
+      best
+    }
     val dev = (0 until n).filter(i => d(i) != mode)
     val periodsNote = if (mode != 0 && mode % counts == 0) s" = ${mode / counts} whole periods of M = $counts: likely the board's period count before the recording started (the RTL starts from 0), not an error"
       else if (mode != 0) s", not a whole number of periods of M = $counts" else ""
