@@ -29,7 +29,8 @@ lazy val root = (project in file("."))
       "org.knowm.xchart" % "xchart" % "3.8.8",
       "me.tongfei" % "progressbar" % "0.10.2",
       "com.fazecast" % "jSerialComm" % "2.11.4",
-      "edu.berkeley.cs" %% "chiseltest" % "6.0.0" % Test,
+      // Compile scope: `bench` measures chiseltest peek/poke from the CLI.
+      "edu.berkeley.cs" %% "chiseltest" % "6.0.0",
       "org.scalatest" %% "scalatest" % "3.2.19" % Test,
       "org.scalatestplus" %% "scalacheck-1-18" % "3.2.19.0" % Test,
       "org.scalacheck" %% "scalacheck" % "1.18.1" % Test

@@ -142,8 +142,10 @@ object Main {
               @arg(doc = "folder for one JSON report per file") jsonDir: Option[String] = None,
               @arg(doc = "folder for PNG plots") plots: Option[String] = None,
               @arg(doc = "model JSON whose effects are part of the simulation (fitted, not reported)") model: Option[String] = None,
-              @arg(doc = "no progress bar or text report") quiet: Flag = Flag()): Unit =
-    moire.explain.ExplainCmd.explainArgs(files.value, jsonDir, plots, model, quiet.value)
+              @arg(doc = "no progress bar or text report") quiet: Flag = Flag(),
+              @arg(doc = "emit-subdiv options of the board's subdivider, e.g. \"--counts 4096\" (default: from the metadata)") subdiv: Option[String] = None,
+              @arg(doc = "do not compare a recording's board outputs (position column) with the RTL") noRtl: Flag = Flag()): Unit =
+    moire.explain.ExplainCmd.explainArgs(files.value, jsonDir, plots, model, quiet.value, subdiv, noRtl.value)
 
   @main(doc = "Benchmark: simulate and explain one recording, print the time and samples per second.")
   def explainBench(@arg(doc = "samples in the recording") samples: Int = 1000000,
@@ -173,6 +175,15 @@ object Main {
                @arg(doc = "harmonic coefficient file from calibrate (.coefficients.json or .registers.txt)") coefficients: Option[String] = None,
                @arg(doc = "milliseconds to wait for each register reply (default 500)") timeoutMs: Int = 500): Unit =
     moire.stream.BoardReg.run(moire.stream.BoardReg.Options(port, baud, read, write, coefficients, timeoutMs), println(_))
+
+  @main(doc = "Run a recording's ADC codes through the generated RTL (Verilator); see replay --help.")
+  def replay(@arg(doc = "FILE [--design subdiv|corrected] [--out OUT.csv] [--quiet] [emit-subdiv options]") args: mainargs.Leftover[String]): Unit =
+    moire.replay.ReplayCmd.main(args.value)
+
+  @main(doc = "Samples per second of the Verilator harness, chiseltest peek/poke and the Scala model.")
+  def bench(@arg(doc = "also write the figures as JSON to this file") json: Option[String] = None,
+            @arg(doc = "samples through the Verilator harness (default 4000000)") samples: Int = 4000000): Unit =
+    moire.replay.Bench.run(json, samples)
 
   private val badValue = """Invalid argument (--\S+) <(\w+)> failed to parse "(.*)" due to.*""".r
   /** The first line of a mainargs error, reworded for a user. */

@@ -34,7 +34,8 @@ object ExplainCmd {
   }
 
   /** Explains each file; writes `<stem>.json` into jsonDir and PNGs into plotDir. Returns the text reports. */
-  def explain(files: Seq[String], jsonDir: Option[String], plotDir: Option[String], modelFile: Option[String], quiet: Boolean): Seq[Report] = {
+  def explain(files: Seq[String], jsonDir: Option[String], plotDir: Option[String], modelFile: Option[String], quiet: Boolean,
+              rtl: Option[Seq[String]] = Some(Nil)): Seq[Report] = {
     if (files.isEmpty) throw new UsageError("explain: name at least one recording file")
     val givenEffects = modelFile.map { f =>
       val text = readText(f)
@@ -56,7 +57,11 @@ object ExplainCmd {
           val r = SignalExplain.run(p.toString, rec, givenEffects, progress)
           progress.close()
           plotDir.foreach(d => Plots.signals(r, os.Path(d, os.pwd), stem))
-          r.report
+          // Board outputs (a `position` column) against the RTL run on the recorded codes.
+          rtl.filter(_ => rec.extra.contains("position")).map { opts =>
+            val (f, notes) = moire.replay.BoardCheck.run(p.toString, rec, opts, s => if (!quiet) System.err.println(s"explain: $s"))
+            r.report.copy(findings = r.report.findings ++ f, notes = r.report.notes ++ notes)
+          }.getOrElse(r.report)
         }
       } finally progress.close()
       jsonDir.foreach(d => os.write.over(os.Path(d, os.pwd) / s"$stem.json", ujson.write(report.json, indent = 2), createFolders = true))
@@ -66,9 +71,11 @@ object ExplainCmd {
   }
 
   /** Options may also follow the file names (mainargs puts everything after the first file into `rest`). */
-  def explainArgs(rest: Seq[String], jsonDir: Option[String], plots: Option[String], model: Option[String], quiet: Boolean): Unit = {
+  def explainArgs(rest: Seq[String], jsonDir: Option[String], plots: Option[String], model: Option[String], quiet: Boolean,
+                  subdiv: Option[String] = None, noRtl: Boolean = false): Unit = {
     if (rest.contains("--help") || rest.contains("-h")) { println(Usage); return }
     var j = jsonDir; var p = plots; var m = model; var q = quiet; val files = Seq.newBuilder[String]
+    var sd = subdiv; var nr = noRtl
     var i = 0
     def value(o: String) = { i += 1; rest.lift(i).getOrElse(throw new UsageError(s"$o needs a value")) }
     while (i < rest.length) {
@@ -77,12 +84,14 @@ object ExplainCmd {
         case "--plots" => p = Some(value("--plots"))
         case "--model" => m = Some(value("--model"))
         case "--quiet" => q = true
+        case "--subdiv" => sd = Some(value("--subdiv"))
+        case "--no-rtl" => nr = true
         case o if o.startsWith("--") => throw new UsageError(s"Unknown argument: $o (see --help)")
         case f => files += f
       }
       i += 1
     }
-    explain(files.result(), j, p, m, q)
+    explain(files.result(), j, p, m, q, if (nr) None else Some(sd.toSeq.flatMap(_.trim.split("\\s+")).filter(_.nonEmpty)))
   }
 
   val Usage: String =
@@ -92,7 +101,11 @@ object ExplainCmd {
       |    --json-dir DIR       one JSON report per file (DIR/<name>.json)
       |    --plots DIR          PNG plots (residual against time, phase, frequency; one per finding)
       |    --model MODEL.json   effects the simulation already has: fitted, not reported
-      |    --quiet              no progress bar or text report""".stripMargin
+      |    --quiet              no progress bar or text report
+      |    --subdiv "OPTIONS"   emit-subdiv options of the board's subdivider (default: from the metadata adc_bits,
+      |                         adc, counts_per_period); a recording with a position column is replayed through this
+      |                         RTL (Verilator) and the board's outputs are compared with it, sample by sample
+      |    --no-rtl             do not compare board outputs with the RTL""".stripMargin
 
   def kindOf(p: os.Path): String = {
     if (!os.isFile(p)) throw new UsageError(s"$p: no such file")

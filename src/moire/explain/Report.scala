@@ -25,8 +25,9 @@ final case class Report(file: String, kind: String, baselineRms: Double, baselin
     val sb = new StringBuilder
     sb ++= f"$file ($kind, $samples samples): default model rms $baselineRms%.4g, BIC $baselineBic%.6g\n"
     located.filter(_.significant).foreach(l => sb ++= s"  located: ${l.where}: ${l.summary}\n")
-    if (findings.isEmpty) sb ++= "  no significant effect beyond the default model\n"
-    findings.foreach { f =>
+    if (findings.forall(_.deltaBic.isNaN)) sb ++= "  no significant effect beyond the default model\n"
+    findings.filter(_.deltaBic.isNaN).foreach(f => sb ++= s"  finding ${f.effect} (${f.where}): ${f.summary}\n")
+    findings.filterNot(_.deltaBic.isNaN).foreach { f =>
       sb ++= f"  finding ${f.effect} (delta BIC ${f.deltaBic}%.1f, rms ${f.rmsBefore}%.4g -> ${f.rmsAfter}%.4g): ${f.summary}\n"
       sb ++= "    " + f.params.toSeq.sortBy(_._1).map { case (k, v) => f"$k = $v%.5g +- ${f.unc.getOrElse(k, Double.NaN)}%.2g" }.mkString(", ") + "\n"
     }
@@ -38,6 +39,8 @@ final case class Report(file: String, kind: String, baselineRms: Double, baselin
 }
 
 object Report {
+  /** A number, or null when it is not finite (JSON has no NaN). */
+  def num(v: Double): ujson.Value = if (v.isNaN || v.isInfinite) ujson.Null else ujson.Num(v)
   def nums(m: Map[String, Double]): ujson.Obj = {
     val o = ujson.Obj()
     m.toSeq.sortBy(_._1).foreach { case (k, v) => o(k) = if (v.isNaN || v.isInfinite) ujson.Null else ujson.Num(v) }

@@ -6,8 +6,8 @@ import moire.recording.Recording
 final case class Finding(effect: String, channel: String, summary: String, params: Map[String, Double], unc: Map[String, Double],
                          deltaBic: Double, rmsBefore: Double, rmsAfter: Double, where: String) {
   def json: ujson.Obj = ujson.Obj("effect" -> effect, "channel" -> channel, "summary" -> summary,
-    "params" -> Report.nums(params), "uncertainty" -> Report.nums(unc), "delta_bic" -> deltaBic,
-    "rms_before" -> rmsBefore, "rms_after" -> rmsAfter, "where" -> where)
+    "params" -> Report.nums(params), "uncertainty" -> Report.nums(unc), "delta_bic" -> Report.num(deltaBic),
+    "rms_before" -> Report.num(rmsBefore), "rms_after" -> Report.num(rmsAfter), "where" -> where)
 }
 
 /** Residual snapshots for the plots. */

@@ -68,6 +68,13 @@ class SubdivModel(val p: SubdivParams) {
     SubdivResult(pos, periods, m, w.phase, w.present, w.overRange, stepFault)
   }
 
+  /** Sets the period counter's state, as after a run whose last present sample had phase `prevPhase` and
+    * left `periods` (lets a long replay be checked in windows). `started` false = no present sample yet.
+    */
+  def seedCounter(started: Boolean, prevPhase: Long, periods: Long): Unit = {
+    this.started = started; prevU = if (started) prevPhase & mask else 0L; this.periods = if (started) wrap(periods, p.periodBits) else 0L
+  }
+
   /** Convenience for host-side runs: phase and count of each sample in order (no pulse generator). */
   def process(s: SubdivSample): SubdivResult = count(phaseOf(s))
 

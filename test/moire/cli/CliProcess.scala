@@ -8,9 +8,12 @@ object CliProcess {
   private val cp = System.getProperty("java.class.path")
 
   /** Runs the CLI; returns (exit code, stdout, stderr). */
-  def run(args: String*): (Int, String, String) = {
+  def run(args: String*): (Int, String, String) = runWith(Nil)(args: _*)
+
+  /** As `run`, with extra JVM options (e.g. -Dkey=value). */
+  def runWith(jvmOpts: Seq[String])(args: String*): (Int, String, String) = {
     val out = new StringBuilder; val err = new StringBuilder
-    val code = Process(Seq(javaBin, "-Xmx2g", "-cp", cp, "moire.cli.Main") ++ args)
+    val code = Process(Seq(javaBin, "-Xmx2g") ++ jvmOpts ++ Seq("-cp", cp, "moire.cli.Main") ++ args)
       .!(ProcessLogger(l => out.append(l).append('\n'), l => err.append(l).append('\n')))
     (code, out.toString, err.toString)
   }
