@@ -1,0 +1,59 @@
+package moire.stream
+
+/** One board register (u32). */
+final case class Reg(addr: Int, name: String, writable: Boolean, doc: String)
+
+/** The board's register table (stream format v1, docs/recording.md), the one place that names them. */
+object Registers {
+  val Id: Reg = Reg(0x00, "id", false, "0x4D4F4952 \"MOIR\"")
+  val Version: Reg = Reg(0x01, "version", false, "stream format version (1)")
+  val Status: Reg = Reg(0x02, "status", false, "sticky flags: bit0 overspeed, 1 over_range, 2 step_fault, 3 fifo_overflow, 4 otr_sin, 5 otr_cos; bit8 present (live)")
+  val Control: Reg = Reg(0x03, "control", true, "bit0 stream enable (default 1), bit1 clear sticky status")
+  val Decimation: Reg = Reg(0x04, "decimation", true, "D, one record every D ADC samples, 1..2^24")
+  val DroppedTotal: Reg = Reg(0x05, "dropped_total", false, "records lost to FIFO overflow since reset")
+  val CmdErrors: Reg = Reg(0x06, "cmd_errors", false, "commands ignored for a bad CRC")
+  val Position: Reg = Reg(0x07, "position", false, "live datapath position, counts, two's complement")
+  val AdcClockHz: Reg = Reg(0x08, "adc_clock_hz", false, "ADC sample clock in Hz")
+  val FrameRecords: Reg = Reg(0x09, "frame_records", false, "n, records per record frame")
+  val CountsPerPeriod: Reg = Reg(0x0A, "counts_per_period", false, "M, counts per grating period")
+  val EncoderCount: Reg = Reg(0x0B, "encoder_count", false, "quadrature count of the encoder inputs A/B, two's complement")
+  val EncoderZCount: Reg = Reg(0x0C, "encoder_z_count", false, "encoder_count latched at the last Z edge")
+  val AdcFormat: Reg = Reg(0x0D, "adc_format", false, "0 offset binary, 1 two's complement")
+  val all: Seq[Reg] = Seq(Id, Version, Status, Control, Decimation, DroppedTotal, CmdErrors, Position, AdcClockHz,
+    FrameRecords, CountsPerPeriod, EncoderCount, EncoderZCount, AdcFormat)
+
+  /** First address of the harmonic-coefficient window: 0x10 + slot*4 + {0 order, 1 c_k, 2 phi_k}. */
+  val HarmonicBase: Int = 0x10
+  val HarmonicFields: Seq[String] = Seq("order", "c", "phi")
+  private val harmName = """h(\d+)_(order|c|phi)""".r
+
+  /** Name of an address: a table name, `h<slot>_<order|c|phi>` in the harmonic window, else hex. */
+  def name(addr: Int): String = all.find(_.addr == addr).map(_.name).getOrElse {
+    val w = addr - HarmonicBase
+    if (w >= 0 && (w & 3) < 3) s"h${w >> 2}_${HarmonicFields(w & 3)}" else f"0x$addr%02x"
+  }
+
+  def writable(addr: Int): Boolean = all.find(_.addr == addr).fold(addr >= HarmonicBase)(_.writable)
+
+  /** A register named by table name, `h<slot>_<field>`, or an address (0x.. hex or decimal), 0..255. */
+  def parse(s: String): Either[String, Int] = {
+    val t = s.trim
+    def inRange(v: Long) = if (v >= 0 && v <= 0xFF) Right(v.toInt) else Left(s"register address $t is outside 0x00..0xff")
+    all.find(_.name == t).map(r => Right(r.addr)).getOrElse(t match {
+      case harmName(slot, f) if slot.length <= 2 => inRange(HarmonicBase + slot.toLong * 4 + HarmonicFields.indexOf(f))
+      case _ if t.startsWith("0x") || t.startsWith("0X") =>
+        scala.util.Try(java.lang.Long.parseLong(t.drop(2), 16)).toOption.map(inRange)
+          .getOrElse(Left(s"register '$t' is not a hex address"))
+      case _ => t.toLongOption.map(inRange).getOrElse(Left(
+        s"register '$t' is unknown; names: ${all.map(_.name).mkString(", ")}, h<slot>_<order|c|phi>, or an address like 0x04"))
+    })
+  }
+
+  /** A u32 value given as decimal, 0x hex, or a negative decimal (two's complement). */
+  def parseValue(s: String): Either[String, Long] = {
+    val t = s.trim
+    val v = if (t.startsWith("0x") || t.startsWith("0X")) scala.util.Try(java.lang.Long.parseLong(t.drop(2), 16)).toOption
+      else t.toLongOption.map(x => if (x < 0 && x >= Int.MinValue) x & Wire.MaxU32 else x)
+    v.filter(x => x >= 0 && x <= Wire.MaxU32).toRight(s"value '$t' is not a u32 (decimal, negative decimal or 0x hex)")
+  }
+}
