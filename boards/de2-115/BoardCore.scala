@@ -6,13 +6,19 @@ import moire.chain.CorrectedSubdivider
 import moire.harmonic.{QuadratureCounter, QuadratureParams}
 import moire.io._
 import moire.signal.AdcFormat
+import moire.stream.Registers
 import moire.subdiv.{AdcPins, SubdivAdc, SubdivOut, SubdivStatus}
 
-/** Register addresses and constants of stream v1. */
+/** Register addresses of stream v1 (moire.stream.Registers) and the id value. */
 object Regs {
-  val Id = 0x00; val Version = 0x01; val Status = 0x02; val Control = 0x03; val Decimation = 0x04
-  val DroppedTotal = 0x05; val CmdErrors = 0x06; val Position = 0x07; val AdcClockHz = 0x08
-  val FrameRecords = 0x09; val Counts = 0x0A; val EncoderCount = 0x0B; val EncoderZCount = 0x0C; val AdcFormatReg = 0x0D
+  val Id = Registers.Id.addr; val Version = Registers.Version.addr; val Status = Registers.Status.addr
+  val Control = Registers.Control.addr; val Decimation = Registers.Decimation.addr
+  val DroppedTotal = Registers.DroppedTotal.addr; val CmdErrors = Registers.CmdErrors.addr
+  val Position = Registers.Position.addr; val AdcClockHz = Registers.AdcClockHz.addr
+  val FrameRecords = Registers.FrameRecords.addr; val Counts = Registers.CountsPerPeriod.addr
+  val EncoderCount = Registers.EncoderCount.addr; val EncoderZCount = Registers.EncoderZCount.addr
+  val AdcFormatReg = Registers.AdcFormat.addr
+  /** Register 0x00: "MOIR". */
   val IdValue: Long = 0x4D4F4952L
 }
 
@@ -45,7 +51,9 @@ class BoardCore(val p: BoardParams) extends Module {
   private val cosD = RegNext(io.COS_D).suggestName("cos_capture")
   private val otrS = RegNext(io.SIN_OTR).suggestName("otr_sin_capture")
   private val otrC = RegNext(io.COS_OTR).suggestName("otr_cos_capture")
-  private val capValid = RegNext(ph === 0.U, false.B)
+  // The word launched by the ADC edge at clock edge e is valid in the capture registers after edge e + 1.
+  private val adcRose = if (k == 1) true.B else adcClk && !RegNext(adcClk, false.B)
+  private val capValid = RegNext(adcRose, false.B)
   private val words = RegInit(0.U(32.W))
   private val primed = RegInit(false.B)
   when(capValid) {

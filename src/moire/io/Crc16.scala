@@ -3,17 +3,11 @@ package moire.io
 import chisel3._
 import chisel3.util._
 
-/** CRC-16/CCITT-FALSE (poly 0x1021, init 0xFFFF, no reflection, xorout 0): the stream v1 checksum. */
+/** CRC-16/CCITT-FALSE (poly 0x1021, init 0xFFFF, no reflection, xorout 0) in hardware: the stream v1
+  * checksum. The Scala reference is moire.stream.Crc16.
+  */
 object Crc16 {
-  val init: Int = 0xFFFF
-
-  /** Scala reference: the CRC after one more byte. */
-  def update(crc: Int, byte: Int): Int = {
-    var c = crc ^ ((byte & 0xFF) << 8)
-    for (_ <- 0 until 8) c = if ((c & 0x8000) != 0) ((c << 1) ^ 0x1021) & 0xFFFF else (c << 1) & 0xFFFF
-    c
-  }
-  def of(bytes: Seq[Int]): Int = bytes.foldLeft(init)(update)
+  val init: Int = moire.stream.Crc16.Init
 
   /** Hardware: the CRC after one more byte (eight unrolled shift steps, combinational). */
   def next(crc: UInt, byte: UInt): UInt = {
