@@ -169,6 +169,30 @@ object Main {
     catch { case e: BoardCmd.BadOption => throw new UsageError(e.getMessage) }
   }
 
+  @main(doc = "Record the DE2-115 board's UART stream for some seconds into a moire-recording v1 file (docs/recording.md).")
+  def record(@arg(doc = "serial port, e.g. /dev/ttyUSB0") port: String,
+             @arg(doc = "seconds to record") seconds: Double,
+             @arg(doc = "output CSV file") out: String,
+             @arg(doc = "UART baud rate (default 115200)") baud: Int = 115200,
+             @arg(doc = "write this decimation D to the board first (with --listen-only: the board's D)") decimation: Option[Long] = None,
+             @arg(doc = "ADC clock in Hz instead of register adc_clock_hz") adcClockHz: Option[Double] = None,
+             @arg(doc = "offset-binary | twos-complement instead of register adc_format") adcFormat: Option[String] = None,
+             @arg(doc = "counts per grating period M instead of register counts_per_period") countsPerPeriod: Option[Long] = None,
+             @arg(doc = "send no commands; needs --decimation, --adc-clock-hz, --adc-format, --counts-per-period") listenOnly: Flag = Flag(),
+             @arg(doc = "milliseconds to wait for each register reply (default 500)") timeoutMs: Int = 500,
+             @arg(doc = "no progress bar") quiet: Flag = Flag()): Unit =
+    moire.stream.Recorder.run(moire.stream.RecordOptions(port, seconds, out, baud, decimation, adcClockHz, adcFormat, countsPerPeriod,
+      listenOnly.value, timeoutMs, quiet.value), println(_), System.err.println(_))
+
+  @main(doc = "Read and write the board's registers by name (writes, then coefficients, then reads; none: read all).")
+  def boardReg(@arg(doc = "serial port, e.g. /dev/ttyUSB0") port: String,
+               @arg(doc = "UART baud rate (default 115200)") baud: Int = 115200,
+               @arg(doc = "register name or address to read (repeat)") read: Seq[String] = Nil,
+               @arg(doc = "NAME=VALUE to write (repeat)") write: Seq[String] = Nil,
+               @arg(doc = "harmonic coefficient file from calibrate (.coefficients.json or .registers.txt)") coefficients: Option[String] = None,
+               @arg(doc = "milliseconds to wait for each register reply (default 500)") timeoutMs: Int = 500): Unit =
+    moire.stream.BoardReg.run(moire.stream.BoardReg.Options(port, baud, read, write, coefficients, timeoutMs), println(_))
+
   private val badValue = """Invalid argument (--\S+) <(\w+)> failed to parse "(.*)" due to.*""".r
   /** The first line of a mainargs error, reworded for a user. */
   def oneLine(msg: String): String = {

@@ -45,6 +45,12 @@ final class Decoder(val decimation: Long) {
 
   def stats: StreamStats = s
 
+  /** Bytes received but not yet decoded (the start of a frame, or bytes still being hunted through). */
+  def buffered: Int = end - start
+
+  /** A copy of the buffered bytes, to hand them on to another decoder. */
+  def pending: Array[Byte] = java.util.Arrays.copyOfRange(buf, start, end)
+
   def feed(bytes: Array[Byte]): Vector[Frame] = feed(bytes, 0, bytes.length)
 
   def feed(bytes: Array[Byte], off: Int, len: Int): Vector[Frame] = {

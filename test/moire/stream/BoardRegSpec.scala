@@ -1,0 +1,74 @@
+package moire.stream
+
+import moire.cli.{CliProcess, UsageError}
+import moire.harmonic.{CoefficientFile, Harmonic, HarmonicFitResult, HarmonicParams}
+import org.scalatest.flatspec.AnyFlatSpec
+import org.scalatest.matchers.should.Matchers
+
+class BoardRegSpec extends AnyFlatSpec with Matchers {
+  private def run(pty: PtyPair, o: BoardReg.Options => BoardReg.Options): Vector[String] = {
+    val lines = Vector.newBuilder[String]
+    BoardReg.run(o(BoardReg.Options(pty.host.toString, timeoutMs = 200)), lines += _)
+    lines.result()
+  }
+
+  "board-reg" should "read the whole table by default, decoding ids, flags and formats" in PtyPair { pty =>
+    val board = new FakeBoard(pty, FakeBoard.registers() + (Registers.Status.addr -> 0x109L))
+    val out = try run(pty, o => o) finally board.close()
+    out.map(_.split("\\s+")(1)) shouldBe Registers.all.map(_.name)
+    out.head shouldBe "0x00 id                 1297041746  0x4d4f4952  MOIR"
+    out.find(_.contains("status")).get should endWith("overspeed fifo_overflow present")
+    out.find(_.contains(" position ")).get should endWith("signed -16")
+    out.find(_.contains("adc_format")).get should endWith("offset-binary")
+  }
+
+  it should "write by name, then read back, and refuse read-only registers before sending anything" in PtyPair { pty =>
+    val board = new FakeBoard(pty, FakeBoard.registers())
+    val out = try run(pty, _.copy(writes = Seq("decimation=0x64", "control=3"), reads = Seq("decimation", "0x03", "h0_c")))
+      finally board.close()
+    board.registers(Registers.Decimation.addr) shouldBe 100
+    out(0) should startWith("wrote 0x04 decimation                100  0x00000064")
+    out.drop(2).map(_.split("\\s+").take(3).mkString(" ")) shouldBe Seq("0x04 decimation 100", "0x03 control 3", "0x11 h0_c 0")
+    val e = intercept[UsageError](run(pty, _.copy(writes = Seq("status=1"))))
+    e.getMessage should include("status is read-only")
+    intercept[UsageError](run(pty, _.copy(reads = Seq("speed")))).getMessage should include("register 'speed' is unknown")
+    board.commands.count(_.write) shouldBe 2
+  }
+
+  private val hp = HarmonicParams(harmonics = 3)
+  private val fit = HarmonicFitResult(0.5, Seq(Harmonic(1, 12.5, 30.0), Harmonic(4, 2.25, -100.0)), Seq(0.1, -0.1))
+
+  it should "load a coefficient file from calibrate (JSON or listing) into the harmonic window and check it" in PtyPair { pty =>
+    val dir = pty.dir / "cal"
+    os.write(dir / "t.coefficients.json", ujson.write(CoefficientFile.json(hp, "t.csv", fit, Nil)), createFolders = true)
+    os.write(dir / "t.registers.txt", CoefficientFile.listing(hp, fit))
+    val expected = CoefficientFile.writes(hp, CoefficientFile.slots(hp, fit)).map { case (a, v) => (0x10 + a) -> v }
+    expected.size shouldBe 9
+    for (f <- Seq("t.coefficients.json", "t.registers.txt")) {
+      val board = new FakeBoard(pty, FakeBoard.registers(), harmonicSlots = 3)
+      val out = try run(pty, _.copy(coefficients = Some((dir / f).toString))) finally board.close()
+      out.last shouldBe s"loaded 9 harmonic registers (0x10..0x1a) from ${dir / f}, each read back"
+      expected.foreach { case (a, v) => board.registers(a) shouldBe v }
+      BoardReg.loadCoefficients(dir / f) shouldBe expected
+    }
+    // a board with one slot keeps 0 in slot 1: an error naming the register
+    val small = new FakeBoard(pty, FakeBoard.registers(), harmonicSlots = 1)
+    val e = try intercept[UsageError](run(pty, _.copy(coefficients = Some((dir / "t.registers.txt").toString)))) finally small.close()
+    e.getMessage should include("h1_order (0x14), the board kept 0x00000000")
+  }
+
+  it should "name the file and line of a bad coefficient file" in {
+    val f = os.temp("# moire harmonic registers\n00 00000001\n01 zz\n")
+    intercept[UsageError](BoardReg.loadCoefficients(f)).getMessage shouldBe s"$f:3: 'zz' is not a hex number"
+    val j = os.temp("""{"format": "other"}""")
+    intercept[UsageError](BoardReg.loadCoefficients(j)).getMessage should include("expected 'moire-harmonic-coefficients v1'")
+  }
+
+  "moire board-reg (command line)" should "read a register by name" in PtyPair { pty =>
+    val board = new FakeBoard(pty, FakeBoard.registers())
+    val (code, out, err) = try CliProcess.run("board-reg", "--port", pty.host.toString, "--read", "adc_clock_hz", "--read", "0x0a")
+      finally board.close()
+    withClue(err) { code shouldBe 0 }
+    out.linesIterator.map(_.split("\\s+").take(3).mkString(" ")).toSeq shouldBe Seq("0x08 adc_clock_hz 40000000", "0x0a counts_per_period 1024")
+  }
+}
