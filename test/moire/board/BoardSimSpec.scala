@@ -6,12 +6,20 @@ import moire.cordic.SimSupport
 import moire.signal.{AdcFormat, Motion, SignalParams}
 import moire.stream.{Command, Crc16, RecordFrame, Record}
 import moire.subdiv.{SubdivModel, SubdivSample}
+import moire.recording.Recording
+import moire.stream.{PtyPair, RecordOptions, Recorder}
 import org.scalatest.flatspec.AnyFlatSpec
+import scala.concurrent.{Await, Future}
+import scala.concurrent.ExecutionContext.Implicits.global
+import scala.concurrent.duration._
 
 /** Whole-board simulation of the DE2-115 top: AD9226 models on the ADC pins, an encoder source on
   * the encoder inputs, the host on the UART pins (fast baud: clock / 8).
   */
 class BoardSimSpec extends AnyFlatSpec with ChiselScalatestTester {
+  /** UART bytes of the simulated board before the overflow part (filled by the first test). */
+  private var streamBytes: Array[Byte] = Array.empty
+  private var streamFrames: Seq[RecordFrame] = Nil
   val clockHz = 50e6
   /** 25 MHz ADC (divider register drives SIN_CLK), n = 4, FIFO 8, decimation 1024. */
   val p = BoardParams(adcClockHz = 25000000, baud = 6250000, frameRecords = 4, fifoDepth = 8, glitchFilter = 8,
@@ -141,7 +149,9 @@ class BoardSimSpec extends AnyFlatSpec with ChiselScalatestTester {
       assert(b.read(Regs.CmdErrors) == errs0 + 1)
 
       // ---- forced FIFO overflow: decimation 1 ----
+      streamBytes = b.txBytes.toArray
       val before = b.recordFrames.size
+      streamFrames = b.recordFrames
       assert(b.write(Regs.Decimation, 1) == 1)
       b.runUntil(200000, "overflow frames")(b.recordFrames.size >= before + 6)
       assert(b.write(Regs.Control, 0) == 0)
@@ -166,6 +176,34 @@ class BoardSimSpec extends AnyFlatSpec with ChiselScalatestTester {
       checkRecords(adc, over ++ all.drop(resumed).flatMap(_.records))
       assert(b.decoder.stats.crcErrors == 0 && b.decoder.stats.skippedBytes == 0, b.decoder.stats)
       info(f"${b.cycle} clocks, ${b.recordFrames.size} record frames, ${b.replies.size} replies, $total records dropped (${SimSupport.backendName})")
+    }
+  }
+
+  it should "give a byte stream that the host recorder turns into a moire-recording v1 (through a socat pty pair)" in {
+    if (streamBytes.isEmpty) cancel("the board simulation above did not run")
+    PtyPair { pty =>
+      val out = pty.dir / "rec.csv"
+      val o = RecordOptions(pty.host.toString, seconds = 1.5, out.toString, baud = 115200, decimation = Some(p.decimation.toLong),
+        adcClockHz = Some(p.adcClockHz.toDouble), adcFormat = Some("offset-binary"), countsPerPeriod = Some(M.toLong),
+        listenOnly = true, quiet = true)
+      val said = new java.util.concurrent.ConcurrentLinkedQueue[String]
+      val job = Future(Recorder.run(o, said.add(_), said.add(_)))
+      Thread.sleep(500)
+      pty.feed(streamBytes, bytesPerSecond = 11520)
+      val r = Await.result(job, 20.seconds)
+      val rec = Recording.read(out)
+      // the recorder starts after the first frame whose records are D apart: here the first record frame
+      val expected = streamFrames.drop(1).flatMap(_.records)
+      assert(r.rows == expected.size && rec.length == expected.size, s"${rec.length} rows, ${expected.size} records sent")
+      assert(rec.sin.toSeq == expected.map(_.sin) && rec.cos.toSeq == expected.map(_.cos))
+      assert(rec.extra("sample_index").toSeq == expected.map(_.index.toDouble))
+      assert(rec.extra("position").toSeq == expected.map(_.position.toDouble))
+      assert(rec.extra("direction").toSeq == expected.map(x => if (x.direction) 1.0 else 0.0))
+      assert(rec.extra("otr_sin").toSeq == expected.map(x => if (x.otrSin) 1.0 else 0.0))
+      assert(rec.sampleRateHz == p.adcClockHz.toDouble / p.decimation)
+      for ((k, v) <- Seq("source" -> "de2-115", "decimation" -> "1024", "adc_clock_hz" -> "25000000", "counts_per_period" -> "1024",
+        "crc_errors" -> "0", "gaps" -> "0", "dropped_records" -> "0", "seq_gaps" -> "0"))
+        assert(rec.meta.get(k).contains(v), s"metadata $k = ${rec.meta.get(k)}, expected $v")
     }
   }
 }
