@@ -26,6 +26,8 @@ object QuartusProject {
     b ++= s"set_global_assignment -name TOP_LEVEL_ENTITY ${p.topName}\n"
     b ++= "set_global_assignment -name PROJECT_OUTPUT_DIRECTORY output_files\n"
     b ++= s"set_global_assignment -name SDC_FILE ${p.projectName}.sdc\n"
+    // firtool wraps simulation-only checks ($error/$fatal) in `ifndef SYNTHESIS
+    b ++= "set_global_assignment -name VERILOG_MACRO \"SYNTHESIS=1\"\n"
     for (f <- verilog) {
       val kind = if (f.endsWith(".sv")) "SYSTEMVERILOG_FILE" else "VERILOG_FILE"
       b ++= s"set_global_assignment -name $kind $f\n"

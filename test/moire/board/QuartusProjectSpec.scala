@@ -92,7 +92,7 @@ class QuartusProjectSpec extends AnyFlatSpec {
   it should "carry the reference's global settings, the top entity, the SDC and every Verilog file" in {
     for (g <- Seq("FAMILY \"Cyclone IV E\"", "DEVICE EP4CE115F29C7", "DEVICE_FILTER_PIN_COUNT 780",
       "STRATIX_DEVICE_IO_STANDARD \"3.3-V LVTTL\"", "CYCLONEII_RESERVE_NCEO_AFTER_CONFIGURATION \"USE AS REGULAR IO\"",
-      s"TOP_LEVEL_ENTITY ${BoardParams().topName}", "SDC_FILE moire_de2_115.sdc",
+      s"TOP_LEVEL_ENTITY ${BoardParams().topName}", "SDC_FILE moire_de2_115.sdc", "VERILOG_MACRO \"SYNTHESIS=1\"",
       s"SYSTEMVERILOG_FILE rtl/${BoardParams().topName}.sv", "VERILOG_FILE rtl/De2115Pll.v"))
       assert(qsf.contains(s"set_global_assignment -name $g"), g)
     val sdc = os.read(dir / "moire_de2_115.sdc")
