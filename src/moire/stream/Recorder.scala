@@ -65,7 +65,7 @@ object Recorder {
   private val handHint = "; to record without commands give --listen-only with --decimation, --adc-clock-hz, --adc-format and --counts-per-period"
 
   /** Register reads and the optional decimation write; hand values win over registers. */
-  def setup(c: BoardClient, o: RecordOptions, warn: String => Unit): BoardSetup = {
+  def setup(c: BoardClient, o: RecordOptions): BoardSetup = {
     BoardClient.check(c, o.baud, handHint)
     def ask[T](f: => T): T = try f catch { case e: NoAnswer => throw new UsageError(e.getMessage + handHint) }
     val ctl = ask(c.read(Registers.Control))
@@ -95,12 +95,8 @@ object Recorder {
     validate(o)
     val client = new BoardClient(link, o.timeoutMs)
     val s = if (o.listenOnly) BoardSetup(o.decimation.get, o.adcClockHz.get, AdcFormat.parse(o.adcFormat.get).toOption.get,
-      o.countsPerPeriod.get, None, fromBoard = false) else setup(client, o, warn)
-    s.frameRecords.foreach { n =>
-      val cap = linkRecordsPerSecond(o.baud, n)
-      if (s.sampleRateHz > cap) warn(f"WARNING: the board makes ${s.sampleRateHz}%.0f records/s, ${o.baud}%d baud carries at most " +
-        f"$cap%.0f: records will be dropped; use --decimation ${math.ceil(s.adcClockHz / cap).toLong}%d or more")
-    }
+      o.countsPerPeriod.get, None, fromBoard = false) else setup(client, o)
+    capacityWarning(s, o.baud).foreach(warn)
     val start = settle(client, o, s)
     val (rec, stats, elapsed) = capture(link, o, s, start)
     if (stats.frames == 0) throw new UsageError(s"${o.port}: no frames in ${o.seconds} s at ${o.baud} baud after the start " +
@@ -118,6 +114,14 @@ object Recorder {
     val warnings = lossWarning(stats).toSeq
     warnings.foreach(warn)
     RecordResult(file, rec.rows, stats, s, meta, warnings)
+  }
+
+  /** A WARNING when the board makes more records per second than the link carries (n known from the board). */
+  def capacityWarning(s: BoardSetup, baud: Int): Option[String] = s.frameRecords.flatMap { n =>
+    val cap = linkRecordsPerSecond(baud, n)
+    if (s.sampleRateHz <= cap) None
+    else Some(f"WARNING: the board makes ${s.sampleRateHz}%.0f records/s, $baud%d baud carries at most $cap%.0f: " +
+      f"records will be dropped; use --decimation ${math.ceil(s.adcClockHz / cap).toLong}%d or more")
   }
 
   /** One WARNING line when anything was lost, naming each figure that is not zero. */

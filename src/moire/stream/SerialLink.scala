@@ -14,7 +14,8 @@ trait ByteLink extends AutoCloseable {
 }
 
 /** A serial port through jSerialComm, 8N1, no flow control, reads wait at most `readTimeoutMs`.
-  * A symlink (a udev name, or a socat pty link) is resolved to the device before opening.
+  * A symlink (a udev name, or a socat pty link) is resolved to the device before opening. (jSerialComm 2.11.4
+  * resolves it too, and opens ptys: the tests run it against socat pairs.)
   */
 final class SerialLink private (port: SerialPort, val name: String) extends ByteLink {
   def write(a: Array[Byte]): Unit = {

@@ -18,6 +18,9 @@ import scala.jdk.CollectionConverters._
   * }}}
   * To push the bytes of a simulated board into the recorder: run the recorder in a Future (or thread)
   * with `listenOnly = true` and the setup by hand, and `pty.feed(bytes, rate)` on the test thread.
+  * The recording starts after the first record frame whose records are D apart (that frame itself is
+  * not recorded) and lasts `seconds` of wall time. Without a pty, `Recorder.record(new MemoryLink(bytes), ...)`
+  * does the same from memory; to check framing alone, `new Decoder(d).feed(bytes)` and its `stats`.
   */
 final class PtyPair private (val dir: os.Path, proc: Process) extends AutoCloseable {
   /** The end the program under test opens (a symlink to /dev/pts/N). */

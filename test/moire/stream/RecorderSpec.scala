@@ -164,6 +164,15 @@ class RecorderSpec extends AnyFlatSpec with Matchers {
     bad(o.copy(listenOnly = true, decimation = Some(4)), "give --adc-clock-hz, --adc-format, --counts-per-period by hand")
   }
 
+  it should "warn before recording when the link cannot carry the records" in {
+    Recorder.linkRecordsPerSecond(115200, 8) shouldBe 11520.0 / 106 * 8 // 869 records/s, as docs/recording.md says
+    val s = BoardSetup(1000, 40e6, moire.signal.AdcFormat.OffsetBinary, 1024, Some(8), fromBoard = true)
+    Recorder.capacityWarning(s, 115200).get shouldBe
+      "WARNING: the board makes 40000 records/s, 115200 baud carries at most 869: records will be dropped; use --decimation 46007 or more"
+    Recorder.capacityWarning(s.copy(decimation = 46007), 115200) shouldBe None
+    Recorder.capacityWarning(s.copy(decimation = 46006), 115200).isDefined shouldBe true
+  }
+
   "moire record (command line)" should "name a missing port and the ports there are, exit 2" in {
     val missing = (os.temp.dir() / "ttyUSB9").toString
     val (code, out, err) = CliProcess.run("record", "--port", missing, "--seconds", "1", "--out", "x.csv")
