@@ -152,7 +152,7 @@ object Main {
 
   @main(doc = "Write a Quartus project for a board (de2-115): SystemVerilog, .qsf, .sdc, .qpf and flash.sh.")
   def board(@arg(doc = "board name: de2-115 (also accepted as the first word after board)") name: String,
-            @arg(doc = "output folder (default build/de2-115)") out: String = "build/de2-115",
+            @arg(doc = "output folder (default generated/de2-115)") out: String = "generated/de2-115",
             @arg(doc = "subdiv | corrected") design: String = "subdiv",
             @arg(doc = "AD9226 clock in Hz, 50 MHz / k (default 50000000)") adcClockHz: Int = 50000000,
             @arg(doc = "ADC strap: offset-binary | twos-complement") adcFormat: String = "offset-binary",
