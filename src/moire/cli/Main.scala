@@ -153,6 +153,25 @@ object Main {
                    @arg(doc = "folder for the recording, JSON and plots (default: a temporary folder)") out: Option[String] = None): Unit =
     println(moire.explain.ExplainCmd.bench(samples, out))
 
+  @main(doc = "Write a Quartus project for a board (de2-115): SystemVerilog, .qsf, .sdc, .qpf and flash.sh.")
+  def board(@arg(doc = "board name: de2-115 (also accepted as the first word after board)") name: String,
+            @arg(doc = "output folder (default generated/de2-115)") out: String = "generated/de2-115",
+            @arg(doc = "subdiv | corrected") design: String = "subdiv",
+            @arg(doc = "AD9226 clock in Hz, 50 MHz / k (default 50000000)") adcClockHz: Int = 50000000,
+            @arg(doc = "ADC strap: offset-binary | twos-complement") adcFormat: String = "offset-binary",
+            @arg(doc = "default decimation D, 1..16777216 (default 62500)") decimation: Int = 62500,
+            @arg(doc = "UART baud rate (default 115200)") baud: Int = 115200,
+            @arg(doc = "records per frame n, 1..255 (default 8)") frameRecords: Int = 8,
+            @arg(doc = "record FIFO depth (default 256)") fifoDepth: Int = 256,
+            @arg(doc = "encoder inputs: clocks stable before a level is taken (default 16)") glitchFilter: Int = 16,
+            @arg(doc = "M, counts per grating period (default 1024)") counts: Int = 1024,
+            @arg(doc = "pll | logic (no PLL, for simulation)") clockSource: String = "pll"): Unit = {
+    import moire.board.de2115.BoardCmd
+    try BoardCmd.run(name, BoardCmd.params(design, adcClockHz, adcFormat, decimation, baud, frameRecords, fifoDepth,
+      glitchFilter, counts, clockSource), out).foreach(println)
+    catch { case e: BoardCmd.BadOption => throw new UsageError(e.getMessage) }
+  }
+
   @main(doc = "Record the DE2-115 board's UART stream for some seconds into a moire-recording v1 file (docs/recording.md).")
   def record(@arg(doc = "serial port, e.g. /dev/ttyUSB0") port: String,
              @arg(doc = "seconds to record") seconds: Double,
@@ -198,7 +217,9 @@ object Main {
   }
 
   def main(args: Array[String]): Unit = {
-    val argv = if (args.isEmpty) Array("emit") else args
+    val argv0 = if (args.isEmpty) Array("emit") else args
+    // `board de2-115 --out DIR`: the board name as a positional word.
+    val argv = if (argv0.length > 1 && argv0(0) == "board" && !argv0(1).startsWith("-")) Array("board", "--name") ++ argv0.tail else argv0
     val parser = ParserForMethods(this)
     val help = argv.contains("--help") || argv.contains("-h")
     if (help && (argv.head == "--help" || argv.head == "-h")) {

@@ -1,0 +1,181 @@
+package moire.board.de2115
+
+import chisel3._
+import chisel3.util._
+import moire.chain.CorrectedSubdivider
+import moire.harmonic.{QuadratureCounter, QuadratureParams}
+import moire.io._
+import moire.signal.AdcFormat
+import moire.stream.Registers
+import moire.subdiv.{AdcPins, SubdivAdc, SubdivOut, SubdivStatus}
+
+/** Register addresses of stream v1 (moire.stream.Registers) and the id value. */
+object Regs {
+  val Id = Registers.Id.addr; val Version = Registers.Version.addr; val Status = Registers.Status.addr
+  val Control = Registers.Control.addr; val Decimation = Registers.Decimation.addr
+  val DroppedTotal = Registers.DroppedTotal.addr; val CmdErrors = Registers.CmdErrors.addr
+  val Position = Registers.Position.addr; val AdcClockHz = Registers.AdcClockHz.addr
+  val FrameRecords = Registers.FrameRecords.addr; val Counts = Registers.CountsPerPeriod.addr
+  val EncoderCount = Registers.EncoderCount.addr; val EncoderZCount = Registers.EncoderZCount.addr
+  val AdcFormatReg = Registers.AdcFormat.addr
+  /** Register 0x00: "MOIR". */
+  val IdValue: Long = 0x4D4F4952L
+}
+
+/** Everything of the board on the system clock: AD9226 capture, datapath, record stream over the
+  * UART, register interface, encoder input counter, LEDs and seven-segment digits.
+  *
+  * AD9226 capture: the ADC clock rises on the clock edge where the divider phase `ph` becomes 0; the
+  * ADC drives its new word tOD = 3.5..7 ns (plus the FPGA clock-to-pin delay) after that edge, and
+  * the word is registered on the NEXT rising edge of the 50 MHz clock, 20 ns later: 13 ns of setup
+  * margin at 7 ns tOD, and the old word is held for tOD(min) after that edge. The word of sample i
+  * appears after ADC edge i + 7 (AD9226 pipeline), so record index = captured words - 7.
+  */
+class BoardCore(val p: BoardParams) extends Module {
+  override def desiredName: String = s"BoardCore_${p.design.name}"
+  val io = IO(new De2115Ports)
+  private val sp = p.datapathSubdiv
+  private val k = p.adcDivide
+
+  // ---- ADC clock divider (used for k > 1; for k = 1 the top forwards the 50 MHz clock) ----
+  private val ph = RegInit(0.U(log2Ceil(k + 1).W))
+  private val phNext = Mux(ph === (k - 1).U, 0.U, ph + 1.U)
+  ph := phNext
+  private val adcClk = RegInit(false.B)
+  adcClk := phNext < ((k + 1) / 2).U
+  io.SIN_CLK := adcClk
+  io.COS_CLK := adcClk
+
+  // ---- capture: every clock into input registers; valid one clock after the ADC edge ----
+  private val sinD = RegNext(io.SIN_D).suggestName("sin_capture")
+  private val cosD = RegNext(io.COS_D).suggestName("cos_capture")
+  private val otrS = RegNext(io.SIN_OTR).suggestName("otr_sin_capture")
+  private val otrC = RegNext(io.COS_OTR).suggestName("otr_cos_capture")
+  // The word launched by the ADC edge at clock edge e is valid in the capture registers after edge e + 1.
+  private val adcRose = if (k == 1) true.B else adcClk && !RegNext(adcClk, false.B)
+  private val capValid = RegNext(adcRose, false.B)
+  private val words = RegInit(0.U(32.W))
+  private val primed = RegInit(false.B)
+  when(capValid) {
+    words := words + 1.U
+    when(words === (p.adcPipeline - 1).U) { primed := true.B }
+  }
+  private val sampleValid = capValid && primed
+  private val index = words - p.adcPipeline.U
+
+  // ---- datapath ----
+  private val clear = Wire(Bool())
+  private val dpIn = Wire(Valid(new AdcPins(12)))
+  dpIn.valid := sampleValid
+  dpIn.bits.sin := sinD; dpIn.bits.cos := cosD; dpIn.bits.otrSin := otrS; dpIn.bits.otrCos := otrC
+  private val (out, encA, encB, encZ, status, latency) = p.design match {
+    case BoardDesign.Subdiv =>
+      val m = Module(new SubdivAdc(p.subdiv, p.adcFormat))
+      m.io.in := dpIn; m.io.clearStatus := clear
+      (m.io.out, m.io.a, m.io.b, m.io.z, m.io.status, m.latency)
+    case BoardDesign.Corrected =>
+      val m = Module(new CorrectedSubdivider(p.correctedParams))
+      m.io.in := dpIn; m.io.clearStatus := clear
+      (m.io.out, m.io.a, m.io.b, m.io.z, m.io.status, m.latency)
+  }
+  require(latency == p.datapathLatency, s"datapath latency $latency, expected ${p.datapathLatency}")
+
+  // The sample each output belongs to: the input side delayed by the datapath latency.
+  private val side = ShiftRegister(Cat(otrC, otrS, cosD, sinD, index), latency)
+  private val sideValid = ShiftRegister(sampleValid, latency, false.B, true.B)
+  assert(out.valid === sideValid, "datapath output not aligned with its sample")
+  private val sIndex = side(31, 0)
+  private val sCodes = side(57, 32)   // sin 12, cos 12, otr_sin, otr_cos
+
+  private val livePos = RegInit(0.S(32.W))
+  private val present = RegInit(false.B)
+  private val dirUp = RegInit(true.B)
+  private val pos32 = out.bits.position.pad(32)(31, 0).asSInt
+  private val diff = pos32 - livePos
+  private val dirNow = Mux(diff > 0.S, true.B, Mux(diff < 0.S, false.B, dirUp))
+  when(out.valid) { livePos := pos32; present := out.bits.present; dirUp := dirNow }
+
+  // ---- registers ----
+  private val enable = RegInit(true.B)
+  private val decim = RegInit(p.decimation.U(25.W))
+  private val decCnt = RegInit(0.U(25.W))
+  private val droppedTotal = RegInit(0.U(32.W))
+  private val cmdErrors = RegInit(0.U(32.W))
+  private def sticky(event: Bool): Bool = {
+    val r = RegInit(false.B)
+    r := (r && !clear) || event
+    r
+  }
+
+  // ---- decimation and record FIFO ----
+  private val take = out.valid && decCnt === 0.U && enable
+  when(out.valid) { decCnt := Mux(decCnt === 0.U, decim - 1.U, decCnt - 1.U) }
+  private val word = Cat(0.U(2.W), dirNow, out.bits.stepFault, out.bits.overRange, out.bits.present, sCodes)
+  private val fifo = Module(new OverflowFifo(StreamRecord.width, p.fifoDepth))
+  fifo.io.in.valid := take
+  fifo.io.in.bits := StreamRecord.pack(sIndex, word, pos32)
+  when(fifo.io.dropped && droppedTotal =/= "hffffffff".U) { droppedTotal := droppedTotal + 1.U }
+  private val fifoOverflow = sticky(fifo.io.dropped)
+  private val otrSinSticky = sticky(sampleValid && otrS)
+  private val otrCosSticky = sticky(sampleValid && otrC)
+
+  // ---- UART ----
+  private val tx = Module(new UartTx(p.baudDivisor))
+  private val rx = Module(new UartRx(p.baudDivisor))
+  private val framer = Module(new FrameTx(p.frameRecords, log2Ceil(p.fifoDepth + 1)))
+  private val cmdRx = Module(new CommandRx)
+  framer.io.records <> fifo.io.out
+  framer.io.recordCount := fifo.io.count
+  framer.io.dropped := fifo.io.dropped
+  tx.io.in <> framer.io.out
+  io.UART_TXD := tx.io.txd
+  rx.io.rxd := Synchronizer(io.UART_RXD, init = true, "uart_rxd")
+  cmdRx.io.in := rx.io.out
+
+  // ---- encoder inputs ----
+  private val encIn = Seq(io.ENC_A_IN, io.ENC_B_IN, io.ENC_Z_IN).zip(Seq("enc_a", "enc_b", "enc_z"))
+    .map { case (x, n) => GlitchFilter(x, p.glitchFilter, init = false, n) }
+  private val qc = Module(new QuadratureCounter(QuadratureParams(countBits = 32)))
+  qc.io.a := encIn(0); qc.io.b := encIn(1)
+  private val zAligned = ShiftRegister(encIn(2), qc.latency)
+  private val zRise = zAligned && !RegNext(zAligned, false.B)
+  private val zCount = RegInit(0.U(32.W))
+  when(zRise) { zCount := qc.io.out.bits }
+  io.ENC_A_OUT := RegNext(encA, false.B)
+  io.ENC_B_OUT := RegNext(encB, false.B)
+  io.ENC_Z_OUT := RegNext(encZ, false.B)
+
+  // ---- register file ----
+  private val statusWord = Cat(present, 0.U(2.W), otrCosSticky, otrSinSticky, fifoOverflow,
+    status.stepFault, status.overRange, status.overspeed)
+  private def read(addr: UInt): UInt = MuxLookup(addr, 0.U(32.W))(Seq(
+    Regs.Id -> Regs.IdValue.U(32.W), Regs.Version -> 1.U, Regs.Status -> statusWord,
+    Regs.Control -> enable.asUInt, Regs.Decimation -> decim, Regs.DroppedTotal -> droppedTotal,
+    Regs.CmdErrors -> cmdErrors, Regs.Position -> livePos.asUInt, Regs.AdcClockHz -> p.adcClockHz.U,
+    Regs.FrameRecords -> p.frameRecords.U, Regs.Counts -> sp.counts.U, Regs.EncoderCount -> qc.io.out.bits,
+    Regs.EncoderZCount -> zCount, Regs.AdcFormatReg -> (if (p.adcFormat == AdcFormat.OffsetBinary) 0 else 1).U
+  ).map { case (a, v) => a.U(8.W) -> Cat(0.U(32.W), v)(31, 0) })
+  private val cmd = cmdRx.io.cmd
+  private val isWrite = cmd.valid && cmd.bits.write
+  clear := isWrite && cmd.bits.addr === Regs.Control.U && cmd.bits.value(1)
+  when(isWrite && cmd.bits.addr === Regs.Control.U) { enable := cmd.bits.value(0) }
+  when(isWrite && cmd.bits.addr === Regs.Decimation.U && cmd.bits.value >= 1.U && cmd.bits.value <= (1 << 24).U) {
+    decim := cmd.bits.value; decCnt := 0.U
+  }
+  // The reply reads the register one clock later, so a write answers with the new value.
+  private val replies = Module(new Queue(new RegReply, 4))
+  private val replyAddr = RegNext(cmd.bits.addr)
+  replies.io.enq.valid := RegNext(cmd.valid, false.B)
+  replies.io.enq.bits.addr := replyAddr
+  replies.io.enq.bits.value := read(replyAddr)
+  framer.io.reply <> replies.io.deq
+  private val lostReply = replies.io.enq.valid && !replies.io.enq.ready
+  when(cmdRx.io.error || lostReply) { cmdErrors := cmdErrors + 1.U }
+
+  // ---- LEDs and digits ----
+  private val beat = RegInit(0.U(25.W))
+  beat := beat + 1.U
+  io.LEDG := Cat(0.U(5.W), fifoOverflow, dirUp, status.overRange || otrSinSticky || otrCosSticky, present)
+  io.LEDR := Cat(beat(24), 0.U(13.W), cmdErrors =/= 0.U, enable, status.stepFault, status.overspeed)
+  for ((h, i) <- io.hex.zipWithIndex) h := RegNext(SevenSeg(livePos.asUInt(4 * i + 3, 4 * i)), "h7f".U(7.W))
+}

@@ -1,0 +1,50 @@
+package moire.board.de2115
+
+import chisel3.RawModule
+import circt.stage.ChiselStage
+import moire.signal.AdcFormat
+
+/** Elaboration, Verilog emission and the Quartus project of the DE2-115 board in one place. */
+object De2115 {
+  /** firtool options: plain Verilog (no automatic locals, no packed arrays) that yosys and Quartus read. */
+  val firtoolOpts: Array[String] = Array("-disable-all-randomization", "-strip-debug-info",
+    "--lowering-options=disallowLocalVariables,disallowPackedArrays")
+
+  def top(p: BoardParams): RawModule = new De2115Top(p)
+
+  /** Writes the SystemVerilog of the board (and the PLL Verilog when used) into `dir`; returns the
+    * Verilog files (top first).
+    */
+  def emitVerilog(p: BoardParams, dir: os.Path): Seq[os.Path] = {
+    os.makeDir.all(dir)
+    val sv = ChiselStage.emitSystemVerilog(top(p), Array.empty[String], firtoolOpts)
+    // firtool appends black-box resources after "// ----- 8< ----- FILE "name" ----- 8< -----" lines.
+    val marker = """(?m)^// ----- 8< ----- FILE "(.*)" ----- 8< -----$""".r
+    val cuts = marker.findAllMatchIn(sv).toSeq
+    val parts = (s"${p.topName}.sv", 0) +: cuts.map(m => (os.RelPath(m.group(1)).last, m.end))
+    val ends = cuts.map(_.start) :+ sv.length
+    parts.zip(ends).collect { case ((name, from), to) if name.endsWith(".sv") || name.endsWith(".v") =>
+      val f = dir / name
+      os.write.over(f, sv.substring(from, to).dropWhile(_ == '\n'))
+      f
+    }
+  }
+
+  /** Writes a complete Quartus project into `dir`: Verilog, .qsf, .sdc, .qpf and flash.sh. */
+  def writeProject(p: BoardParams, dir: os.Path): Seq[os.Path] = {
+    val rtl = dir / "rtl"
+    if (os.exists(rtl)) os.remove.all(rtl)
+    val verilog = emitVerilog(p, rtl)
+    val name = p.projectName
+    val files = Seq(
+      dir / s"$name.qpf" -> QuartusProject.qpf(p),
+      dir / s"$name.qsf" -> QuartusProject.qsf(p, verilog.map(_.relativeTo(dir).toString)),
+      dir / s"$name.sdc" -> QuartusProject.sdc(p),
+      dir / "flash.sh" -> QuartusProject.flash(p))
+    for ((f, text) <- files) os.write.over(f, text, createFolders = true)
+    os.perms.set(dir / "flash.sh", "rwxr-xr-x")
+    verilog ++ files.map(_._1)
+  }
+
+  def formatTag(f: AdcFormat): String = if (f == AdcFormat.OffsetBinary) "offset binary" else "two's complement"
+}

@@ -1,0 +1,209 @@
+package moire.board
+
+import chiseltest._
+import moire.board.de2115.{BoardParams, ClockSource, Regs}
+import moire.cordic.SimSupport
+import moire.signal.{AdcFormat, Motion, SignalParams}
+import moire.stream.{Command, Crc16, RecordFrame, Record}
+import moire.subdiv.{SubdivModel, SubdivSample}
+import moire.recording.Recording
+import moire.stream.{PtyPair, RecordOptions, Recorder}
+import org.scalatest.flatspec.AnyFlatSpec
+import scala.concurrent.{Await, Future}
+import scala.concurrent.ExecutionContext.Implicits.global
+import scala.concurrent.duration._
+
+/** Whole-board simulation of the DE2-115 top: AD9226 models on the ADC pins, an encoder source on
+  * the encoder inputs, the host on the UART pins (fast baud: clock / 8).
+  */
+class BoardSimSpec extends AnyFlatSpec with ChiselScalatestTester {
+  /** UART bytes of the simulated board before the overflow part (filled by the first test). */
+  private var streamBytes: Array[Byte] = Array.empty
+  private var streamFrames: Seq[RecordFrame] = Nil
+  val clockHz = 50e6
+  /** 25 MHz ADC (divider register drives SIN_CLK), n = 4, FIFO 8, decimation 1024. */
+  val p = BoardParams(adcClockHz = 25000000, baud = 6250000, frameRecords = 4, fifoDepth = 8, glitchFilter = 8,
+    decimation = 1024, clockSource = ClockSource.Logic)
+  val M: Int = p.subdiv.counts
+  // Peaks at 1.02 full scale: OTR at the peaks; a reversing ramp: both directions.
+  val signal = SignalParams(amplitude = 1.02)
+  val motion = Motion.Ramp(-40e3, 40e3, 2.4e-3, start = 0.3)
+
+  /** Positions and directions the datapath gives for samples 0..n-1 (model, in sample order). */
+  def expected(adc: Ad9226Model, n: Int): (Array[Int], Array[Boolean]) = {
+    val m = new SubdivModel(p.subdiv)
+    val pos = new Array[Int](n); val dir = new Array[Boolean](n)
+    var last = 0L; var up = true
+    for (i <- 0 until n) {
+      val s = adc.sample(i)
+      val r = m.process(SubdivSample(adc.adc.fromPins(s.sin), adc.adc.fromPins(s.cos), s.otrSin, s.otrCos))
+      val v = r.position.toInt.toLong
+      if (v > last) up = true else if (v < last) up = false
+      last = v; pos(i) = v.toInt; dir(i) = up
+    }
+    (pos, dir)
+  }
+
+  /** Every record matches the model's sample at its index: codes, OTR, position (bit-exact and within
+    * one count of the true motion), flags.
+    */
+  def checkRecords(adc: Ad9226Model, recs: Seq[Record]): Unit = {
+    val n = recs.map(_.index.toInt).max + 1
+    val (pos, dir) = expected(adc, n)
+    for (r <- recs) {
+      val i = r.index.toInt
+      val s = adc.sample(i)
+      assert(r.sin == s.sin && r.cos == s.cos && r.otrSin == s.otrSin && r.otrCos == s.otrCos, s"record $i codes: $r vs $s")
+      assert(r.position == pos(i), s"record $i position ${r.position}, model ${pos(i)}")
+      val truth = math.floor(s.truePeriods * M).toLong
+      assert(math.abs(r.position - truth) <= 1, s"record $i position ${r.position}, true motion $truth")
+      assert(r.present && !r.stepFault && r.overRange == (s.otrSin || s.otrCos) && r.direction == dir(i), s"record $i flags: $r")
+    }
+  }
+
+  "The DE2-115 board" should "stream, answer registers, count encoder inputs and report FIFO overflow" in {
+    test(new BoardHarness(p)).withAnnotations(SimSupport.backend) { c =>
+      c.clock.setTimeout(0)
+      val adc = Ad9226Model(AdcFormat.OffsetBinary, signal, motion, p.adcClockHz)
+      val b = new BoardBench(c, adc)
+      val ab = new QuadDecoder
+      var zSeen = 0; var zOff = 0
+      var anchor: Option[Long] = None   // HEX position minus the A/B count
+      b.onCycle = () => {
+        val (a, bb, z) = b.encOut
+        ab.update(a, bb)
+        if (z) { zSeen += 1; anchor.foreach(o => if (Math.floorMod(ab.count + o, M.toLong) > 1 && Math.floorMod(ab.count + o, M.toLong) < M - 1) zOff += 1) }
+      }
+      b.reset()
+
+      // ---- constant registers ----
+      assert(b.read(Regs.Id) == Regs.IdValue)
+      assert(b.read(Regs.Version) == 1)
+      assert(b.read(Regs.AdcClockHz) == p.adcClockHz)
+      assert(b.read(Regs.FrameRecords) == p.frameRecords)
+      assert(b.read(Regs.Counts) == M)
+      assert(b.read(Regs.AdcFormatReg) == 0)
+      assert(b.read(Regs.Decimation) == p.decimation)
+      assert(b.read(Regs.Control) == 1)
+
+      // ---- encoder inputs: 37 steps up, 12 down, Z at count 30; glitches shorter than the filter ----
+      val hold = 24
+      def levels(n: Long) = Quadrature(n)
+      def Quadrature(n: Long) = moire.harmonic.Quadrature.levels(n)
+      var count = 0L
+      def setAB(n: Long, z: Boolean = false): Unit = { val (a, bb) = levels(n); b.enc = (a, bb, z) }
+      def glitchAll(): Unit = { // a staggered A/B glitch that would count +4 if it got through, and a Z glitch
+        val (a, bb) = levels(count)
+        b.enc = (!a, bb, false); b.run(2); b.enc = (!a, !bb, false); b.run(1); b.enc = (a, !bb, true); b.run(2)
+        b.enc = (a, bb, false); b.run(hold)
+      }
+      for (k <- 0 until 49) {
+        count += (if (k < 37) 1 else -1)
+        setAB(count); b.run(hold)
+        if (count == 30 && k < 37) { setAB(count, z = true); b.run(hold); setAB(count) ; b.run(hold) }
+        else glitchAll()
+      }
+      b.run(100)
+      assert(b.read(Regs.EncoderCount) == 25, "encoder_count after 37 up, 12 down (glitches must be ignored)")
+      assert(b.read(Regs.EncoderZCount) == 30, "encoder_z_count latched at the Z pulse (Z glitches ignored)")
+
+      // ---- record stream ----
+      b.runUntil(200000, "6 record frames")(b.recordFrames.size >= 6)
+      val hex1 = b.hexValue.getOrElse(fail("HEX digits do not show hex"))
+      anchor = Some(hex1 - ab.count)
+      // the digits show the position of a sample a datapath latency old
+      val sNow = adc.edges - 8 - (p.datapathLatency + 4) / p.adcDivide
+      val truthNow = math.floor(adc.sample(sNow).truePeriods * M).toLong
+      assert(math.abs(hex1.toInt - truthNow) <= 8, s"HEX ${hex1.toInt} vs true position $truthNow")
+      val frames1 = b.recordFrames
+      assert(b.decoder.stats.crcErrors == 0 && b.decoder.stats.skippedBytes == 0, b.decoder.stats)
+      val recs1 = frames1.flatMap(_.records)
+      assert(frames1.forall(f => f.dropped == 0 && f.records.size == p.frameRecords))
+      assert(recs1.map(_.index).sliding(2).forall { case Seq(x, y) => y - x == p.decimation })
+      assert(recs1.exists(r => r.otrSin) && recs1.exists(!_.direction) && recs1.exists(_.direction),
+        "the run should show OTR and both directions")
+      checkRecords(adc, recs1)
+      val seqs = b.frames.map(_.seq)
+      assert(seqs.zip(seqs.drop(1)).forall { case (x, y) => y == ((x + 1) & 0xFFFF) }, s"seq: $seqs")
+
+      // position register follows the records; the encoder outputs follow the digits
+      val posReg = b.read(Regs.Position).toInt
+      val hex2 = b.hexValue.get
+      assert(math.abs((hex2 - ab.count) - anchor.get) <= 2, s"A/B count ${ab.count} drifted from the digits $hex2")
+      val truth2 = math.floor(adc.sample(adc.edges - 8 - (p.datapathLatency + 4) / p.adcDivide).truePeriods * M).toLong
+      assert(math.abs(hex2.toInt - truth2) <= 8, s"HEX ${hex2.toInt} vs true $truth2")
+      assert(math.abs(posReg - hex2.toInt) <= 100, s"position register $posReg vs digits ${hex2.toInt}")
+      assert(zSeen > 0 && zOff == 0, s"Z output: $zSeen clocks high, $zOff away from a multiple of M")
+      assert(ab.errors == 0)
+      assert((b.read(Regs.Status) & 0x1FF) == 0x132, "status: present (live); over_range, otr_sin, otr_cos (sticky)")
+
+      // ---- writes ----
+      assert(b.write(Regs.Id, 7) == Regs.IdValue, "a read-only register keeps its value")
+      assert(b.write(Regs.Decimation, 0) == p.decimation, "decimation 0 is refused")
+      assert(b.write(Regs.Control, 3) == 1, "clear the sticky flags, stream on")
+      val errs0 = b.read(Regs.CmdErrors)
+      val bad = moire.stream.Encoder.command(Command.read(Regs.Id)); bad(9) = (bad(9) ^ 1).toByte
+      val nReplies = b.replies.size
+      b.send(bad); b.run(2000)
+      assert(b.replies.size == nReplies, "a command with a bad CRC is not answered")
+      assert(b.read(Regs.CmdErrors) == errs0 + 1)
+
+      // ---- forced FIFO overflow: decimation 1 ----
+      streamBytes = b.txBytes.toArray
+      val before = b.recordFrames.size
+      streamFrames = b.recordFrames
+      assert(b.write(Regs.Decimation, 1) == 1)
+      b.runUntil(200000, "overflow frames")(b.recordFrames.size >= before + 6)
+      assert(b.write(Regs.Control, 0) == 0)
+      var quiet = 0; var seen = b.frames.size
+      b.runUntil(100000, "the stream to stop")({ if (b.frames.size != seen) { seen = b.frames.size; quiet = 0 } else quiet += 1; quiet > 8000 })
+      assert(b.write(Regs.Decimation, 1024) == 1024)
+      assert(b.write(Regs.Control, 1) == 1)
+      val resumed = b.recordFrames.size
+      b.runUntil(300000, "frames after the overflow")(b.recordFrames.size >= resumed + 3)
+      val all = b.recordFrames
+      val droppedSum = all.map(_.dropped.toLong).sum
+      val total = b.read(Regs.DroppedTotal)
+      assert(droppedSum > 0 && total == droppedSum, s"dropped fields sum $droppedSum, dropped_total $total")
+      assert((b.read(Regs.Status) & 0x8) != 0, "status fifo_overflow")
+      val over = all.slice(before, resumed).flatMap(_.records)
+      // records still spaced by 1024 were taken before the write; the rest were taken at D = 1
+      val firstD1 = over.map(_.index).sliding(2).indexWhere { case Seq(x, y) => y - x != 1024 } + 1
+      val d1 = over.drop(firstD1).map(_.index)
+      val gaps = d1.sliding(2).map { case Seq(x, y) => y - x - 1 }.toSeq
+      assert(d1.size >= 8 && gaps.count(_ > 0) > 0 && gaps.sum <= total,
+        s"${d1.size} records at D = 1: index gaps ${gaps.sum}, dropped_total $total")
+      checkRecords(adc, over ++ all.drop(resumed).flatMap(_.records))
+      assert(b.decoder.stats.crcErrors == 0 && b.decoder.stats.skippedBytes == 0, b.decoder.stats)
+      info(f"${b.cycle} clocks, ${b.recordFrames.size} record frames, ${b.replies.size} replies, $total records dropped (${SimSupport.backendName})")
+    }
+  }
+
+  it should "give a byte stream that the host recorder turns into a moire-recording v1 (through a socat pty pair)" in {
+    if (streamBytes.isEmpty) cancel("the board simulation above did not run")
+    PtyPair { pty =>
+      val out = pty.dir / "rec.csv"
+      val o = RecordOptions(pty.host.toString, seconds = 1.5, out.toString, baud = 115200, decimation = Some(p.decimation.toLong),
+        adcClockHz = Some(p.adcClockHz.toDouble), adcFormat = Some("offset-binary"), countsPerPeriod = Some(M.toLong),
+        listenOnly = true, quiet = true)
+      val said = new java.util.concurrent.ConcurrentLinkedQueue[String]
+      val job = Future(Recorder.run(o, said.add(_), said.add(_)))
+      Thread.sleep(500)
+      pty.feed(streamBytes, bytesPerSecond = 11520)
+      val r = Await.result(job, 20.seconds)
+      val rec = Recording.read(out)
+      // the recorder starts after the first frame whose records are D apart: here the first record frame
+      val expected = streamFrames.drop(1).flatMap(_.records)
+      assert(r.rows == expected.size && rec.length == expected.size, s"${rec.length} rows, ${expected.size} records sent")
+      assert(rec.sin.toSeq == expected.map(_.sin) && rec.cos.toSeq == expected.map(_.cos))
+      assert(rec.extra("sample_index").toSeq == expected.map(_.index.toDouble))
+      assert(rec.extra("position").toSeq == expected.map(_.position.toDouble))
+      assert(rec.extra("direction").toSeq == expected.map(x => if (x.direction) 1.0 else 0.0))
+      assert(rec.extra("otr_sin").toSeq == expected.map(x => if (x.otrSin) 1.0 else 0.0))
+      assert(rec.sampleRateHz == p.adcClockHz.toDouble / p.decimation)
+      for ((k, v) <- Seq("source" -> "de2-115", "decimation" -> "1024", "adc_clock_hz" -> "25000000", "counts_per_period" -> "1024",
+        "crc_errors" -> "0", "gaps" -> "0", "dropped_records" -> "0", "seq_gaps" -> "0"))
+        assert(rec.meta.get(k).contains(v), s"metadata $k = ${rec.meta.get(k)}, expected $v")
+    }
+  }
+}
