@@ -43,6 +43,14 @@ object Main {
     println(s"wrote $file (${p.moduleName}, latency ${p.latency} clocks)")
   }
 
+  @main(doc = "Logic cells, registers, memory bits, multipliers and longest path (yosys synth_intel, Cyclone IV E) of a design.")
+  def cost(config: CordicConfig,
+           @arg(doc = "cordic (the emit options) | subdiv | quadcomp | adapt | corrected | harmonic") design: String = "cordic",
+           @arg(doc = "also write the figures as JSON to this file") json: Option[String] = None,
+           @arg(doc = "seconds each yosys run may take (default 1800)") timeout: Int = 1800,
+           @arg(doc = "keep the Verilog and yosys files in this folder") keep: Option[String] = None): Unit =
+    CostCmd.run(config, design, json, timeout, keep)
+
   @main(doc = "Write the SystemVerilog of the subdivider with its ADC front end into a folder.")
   def emitSubdiv(config: SubdivConfig, @arg(doc = "output folder") out: String = "generated"): Unit = SubdivCmd.run(config, out)
 
