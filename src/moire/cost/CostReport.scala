@@ -30,21 +30,21 @@ final case class CostReport(design: String, what: String, synth: SynthResult, la
   def json: ujson.Obj = {
     val o = ujson.Obj(
       "design" -> design, "top" -> synth.top,
-      "logic_cells" -> logicCells, "registers" -> registers, "luts" -> synth.total.luts,
-      "memory_bits" -> synth.memoryBits, "m9k_blocks" -> synth.total.m9k, "multipliers" -> synth.multipliers,
+      "logic_cells" -> ujson.Num(logicCells.toDouble), "registers" -> ujson.Num(registers.toDouble), "luts" -> ujson.Num(synth.total.luts.toDouble),
+      "memory_bits" -> ujson.Num(synth.memoryBits.toDouble), "m9k_blocks" -> ujson.Num(synth.total.m9k.toDouble), "multipliers" -> ujson.Num(synth.multipliers.toDouble),
       "longest_path_cells" -> synth.longestPathCells.map(n => ujson.Num(n)).getOrElse(ujson.Null),
       "latency" -> latency.map(n => ujson.Num(n)).getOrElse(ujson.Null),
       "yosys_seconds" -> math.round(synth.seconds * 10) / 10.0,
-      "capacity" -> ujson.Obj("device" -> "EP4CE115", "logic_elements" -> Ep4ce115.logicElements,
-        "memory_bits" -> Ep4ce115.memoryBits, "multipliers_18x18" -> Ep4ce115.multipliers18))
+      "capacity" -> ujson.Obj("device" -> "EP4CE115", "logic_elements" -> ujson.Num(Ep4ce115.logicElements.toDouble),
+        "memory_bits" -> ujson.Num(Ep4ce115.memoryBits.toDouble), "multipliers_18x18" -> ujson.Num(Ep4ce115.multipliers18.toDouble)))
     cordic.foreach { p =>
       o("results_per_clock") = 1
       o("error_bound") = CordicBound.headline(p).total
       o("mode") = p.mode.name; o("iterations") = p.iterations; o("width") = p.width
     }
     if (synth.modules.nonEmpty) o("modules") = ujson.Arr(synth.modules.map(m => ujson.Obj("module" -> m.name,
-      "logic_cells" -> m.logicCells, "registers" -> m.registers, "luts" -> m.luts, "m9k_blocks" -> m.m9k,
-      "multiplier_cells" -> m.multCells)): _*)
+      "logic_cells" -> ujson.Num(m.logicCells.toDouble), "registers" -> ujson.Num(m.registers.toDouble), "luts" -> ujson.Num(m.luts.toDouble), "m9k_blocks" -> ujson.Num(m.m9k.toDouble),
+      "multiplier_cells" -> ujson.Num(m.multCells.toDouble))): _*)
     o
   }
 

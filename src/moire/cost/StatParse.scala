@@ -4,12 +4,19 @@ package moire.cost
 object StatParse {
   private def plain(name: String): String = name.stripPrefix("\\")
 
+  /** The JSON object of a `tee -o` file: yosys may append its warning summary after the closing brace. */
+  def jsonPart(text: String): String = {
+    val lines = text.linesIterator.toSeq
+    val end = lines.indexWhere(_ == "}")
+    if (end < 0) text else lines.take(end + 1).mkString("\n")
+  }
+
   private def cellMap(o: ujson.Value): Map[String, Long] =
     o.obj.get("num_cells_by_type").map(_.obj.map { case (t, n) => plain(t) -> n.num.toLong }.toMap).getOrElse(Map.empty)
 
   /** The whole design (`design`, with submodule instances expanded) and each module of a `stat -json`. */
   def cells(json: String, top: String): (ModuleCells, Seq[ModuleCells]) = {
-    val v = try ujson.read(json) catch { case e: Exception => throw new YosysError(s"cannot read yosys stat JSON: ${e.getMessage}") }
+    val v = try ujson.read(jsonPart(json)) catch { case e: Exception => throw new YosysError(s"cannot read yosys stat JSON: ${e.getMessage}") }
     val modules = v.obj.get("modules").map(_.obj.toSeq.map { case (n, m) => ModuleCells(plain(n), cellMap(m)) }).getOrElse(Nil)
     val design = v.obj.get("design").map(d => ModuleCells(top, cellMap(d)))
       .orElse(modules.find(_.name == top)).getOrElse(throw new YosysError(s"yosys stat has no design section for $top"))
@@ -18,7 +25,7 @@ object StatParse {
 
   /** Memory bits yosys inferred (`num_memory_bits` of the design). */
   def memoryBits(json: String): Long = {
-    val v = ujson.read(json)
+    val v = try ujson.read(jsonPart(json)) catch { case e: Exception => throw new YosysError(s"cannot read yosys stat JSON: ${e.getMessage}") }
     v.obj.get("design").orElse(v.obj.get("modules").flatMap(_.obj.values.headOption))
       .flatMap(_.obj.get("num_memory_bits")).map(_.num.toLong).getOrElse(0L)
   }

@@ -1,6 +1,6 @@
 package moire.cost
 
-import moire.cordic.{CordicAccuracy, CordicBound, CordicMode, CordicParams}
+import moire.cordic.{CordicMode, CordicParams, Rounding}
 
 /** One CORDIC variant of the sweep: `function` is what it computes ("sin" or "asin"), which sets the
   * error unit (full scale 1.0 or radians) and the plot it lands in.
@@ -10,6 +10,7 @@ final case class Variant(name: String, function: String, make: (Int, Int) => Cor
 object Variant {
   val all: Seq[Variant] = Seq(
     Variant("sincos", "sin", (n, b) => CordicParams(CordicMode.SinCos, n, b)),
+    Variant("sincos-truncate", "sin", (n, b) => CordicParams(CordicMode.SinCos, n, b, rounding = Rounding.Truncate)),
     Variant("asin", "asin", (n, b) => CordicParams(CordicMode.Asin, n, b)),
     Variant("asin-double", "asin", (n, b) => CordicParams(CordicMode.AsinDouble, n, b)),
     Variant("asin-table", "asin", (n, b) => CordicParams(CordicMode.Asin, n, b, peakTableSize = 64))
@@ -30,8 +31,8 @@ final case class SweepRow(variant: String, function: String, p: CordicParams, lo
   def unit: String = if (function == "sin") "full scale" else "rad"
   def json: ujson.Obj = ujson.Obj(
     "variant" -> variant, "function" -> function, "mode" -> p.mode.name, "iterations" -> p.iterations, "width" -> p.width,
-    "peak_table" -> p.peakTableSize, "module" -> p.moduleName, "logic_cells" -> logicCells, "registers" -> registers,
-    "luts" -> luts, "memory_bits" -> memoryBits, "multipliers" -> multipliers,
+    "peak_table" -> p.peakTableSize, "module" -> p.moduleName, "logic_cells" -> ujson.Num(logicCells.toDouble), "registers" -> ujson.Num(registers.toDouble),
+    "luts" -> ujson.Num(luts.toDouble), "memory_bits" -> ujson.Num(memoryBits.toDouble), "multipliers" -> ujson.Num(multipliers.toDouble),
     "longest_path_cells" -> longestPathCells.map(n => ujson.Num(n)).getOrElse(ujson.Null),
     "latency" -> p.latency, "results_per_clock" -> 1, "error_bound" -> errorBound,
     "measured_error" -> measuredError.map(ujson.Num(_)).getOrElse(ujson.Null), "unit" -> unit, "pareto" -> pareto)

@@ -31,11 +31,12 @@ object SweepRun {
     java.security.MessageDigest.getInstance("SHA-1").digest(s.getBytes("UTF-8")).take(8).map("%02x".format(_)).mkString
 
   private def toJson(r: SynthResult): ujson.Obj = ujson.Obj("cells" -> ujson.Obj.from(r.total.cells.map { case (k, v) => k -> ujson.Num(v.toDouble) }),
-    "memory_bits" -> r.memoryBits, "multipliers" -> r.multipliers,
+    "memory_bits" -> ujson.Num(r.memoryBits.toDouble), "multipliers" -> ujson.Num(r.multipliers.toDouble),
     "longest_path_cells" -> r.longestPathCells.map(n => ujson.Num(n)).getOrElse(ujson.Null), "seconds" -> r.seconds)
+  private def num(v: ujson.Value): Double = v match { case ujson.Str(s) => s.toDouble; case o => o.num }
   private def fromJson(v: ujson.Value, top: String): SynthResult = SynthResult(top,
-    ModuleCells(top, v("cells").obj.map { case (k, n) => k -> n.num.toLong }.toMap), Nil, v("memory_bits").num.toLong,
-    v("multipliers").num.toLong, v("longest_path_cells").numOpt.map(_.toInt), v("seconds").num)
+    ModuleCells(top, v("cells").obj.map { case (k, n) => k -> num(n).toLong }.toMap), Nil, num(v("memory_bits")).toLong,
+    num(v("multipliers")).toLong, v("longest_path_cells").numOpt.map(_.toInt), num(v("seconds")))
 
   def run(grid: SweepGrid, out: os.Path, timeoutSeconds: Int, measure: Boolean, log: String => Unit): Seq[SweepRow] = {
     val pts = grid.points

@@ -8,8 +8,8 @@ final case class ModuleCells(name: String, cells: Map[String, Long]) {
   def registers: Long = cells.getOrElse("dffeas", 0L)
   /** Logic cells as the issue counts them: LUT cells plus flip-flops. */
   def logicCells: Long = luts + registers
-  /** M9K block RAMs. */
-  def m9k: Long = cells.collect { case (t, n) if t.toLowerCase.contains("m9k") || t.endsWith("_ram_block") => n }.sum
+  /** M9K block RAMs (yosys maps each to an `altsyncram`). */
+  def m9k: Long = cells.collect { case (t, n) if t == "altsyncram" || t.endsWith("_ram_block") => n }.sum
   /** Multiplications left as black boxes (see [[Yosys]]); each takes one or more 18 x 18 blocks. */
   def multCells: Long = cells.getOrElse(Yosys.multCell, 0L)
 }
