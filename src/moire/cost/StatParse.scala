@@ -4,11 +4,15 @@ package moire.cost
 object StatParse {
   private def plain(name: String): String = name.stripPrefix("\\")
 
-  /** The JSON object of a `tee -o` file: yosys may append its warning summary after the closing brace. */
+  /** The JSON object of a `tee -o` file. yosys 0.23 writes the hierarchy tree of a design with
+    * submodules as plain text into `stat -json` (before "design"), and may append warnings: keep only
+    * JSON lines, up to the closing brace.
+    */
   def jsonPart(text: String): String = {
     val lines = text.linesIterator.toSeq
     val end = lines.indexWhere(_ == "}")
-    if (end < 0) text else lines.take(end + 1).mkString("\n")
+    val json = if (end < 0) lines else lines.take(end + 1)
+    json.filter(l => l.trim.isEmpty || "\"{}[]".contains(l.trim.head)).mkString("\n")
   }
 
   private def cellMap(o: ujson.Value): Map[String, Long] =

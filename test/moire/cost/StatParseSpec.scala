@@ -22,6 +22,15 @@ class StatParseSpec extends AnyFlatSpec with Matchers {
     StatParse.memoryBits(res("sample-pre.json") + "\nWarning: Feature 'synth_intel' is experimental.\n") shouldBe 256 * 8
   }
 
+  it should "read a hierarchical stat, whose JSON yosys 0.23 interleaves with a hierarchy tree" in {
+    val text = res("sample-hier-pre.json")
+    text should include("       Cordic_atan2_n16_w18f16_a18_g2z5_k1_rne_nogc      1")
+    val (design, modules) = StatParse.cells(text, "Subdiv_atan2_in12_M1024_n16_w18g2_p18_pos32_e1_ob")
+    modules.size shouldBe 4
+    design.cells("$mul") shouldBe 2
+    design.cells("$dff") shouldBe 135
+  }
+
   it should "reject text that is not stat JSON with a YosysError" in {
     a[YosysError] should be thrownBy StatParse.cells("ERROR: no design", "top")
   }
