@@ -12,7 +12,7 @@ object CostCmd {
     if (timeout < 1) throw new UsageError(s"--timeout must be at least 1 second, got $timeout")
     if (!Yosys.available) throw new UsageError("yosys not found on PATH (install yosys 0.23 or newer)")
     val work = keep.map(k => os.Path(k, os.pwd)).getOrElse(Cost.tempDir())
-    val r = try Cost.measure(d, p, work, timeout, perModule = true, log)
+    val r = try Cost.measure(d, p, work, timeout, log)
     catch { case e: YosysError => throw new UsageError(e.getMessage) }
     finally if (keep.isEmpty) os.remove.all(work)
     print(r.text)

@@ -35,13 +35,13 @@ object StatParse {
   }
 
   private val widthParam = """\s*parameter \\([AB])_WIDTH (\d+)\s*""".r
-  /** 18 x 18 multiplier blocks for the `$mul` cells of a `dump`: ceil(a / 18) * ceil(b / 18) each. */
+  /** 18 x 18 multiplier blocks for the `$mul` (or black-boxed multiplier) cells of a `dump`: ceil(a / 18) * ceil(b / 18) each. */
   def multBlocks(dump: String): Long = {
     var total = 0L; var a = 0; var b = 0; var inMul = false
     def flush(): Unit = if (inMul) { total += ((a + 17) / 18).toLong * ((b + 17) / 18); inMul = false }
     dump.linesIterator.foreach { l =>
       val t = l.trim
-      if (t.startsWith("cell ")) { flush(); inMul = t.startsWith("cell $mul "); a = 0; b = 0 }
+      if (t.startsWith("cell ")) { flush(); inMul = t.startsWith("cell $mul ") || t.startsWith(s"cell ${Yosys.multCell} "); a = 0; b = 0 }
       else if (t == "end") flush()
       else l match {
         case widthParam("A", w) => a = w.toInt

@@ -17,7 +17,7 @@ final case class ModuleCells(name: String, cells: Map[String, Long]) {
 /** What one yosys run measured. `modules` is empty for a flattened run.
   * @param memoryBits bits of the memories yosys inferred before mapping
   * @param multipliers 18 x 18 multiplier blocks the design's multiplications need
-  * @param longestPathCells most LUT cells on a path between registers (flattened runs only)
+  * @param longestPathCells most LUT cells on a path between registers
   */
 final case class SynthResult(top: String, total: ModuleCells, modules: Seq[ModuleCells], memoryBits: Long,
                              multipliers: Long, longestPathCells: Option[Int], seconds: Double)
@@ -42,7 +42,9 @@ object Yosys {
     try os.proc("yosys", "-V").call(check = false, stderr = os.Pipe).exitCode == 0
     catch { case _: java.io.IOException => false }
 
-  /** The yosys script; `flatten = false` keeps the hierarchy for a per-module table. */
+  /** The yosys script. `flatten = false` keeps the hierarchy while mapping (per-module table; totals
+    * are the sum over instances), then flattens the mapped netlist for the longest path.
+    */
   def script(top: String, files: Seq[os.Path], flatten: Boolean): String = Seq(
     Seq(s"read_verilog -sv ${files.map(f => "\"" + f + "\"").mkString(" ")}",
       "read_verilog -lib mult_stub.v",
@@ -55,8 +57,10 @@ object Yosys {
       s"chtype -set $multCell t:$$mul",
       s"synth_intel -family cycloneive -top $top" + (if (flatten) "" else " -noflatten"),
       "tee -q -o stat.json stat -json"),
+    // A hierarchical run flattens the mapped netlist for the path and the multiplier widths.
+    if (flatten) Nil else Seq("flatten", s"tee -q -o mul.txt dump t:$multCell"),
     // Paths through LUT cells only: registers, RAMs and multipliers end a path.
-    if (flatten) Seq("tee -q -o ltp.txt ltp -noff w:* t:*_lcell_comb") else Nil
+    Seq("tee -q -o ltp.txt ltp -noff w:* t:*_lcell_comb")
   ).flatten.mkString("\n") + "\n"
 
   /** Synthesizes `files` with `top` in `work`; progress lines every 30 s go to `progress`. */
@@ -90,7 +94,7 @@ object Yosys {
     val (total, modules) = StatParse.cells(os.read(work / "stat.json"), top)
     val memBits = StatParse.memoryBits(os.read(work / "pre.json"))
     val mults = StatParse.multBlocks(os.read(work / "mul.txt"))
-    val ltp = if (flatten) StatParse.longestPath(os.read(work / "ltp.txt")) else None
+    val ltp = StatParse.longestPath(os.read(work / "ltp.txt"))
     SynthResult(top, total, if (flatten) Nil else modules, memBits, mults, ltp, seconds)
   }
 }

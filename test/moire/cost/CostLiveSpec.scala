@@ -10,7 +10,7 @@ class CostLiveSpec extends AnyFlatSpec with Matchers {
   private def measure(p: CordicParams): CostReport = {
     assume(Yosys.available, "yosys not installed")
     val work = os.temp.dir(prefix = "moire-cost-test-")
-    try Cost.measure(CostDesigns.find("cordic").toOption.get, p, work, 300, perModule = true, _ => ())
+    try Cost.measure(CostDesigns.find("cordic").toOption.get, p, work, 300, _ => ())
     finally os.remove.all(work)
   }
 
@@ -50,6 +50,21 @@ class CostLiveSpec extends AnyFlatSpec with Matchers {
     } finally os.remove.all(work)
   }
 
+  it should "list the modules of a hierarchical design and add their instances up" in {
+    assume(Yosys.available, "yosys not installed")
+    val work = os.temp.dir(prefix = "moire-cost-test-")
+    val inner = cordic(4, 8)
+    val pair = CostDesign("pair", "two CORDICs", _ => new TwoCordics(inner), _ => None)
+    val r = try Cost.measure(pair, inner, work, 300, _ => ()) finally os.remove.all(work)
+    val cm = r.synth.modules.find(_.name == inner.moduleName).get
+    r.synth.modules.map(_.name) should contain allOf ("TwoCordics", inner.moduleName)
+    r.registers should be >= 2 * cm.registers
+    r.logicCells should be >= 2 * cm.logicCells
+    r.synth.longestPathCells.get should be > 0
+    r.json("modules").arr.size shouldBe 2
+    r.text should include(inner.moduleName)
+  }
+
   "cost --sweep" should "write CSV, JSON and PNG with the Pareto front marked, and reuse its cache" in {
     assume(Yosys.available, "yosys not installed")
     val out = os.temp.dir(prefix = "moire-sweep-test-")
@@ -77,4 +92,16 @@ class CostLiveSpec extends AnyFlatSpec with Matchers {
       SweepRun.synth(cordic(6, 10), out / "cache", 300, _ => ())._2 shouldBe true
     } finally os.remove.all(out)
   }
+}
+
+/** Two CORDICs side by side: a design with a hierarchy. */
+class TwoCordics(p: CordicParams) extends chisel3.Module {
+  import chisel3._
+  val io = IO(new Bundle { val z = Input(SInt(p.angleBits.W)); val y = Output(SInt(p.width.W)) })
+  private val a = Module(new moire.cordic.Cordic(p))
+  private val b = Module(new moire.cordic.Cordic(p))
+  Seq(a, b).foreach { c => c.io.in.valid := true.B; c.io.in.bits.x := 0.S; c.io.in.bits.y := 0.S }
+  a.io.in.bits.z := io.z
+  b.io.in.bits.z := -io.z
+  io.y := RegNext(a.io.out.bits.y ^ b.io.out.bits.x)
 }
