@@ -53,9 +53,10 @@ final case class CostReport(design: String, what: String, synth: SynthResult, la
     val t = synth.total
     b ++= s"$design: $what\n  top ${synth.top}, yosys 0.23 synth_intel -family cycloneive (${f"${synth.seconds}%.0f"} s)\n"
     if (synth.modules.nonEmpty) {
-      b ++= f"  ${"module"}%-48s ${"logic cells"}%11s ${"LUTs"}%7s ${"FFs"}%7s ${"M9K"}%5s ${"mults"}%5s  (one instance each)\n"
+      val w = synth.modules.map(_.name.length).max
+      b ++= s"  ${"module".padTo(w, ' ')} " + f"${"logic cells"}%11s ${"LUTs"}%7s ${"FFs"}%7s ${"M9K"}%5s ${"mults"}%5s  (one instance each)\n"
       for (m <- synth.modules.sortBy(-_.logicCells))
-        b ++= f"  ${m.name.take(48)}%-48s ${m.logicCells}%11d ${m.luts}%7d ${m.registers}%7d ${m.m9k}%5d ${m.multCells}%5d\n"
+        b ++= s"  ${m.name.padTo(w, ' ')} " + f"${m.logicCells}%11d ${m.luts}%7d ${m.registers}%7d ${m.m9k}%5d ${m.multCells}%5d\n"
     }
     b ++= f"  total: ${t.logicCells} logic cells (${t.luts} LUTs + ${t.registers} registers) = ${Ep4ce115.pct(t.logicCells, Ep4ce115.logicElements)} of the EP4CE115's ${Ep4ce115.logicElements} LEs\n"
     b ++= f"  memory: ${synth.memoryBits} bits (${t.m9k} M9K) = ${Ep4ce115.pct(synth.memoryBits, Ep4ce115.memoryBits)} of ${Ep4ce115.memoryBits}; " +

@@ -41,7 +41,7 @@ object StatParse {
     def flush(): Unit = if (inMul) { total += ((a + 17) / 18).toLong * ((b + 17) / 18); inMul = false }
     dump.linesIterator.foreach { l =>
       val t = l.trim
-      if (t.startsWith("cell ")) { flush(); inMul = t.startsWith("cell $mul ") || t.startsWith(s"cell ${Yosys.multCell} "); a = 0; b = 0 }
+      if (t.startsWith("cell ")) { flush(); inMul = Seq("$mul", Yosys.multCell, "\\" + Yosys.multCell).exists(c => t.startsWith(s"cell $c ")); a = 0; b = 0 }
       else if (t == "end") flush()
       else l match {
         case widthParam("A", w) => a = w.toInt

@@ -40,6 +40,8 @@ class StatParseSpec extends AnyFlatSpec with Matchers {
     val two = "  cell $mul $m1\n    parameter \\A_WIDTH 20\n    parameter \\B_WIDTH 18\n  end\n" +
       "  cell $mul $m2\n    parameter \\A_WIDTH 37\n    parameter \\B_WIDTH 19\n  end\n"
     StatParse.multBlocks(two) shouldBe 2 + 3 * 2
+    // After chtype the cells are black boxes: a hierarchical run dumps them from the flattened netlist.
+    StatParse.multBlocks(two.replace("cell $mul", "cell \\moire_mult18")) shouldBe 2 + 3 * 2
     StatParse.multBlocks("") shouldBe 0
   }
 
