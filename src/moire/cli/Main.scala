@@ -17,14 +17,15 @@ case class CordicConfig(
   @arg(doc = "a pipeline register every k iterations (1 = fully pipelined)") pipelineEvery: Int = 1,
   @arg(doc = "truncate | half-even") rounding: String = "half-even",
   @arg(doc = "leave the outputs scaled by the CORDIC gain K") noGainCompensation: Flag = Flag(),
-  @arg(doc = "arcsine peak lookup table entries for [83, 90] degrees (0 = none, power of two)") peakTable: Int = 0
+  @arg(doc = "arcsine peak lookup table entries for [83, 90] degrees (0 = none, power of two)") peakTable: Int = 0,
+  @arg(doc = "sincos only: lean datapath, same results, fewer cells (docs/cordic-taper.md)") taper: Flag = Flag()
 ) {
   /** The params, or one line saying which option is wrong. */
   def params: CordicParams = {
     val m = CordicMode.parse(mode).fold(e => throw new UsageError(e), identity)
     val r = Rounding.parse(rounding).fold(e => throw new UsageError(e), identity)
     try CordicParams(m, iterations, width, fracBits, angleWidth, guardBits, angleGuardBits, pipelineEvery, r,
-      !noGainCompensation.value, peakTable)
+      !noGainCompensation.value, peakTable, taper.value)
     catch { case e: IllegalArgumentException => throw new UsageError("--" + e.getMessage.stripPrefix("requirement failed: ")) }
   }
 }

@@ -53,144 +53,149 @@ class Cordic(val p: CordicParams) extends Module {
     val t = SInt(w.W)
   }
 
-  // ---- input stage: coarse pre-rotation / start vector ----
-  private val s0 = Wire(new State)
-  private val inX = io.in.bits.x
-  private val inY = io.in.bits.y
-  private val inZ = io.in.bits.z
-  /** The arcsine input clamped to [-1.0, 1.0], one bit wider than the port. */
-  private lazy val sineIn: SInt = {
-    val oneIn = 1L << p.dataFrac
-    Mux(inY > lit(oneIn, p.width + 1), lit(oneIn, p.width + 1),
-      Mux(inY < lit(-oneIn, p.width + 1), lit(-oneIn, p.width + 1), inY.pad(p.width + 1)))
-  }
-  s0.t := 0.S
-  p.mode match {
-    case SinCos | Rotate =>
-      val quarter = 1L << (p.angleBits - 2)
-      val fold = inZ >= lit(quarter, p.angleBits + 1) || inZ < lit(-quarter, p.angleBits + 1)
-      val folded = Cat(~inZ(p.angleBits - 1), inZ(p.angleBits - 2, 0)).asSInt
-      val a = Mux(fold, folded, inZ)
-      s0.z := (if (p.zGuard == 0) a else Cat(a, 0.U(p.zGuard.W)).asSInt)
-      val (x0, y0) =
-        if (p.mode == SinCos) (lit(p.startX, w), 0.S(w.W))
-        else (lsh(inX, p.guardBits), lsh(inY, p.guardBits))
-      s0.x := Mux(fold, fit(-x0, w), x0)
-      s0.y := Mux(fold, fit(-y0, w), y0)
-    case Atan2 =>
-      val xi = lsh(inX, p.guardBits)
-      val yi = lsh(inY, p.guardBits)
-      val fold = xi < 0.S
-      s0.x := Mux(fold, fit(-xi, w), xi)
-      s0.y := Mux(fold, fit(-yi, w), yi)
-      s0.z := Mux(fold, lit(-(1L << (zw - 1)), zw), 0.S(zw.W))
-    case _ =>
-      val a = sineIn
-      s0.t := lsh(a, p.guardBits)
-      if (p.isDouble) {
-        val pos = a >= 0.S
-        s0.x := 0.S
-        s0.y := Mux(pos, lit(1L << p.innerFrac, w), lit(-(1L << p.innerFrac), w))
-        s0.z := Mux(pos, lit(1L << (zw - 2), zw), lit(-(1L << (zw - 2)), zw))
-      } else {
-        s0.x := lit(p.startX, w)
-        s0.y := 0.S
-        s0.z := 0.S
-      }
-  }
+  if (p.taper) CordicTaper.build(p, io.in, io.out) else conventional()
 
-  // Peak lookup table, resolved in the input stage and carried beside the iterations.
-  private val table: Option[(Bool, SInt)] = if (p.peakTableSize > 0) {
-    val pt = PeakTable(p)
-    val a = sineIn
-    val mag = Mux(a < 0.S, -a, a)
-    val hit = mag >= lit(pt.start, p.width + 2)
-    val offset = (mag - lit(pt.start, p.width + 2)).asUInt
-    val rom = VecInit(pt.entries.map(e => lit(e, p.angleBits)))
-    val v = if (pt.size == 1) rom(0) else rom((offset >> pt.binShift)(log2Ceil(pt.size) - 1, 0))
-    val signed = Mux(a < 0.S, -v, v)
-    val angle = if (p.mode.isAcos) lit(1L << (p.angleBits - 2), p.angleBits) - signed else signed
-    Some((hit, angle))
-  } else None
-
-  private def stage[T <: Data](v: T, name: String): T = { val reg = Reg(chiselTypeOf(v)); reg := v; reg.suggestName(name); reg }
-
-  // ---- iterations ----
-  private def step(s: State, i: Int, k: Long): State = {
-    val n = Wire(new State)
-    val kz = lit(k, zw)
-    n.t := s.t
+  /** The datapath as the papers draw it: pre-rotation register, one register group per k iterations, output. */
+  private def conventional(): Unit = {
+    // ---- input stage: coarse pre-rotation / start vector ----
+    val s0 = Wire(new State)
+    val inX = io.in.bits.x
+    val inY = io.in.bits.y
+    val inZ = io.in.bits.z
+    /** The arcsine input clamped to [-1.0, 1.0], one bit wider than the port. */
+    lazy val sineIn: SInt = {
+      val oneIn = 1L << p.dataFrac
+      Mux(inY > lit(oneIn, p.width + 1), lit(oneIn, p.width + 1),
+        Mux(inY < lit(-oneIn, p.width + 1), lit(-oneIn, p.width + 1), inY.pad(p.width + 1)))
+    }
+    s0.t := 0.S
     p.mode match {
       case SinCos | Rotate =>
-        val up = s.z >= 0.S
-        val sx = sh(s.x, i); val sy = sh(s.y, i)
-        n.x := Mux(up, s.x - sy, s.x + sy)
-        n.y := Mux(up, s.y + sx, s.y - sx)
-        n.z := Mux(up, s.z - kz, s.z + kz)
+        val quarter = 1L << (p.angleBits - 2)
+        val fold = inZ >= lit(quarter, p.angleBits + 1) || inZ < lit(-quarter, p.angleBits + 1)
+        val folded = Cat(~inZ(p.angleBits - 1), inZ(p.angleBits - 2, 0)).asSInt
+        val a = Mux(fold, folded, inZ)
+        s0.z := (if (p.zGuard == 0) a else Cat(a, 0.U(p.zGuard.W)).asSInt)
+        val (x0, y0) =
+          if (p.mode == SinCos) (lit(p.startX, w), 0.S(w.W))
+          else (lsh(inX, p.guardBits), lsh(inY, p.guardBits))
+        s0.x := Mux(fold, fit(-x0, w), x0)
+        s0.y := Mux(fold, fit(-y0, w), y0)
       case Atan2 =>
-        val down = s.y >= 0.S
-        val sx = sh(s.x, i); val sy = sh(s.y, i)
-        n.x := Mux(down, s.x + sy, s.x - sy)
-        n.y := Mux(down, s.y - sx, s.y + sx)
-        n.z := Mux(down, s.z + kz, s.z - kz)
-      case _ if p.isDouble =>
-        val ccw = Mux(s.x < 0.S, s.y < 0.S, s.y <= s.t)
-        val sx2 = sh(s.x, 2 * i); val sy2 = sh(s.y, 2 * i)
-        val sx1 = sh(s.x, i - 1); val sy1 = sh(s.y, i - 1)
-        n.x := Mux(ccw, s.x - sx2 - sy1, s.x - sx2 + sy1)
-        n.y := Mux(ccw, s.y - sy2 + sx1, s.y - sy2 - sx1)
-        n.z := Mux(ccw, s.z + kz, s.z - kz)
-        n.t := s.t + sh(s.t, 2 * i)
+        val xi = lsh(inX, p.guardBits)
+        val yi = lsh(inY, p.guardBits)
+        val fold = xi < 0.S
+        s0.x := Mux(fold, fit(-xi, w), xi)
+        s0.y := Mux(fold, fit(-yi, w), yi)
+        s0.z := Mux(fold, lit(-(1L << (zw - 1)), zw), 0.S(zw.W))
       case _ =>
-        val ccw = s.t >= s.y
-        val sx = sh(s.x, i); val sy = sh(s.y, i)
-        n.x := Mux(ccw, s.x - sy, s.x + sy)
-        n.y := Mux(ccw, s.y + sx, s.y - sx)
-        n.z := Mux(ccw, s.z + kz, s.z - kz)
+        val a = sineIn
+        s0.t := lsh(a, p.guardBits)
+        if (p.isDouble) {
+          val pos = a >= 0.S
+          s0.x := 0.S
+          s0.y := Mux(pos, lit(1L << p.innerFrac, w), lit(-(1L << p.innerFrac), w))
+          s0.z := Mux(pos, lit(1L << (zw - 2), zw), lit(-(1L << (zw - 2)), zw))
+        } else {
+          s0.x := lit(p.startX, w)
+          s0.y := 0.S
+          s0.z := 0.S
+        }
     }
-    n
-  }
 
-  private var state: State = stage(s0, "pre")
-  private var tableState = table.map { case (h, v) => (stage(h, "lut_hit_0"), stage(v, "lut_val_0")) }
-  for (((i, k), idx) <- p.steps.zip(p.angleTable).zipWithIndex) {
-    val next = step(state, i, k)
-    if ((idx + 1) % p.pipelineEvery == 0 || idx == p.iterations - 1) {
-      state = stage(next, s"iter_$i")
-      tableState = tableState.map { case (h, v) => (stage(h, s"lut_hit_$i"), stage(v, s"lut_val_$i")) }
-    } else state = next
-  }
+    // Peak lookup table, resolved in the input stage and carried beside the iterations.
+    val table: Option[(Bool, SInt)] = if (p.peakTableSize > 0) {
+      val pt = PeakTable(p)
+      val a = sineIn
+      val mag = Mux(a < 0.S, -a, a)
+      val hit = mag >= lit(pt.start, p.width + 2)
+      val offset = (mag - lit(pt.start, p.width + 2)).asUInt
+      val rom = VecInit(pt.entries.map(e => lit(e, p.angleBits)))
+      val v = if (pt.size == 1) rom(0) else rom((offset >> pt.binShift)(log2Ceil(pt.size) - 1, 0))
+      val signed = Mux(a < 0.S, -v, v)
+      val angle = if (p.mode.isAcos) lit(1L << (p.angleBits - 2), p.angleBits) - signed else signed
+      Some((hit, angle))
+    } else None
 
-  // ---- output stage ----
-  private def outData(v: SInt): SInt = {
-    val scaled =
-      if (p.postScale) FixedHw.shift(stage(v * lit(p.invGainConst, p.kFrac + 2), "scaled"), p.kFrac + p.guardBits, r)
-      else FixedHw.shift(v, p.guardBits, r)
-    FixedHw.saturate(scaled, p.outWidth)
-  }
-  private def outAngle(z: SInt): SInt = fit(FixedHw.shift(z, p.zGuard, r), p.angleBits)
+    def stage[T <: Data](v: T, name: String): T = { val reg = Reg(chiselTypeOf(v)); reg := v; reg.suggestName(name); reg }
 
-  private val result = Wire(new CordicOut(p))
-  result.x := 0.S
-  result.y := 0.S
-  result.z := 0.S
-  p.mode match {
-    case SinCos | Rotate =>
-      result.x := outData(state.x)
-      result.y := outData(state.y)
-    case Atan2 =>
-      result.x := outData(state.x)
-      result.z := outAngle(if (p.postScale) stage(state.z, "z_scaled") else state.z)
-    case _ =>
-      val z = if (p.mode.isAcos) lit(1L << (zw - 2), zw) - state.z else state.z
-      val cordicAngle = outAngle(z)
-      result.z := (tableState match {
-        case Some((hit, v)) => Mux(hit, v, cordicAngle)
-        case None => cordicAngle
-      })
+    // ---- iterations ----
+    def step(s: State, i: Int, k: Long): State = {
+      val n = Wire(new State)
+      val kz = lit(k, zw)
+      n.t := s.t
+      p.mode match {
+        case SinCos | Rotate =>
+          val up = s.z >= 0.S
+          val sx = sh(s.x, i); val sy = sh(s.y, i)
+          n.x := Mux(up, s.x - sy, s.x + sy)
+          n.y := Mux(up, s.y + sx, s.y - sx)
+          n.z := Mux(up, s.z - kz, s.z + kz)
+        case Atan2 =>
+          val down = s.y >= 0.S
+          val sx = sh(s.x, i); val sy = sh(s.y, i)
+          n.x := Mux(down, s.x + sy, s.x - sy)
+          n.y := Mux(down, s.y - sx, s.y + sx)
+          n.z := Mux(down, s.z + kz, s.z - kz)
+        case _ if p.isDouble =>
+          val ccw = Mux(s.x < 0.S, s.y < 0.S, s.y <= s.t)
+          val sx2 = sh(s.x, 2 * i); val sy2 = sh(s.y, 2 * i)
+          val sx1 = sh(s.x, i - 1); val sy1 = sh(s.y, i - 1)
+          n.x := Mux(ccw, s.x - sx2 - sy1, s.x - sx2 + sy1)
+          n.y := Mux(ccw, s.y - sy2 + sx1, s.y - sy2 - sx1)
+          n.z := Mux(ccw, s.z + kz, s.z - kz)
+          n.t := s.t + sh(s.t, 2 * i)
+        case _ =>
+          val ccw = s.t >= s.y
+          val sx = sh(s.x, i); val sy = sh(s.y, i)
+          n.x := Mux(ccw, s.x - sy, s.x + sy)
+          n.y := Mux(ccw, s.y + sx, s.y - sx)
+          n.z := Mux(ccw, s.z + kz, s.z - kz)
+      }
+      n
+    }
+
+    var state: State = stage(s0, "pre")
+    var tableState = table.map { case (h, v) => (stage(h, "lut_hit_0"), stage(v, "lut_val_0")) }
+    for (((i, k), idx) <- p.steps.zip(p.angleTable).zipWithIndex) {
+      val next = step(state, i, k)
+      if ((idx + 1) % p.pipelineEvery == 0 || idx == p.iterations - 1) {
+        state = stage(next, s"iter_$i")
+        tableState = tableState.map { case (h, v) => (stage(h, s"lut_hit_$i"), stage(v, s"lut_val_$i")) }
+      } else state = next
+    }
+
+    // ---- output stage ----
+    def outData(v: SInt): SInt = {
+      val scaled =
+        if (p.postScale) FixedHw.shift(stage(v * lit(p.invGainConst, p.kFrac + 2), "scaled"), p.kFrac + p.guardBits, r)
+        else FixedHw.shift(v, p.guardBits, r)
+      FixedHw.saturate(scaled, p.outWidth)
+    }
+    def outAngle(z: SInt): SInt = fit(FixedHw.shift(z, p.zGuard, r), p.angleBits)
+
+    val result = Wire(new CordicOut(p))
+    result.x := 0.S
+    result.y := 0.S
+    result.z := 0.S
+    p.mode match {
+      case SinCos | Rotate =>
+        result.x := outData(state.x)
+        result.y := outData(state.y)
+      case Atan2 =>
+        result.x := outData(state.x)
+        result.z := outAngle(if (p.postScale) stage(state.z, "z_scaled") else state.z)
+      case _ =>
+        val z = if (p.mode.isAcos) lit(1L << (zw - 2), zw) - state.z else state.z
+        val cordicAngle = outAngle(z)
+        result.z := (tableState match {
+          case Some((hit, v)) => Mux(hit, v, cordicAngle)
+          case None => cordicAngle
+        })
+    }
+    io.out.bits := stage(result, "out")
+    io.out.valid := ShiftRegister(io.in.valid, latency, false.B, true.B)
   }
-  io.out.bits := stage(result, "out")
-  io.out.valid := ShiftRegister(io.in.valid, latency, false.B, true.B)
 }
 
 /** Hardware twins of [[Fixed]]'s integer helpers. */

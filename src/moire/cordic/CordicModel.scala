@@ -40,15 +40,42 @@ class CordicModel(val p: CordicParams) {
     var x = if (fold) -x0 else x0
     var y = if (fold) -y0 else y0
     var z = z0
-    for ((i, k) <- p.steps.zip(p.angleTable)) {
+    for (((i, k), idx) <- p.steps.zip(p.angleTable).zipWithIndex) {
       val up = z >= 0
-      val sx = shift(x, i, r); val sy = shift(y, i, r)
-      val nx = if (up) x - sy else x + sy
-      val ny = if (up) y + sx else y - sx
+      val (nx, ny) = rotationStep(x, y, i, up)
       z = wrap(if (up) z - k else z + k, p.zWidth)
+      if (p.taper) { // the tapered z registers hold exactly this interval
+        val (lo, hi) = p.zRanges(idx)
+        if (z < lo || z > hi) throw new IllegalStateException(s"${p.moduleName}: z[$i] = $z outside [$lo, $hi]")
+      }
       x = chk(nx, s"x[$i]"); y = chk(ny, s"y[$i]")
     }
     CordicWord(outData(x), outData(y), 0L)
+  }
+
+  /** One rotation-mode iteration i: counter-clockwise when `up` (z >= 0). */
+  def rotationStep(x: Long, y: Long, i: Int, up: Boolean): (Long, Long) = {
+    val sx = shift(x, i, r); val sy = shift(y, i, r)
+    if (up) (x - sy, y + sx) else (x + sy, y - sx)
+  }
+
+  /** Tapered sincos: (x, y) after the first `taperTable` iterations, for the fold and their directions
+    * (entry index: fold unless it is applied at the output, then up_0 .. up_{m-1}, most significant
+    * first), as the RTL's constant table.
+    */
+  def taperTable: IndexedSeq[(Long, Long)] = {
+    val m = p.taperTable
+    val foldBit = if (p.taperFoldAtOutput) 0 else 1
+    (0 until (1 << (m + foldBit))).map { idx =>
+      val fold = foldBit == 1 && ((idx >> m) & 1) == 1
+      var x = if (fold) -p.startX else p.startX
+      var y = 0L
+      for (j <- 0 until m) {
+        val (nx, ny) = rotationStep(x, y, p.steps(j), ((idx >> (m - 1 - j)) & 1) == 1)
+        x = chk(nx, s"table x[$j]"); y = chk(ny, s"table y[$j]")
+      }
+      (x, y)
+    }
   }
 
   /** Vectoring: fold x < 0 by a half turn, then drive y to zero. */
@@ -120,6 +147,9 @@ class CordicModel(val p: CordicParams) {
     val scaled =
       if (p.postScale) shift(BigInt(v) * BigInt(p.invGainConst), p.kFrac + p.guardBits, r).toLong
       else shift(v, p.guardBits, r)
+    // Tapered sincos with an integer bit: |v| <= K < 2 cannot saturate, and the RTL has no saturation.
+    if (p.taper && p.dataInt >= 1 && !fits(scaled, p.outWidth))
+      throw new IllegalStateException(s"${p.moduleName}: output $scaled overflows ${p.outWidth} bits")
     saturate(scaled, p.outWidth)
   }
 }

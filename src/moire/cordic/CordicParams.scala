@@ -55,6 +55,10 @@ object Rounding {
   *
   * @param pipelineEvery a register after every k iterations (1 = fully pipelined)
   * @param peakTableSize entries of the arcsine lookup table for [83, 90] degrees (0 = none; seed 000 sec. 3.3)
+  * @param taper lean sincos datapath ([[CordicTaper]]): the same arithmetic (bit for bit the same results as
+  *              without it), fewer cells: x/y without headroom bits, z words narrowed per stage to the
+  *              residual's proven range, the first `taperTable` iterations folded into a constant table,
+  *              rounding as the adder's carry in, no saturation where none can occur; latency n clocks
   */
 case class CordicParams(
   mode: CordicMode = CordicMode.SinCos,
@@ -67,7 +71,8 @@ case class CordicParams(
   pipelineEvery: Int = 1,
   rounding: Rounding = Rounding.HalfEven,
   gainCompensation: Boolean = true,
-  peakTableSize: Int = 0
+  peakTableSize: Int = 0,
+  taper: Boolean = false
 ) {
   require(iterations >= 4 && iterations <= 40, s"iterations must be in 4..40, got $iterations")
   require(width >= 8 && width <= 48, s"width must be in 8..48, got $width")
@@ -90,14 +95,19 @@ case class CordicParams(
   require(gainCompensation || !(mode == CordicMode.Asin || mode == CordicMode.Acos),
     s"gain compensation cannot be turned off for ${mode.name}: its start vector 1/K carries it")
 
+  require(!taper || mode == CordicMode.SinCos, s"taper applies to sincos only, not ${mode.name}")
+  require(!taper || pipelineEvery == 1, s"taper needs pipeline-every 1 (one adder between registers), got $pipelineEvery")
+
   /** Fractional bits of x, y (and the arcsine target) inside the iterations. */
   val innerFrac: Int = dataFrac + guardBits
   /** Integer bits of the input data words (without the sign). */
   val dataInt: Int = width - 1 - dataFrac
   require(gainCompensation || dataInt >= 1 || !(mode == CordicMode.SinCos || mode == CordicMode.Rotate),
     s"${mode.name} without gain compensation outputs K = 1.65 times full scale: frac-bits must leave an integer bit (at most ${width - 2})")
-  /** Internal x/y width: sign + headroom for the CORDIC gain and adder transients + fraction. */
-  val innerWidth: Int = 1 + dataInt + 3 + innerFrac
+  /** Internal x/y width: sign + headroom for the CORDIC gain and adder transients + fraction.
+    * Tapered sincos: |(x, y)| never exceeds K < 2, so sign + one integer bit + fraction.
+    */
+  val innerWidth: Int = if (taper) 2 + innerFrac else 1 + dataInt + 3 + innerFrac
   require(innerWidth <= 60, s"width plus guard bits too large for the 64-bit model ($innerWidth internal bits)")
   /** Internal angle width (binary angle, one turn = 2^zWidth). */
   val zWidth: Int = angleBits + zGuard
@@ -131,8 +141,40 @@ case class CordicParams(
 
   /** Number of iteration register groups. */
   val groups: Int = (iterations + pipelineEvery - 1) / pipelineEvery
-  /** Clock cycles from in.valid to out.valid: input stage, iteration groups, output stage(s). */
-  val latency: Int = 1 + groups + 1 + (if (postScale) 1 else 0)
+  /** Tapered with round half to even: the quadrant fold negates the vector, so it is applied to the
+    * output (round half to even is odd-symmetric, hence -round(v) = round(-v)) instead of the table.
+    */
+  val taperFoldAtOutput: Boolean = taper && rounding == Rounding.HalfEven
+  /** Tapered: iterations 0 .. taperTable-1 come from a constant table indexed by their directions
+    * (and the fold unless it is applied at the output): 5 address bits.
+    */
+  val taperTable: Int =
+    if (taper) math.min(CordicParams.taperTableBits - (if (taperFoldAtOutput) 0 else 1), iterations) else 0
+  /** Clock cycles from in.valid to out.valid: input stage, iteration groups, output stage(s).
+    * Tapered: iterations 0 and 1 are bit logic on the input, so stages 1 .. n-1 and the output.
+    */
+  val latency: Int = if (taper) iterations else 1 + groups + 1 + (if (postScale) 1 else 0)
+
+  /** Tapered: the interval [lo, hi] of z after iteration i (i = 0 .. n-1), in z units, from the
+    * interval after the fold and the rounded table (z >= 0 subtracts the entry, z < 0 adds it).
+    */
+  lazy val zRanges: IndexedSeq[(Long, Long)] = {
+    val q = 1L << (zWidth - 2)
+    var lo = -q; var hi = q - (1L << zGuard)
+    angleTable.map { k =>
+      val pos = if (hi >= 0) Some((math.max(lo, 0L) - k, hi - k)) else None
+      val neg = if (lo < 0) Some((lo + k, math.min(hi, -1L) + k)) else None
+      val both = pos.toSeq ++ neg.toSeq
+      lo = both.map(_._1).min; hi = both.map(_._2).max
+      (lo, hi)
+    }.toIndexedSeq
+  }
+  /** Bits of a signed word holding [lo, hi]. */
+  def signedBits(lo: Long, hi: Long): Int = {
+    var b = 1
+    while (lo < -(1L << (b - 1)) || hi > (1L << (b - 1)) - 1) b += 1
+    b
+  }
 
   /** Module name carrying the parameters. */
   def moduleName: String = {
@@ -140,10 +182,13 @@ case class CordicParams(
     val r = if (rounding == Rounding.Truncate) "tr" else "rne"
     val g = if (gainCompensation) "" else "_nogc"
     val t = if (peakTableSize > 0) s"_lut$peakTableSize" else ""
-    s"Cordic_${m}_n${iterations}_w${width}f${dataFrac}_a${angleBits}_g${guardBits}z${zGuard}_k${pipelineEvery}_$r$g$t"
+    val tp = if (taper) "_taper" else ""
+    s"Cordic_${m}_n${iterations}_w${width}f${dataFrac}_a${angleBits}_g${guardBits}z${zGuard}_k${pipelineEvery}_$r$g$t$tp"
   }
 }
 
 object CordicParams {
   def log2Ceil(x: Int): Int = { var b = 0; while ((1L << b) < x) b += 1; b }
+  /** Address bits of the tapered sincos's constant table (a 5-input function per bit). */
+  val taperTableBits: Int = 5
 }

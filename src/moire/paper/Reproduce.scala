@@ -67,6 +67,7 @@ object Reproduce {
     out += AccuracyRow("seed001", "eq. 19 simulated max over 10,000 angles, n=16 b=18", 9.36e-4, sim, "arcsec",
       sim <= pmax, f"holds when below P_max; ${if (sim <= 9.36e-4) "below" else "above"} the paper's simulation by ${(sim / 9.36e-4 - 1) * 100}%.0f%%: " +
         "the n=16 approximation term alone allows 1.166e-3 and our angles come closer to it")
+    out ++= moire.cordic.TaperFigures.rows()
     out ++= moire.harmonic.HarmonicReproduce.rows()
     progress("seed 001 Table 3")
     for (n <- 15 to 17; b <- 19 to 22) {
