@@ -52,7 +52,7 @@ object Main {
            @arg(doc = "keep the Verilog and yosys files in this folder") keep: Option[String] = None,
            @arg(doc = "sweep iterations x width over the CORDIC variants instead; writes CSV, JSON and PNG") sweep: Flag = Flag(),
            @arg(doc = "sweep: output folder (default cost-sweep)") out: String = "cost-sweep",
-           @arg(doc = "sweep: comma-separated variants (default sincos,sincos-truncate,asin,asin-double,asin-table)") variants: String = "sincos,sincos-truncate,asin,asin-double,asin-table",
+           @arg(doc = "sweep: comma-separated variants (default sincos,sincos-taper,sincos-taper-g2,asin,asin-double,asin-table; also sincos-truncate)") variants: String = "sincos,sincos-taper,sincos-taper-g2,asin,asin-double,asin-table",
            @arg(doc = "sweep: comma-separated iteration counts (default 8,12,16)") sweepIterations: String = "8,12,16",
            @arg(doc = "sweep: comma-separated widths (default 12,16,18,20)") sweepWidths: String = "12,16,18,20",
            @arg(doc = "sweep: keep (n, b) with b - spread <= n <= b (default 4)") spread: Int = 4,

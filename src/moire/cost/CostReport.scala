@@ -18,6 +18,8 @@ object PaperAnchor {
   val goalCells = 2000
   /** Is this the paper's configuration? Its b = 18 counts fractional bits (width 20 here); width 18 is our default. */
   def applies(p: CordicParams): Boolean = p.mode == CordicMode.SinCos && p.iterations == 16 && (p.width == 18 || p.width == 20)
+  /** Sine CORDICs are printed next to the paper's. */
+  def compares(p: CordicParams): Boolean = p.mode == CordicMode.SinCos
 }
 
 /** What `cost` reports for one design. */
@@ -65,13 +67,13 @@ final case class CostReport(design: String, what: String, synth: SynthResult, la
     latency.foreach(l => b ++= s"  latency $l clocks${if (cordic.isDefined) ", one result per clock" else ""}\n")
     cordic.foreach { p =>
       b ++= f"  error bound ${CordicBound.headline(p).total}%.3e ${if (p.mode == CordicMode.SinCos || p.mode == CordicMode.Rotate) "(full scale 1.0)" else "rad"}\n"
-      if (PaperAnchor.applies(p)) b ++= anchorLine(p) + "\n"
+      if (PaperAnchor.compares(p)) b ++= anchorLine(p) + "\n"
     }
     b.toString
   }
 
   def anchorLine(p: CordicParams): String =
     f"  paper (seed 001 Table 1, Quartus): ${PaperAnchor.logicElements} LEs, ${PaperAnchor.clocks} clocks, ${PaperAnchor.accuracy}%.2e" +
-      f" | ours (yosys): $logicCells logic cells, ${p.latency} clocks, bound ${CordicBound.headline(p).total}%.2e" +
+      f" | ours (yosys, ${if (p.taper) "tapered" else "conventional"}): $logicCells logic cells, ${p.latency} clocks, bound ${CordicBound.headline(p).total}%.2e" +
       s" | goal <= ${PaperAnchor.goalCells}: ${if (logicCells <= PaperAnchor.goalCells) "met" else "not met"}"
 }

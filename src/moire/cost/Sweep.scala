@@ -1,16 +1,20 @@
 package moire.cost
 
-import moire.cordic.{CordicMode, CordicParams, Rounding}
+import moire.cordic.{CordicMode, CordicParams, Rounding, TaperFigures}
 
 /** One CORDIC variant of the sweep: `function` is what it computes ("sin" or "asin"), which sets the
   * error unit (full scale 1.0 or radians) and the plot it lands in.
   */
-final case class Variant(name: String, function: String, make: (Int, Int) => CordicParams)
+final case class Variant(name: String, function: String, make: (Int, Int) => CordicParams, extra: Seq[(Int, Int)] = Nil)
 
 object Variant {
   val all: Seq[Variant] = Seq(
     Variant("sincos", "sin", (n, b) => CordicParams(CordicMode.SinCos, n, b)),
     Variant("sincos-truncate", "sin", (n, b) => CordicParams(CordicMode.SinCos, n, b, rounding = Rounding.Truncate)),
+    Variant("sincos-taper", "sin", (n, b) => CordicParams(CordicMode.SinCos, n, b, taper = true)),
+    // The lean configuration of TaperFigures (n = 17, b = 20) is always in the sweep.
+    Variant("sincos-taper-g2", "sin", (n, b) => CordicParams(CordicMode.SinCos, n, b, guardBits = 2, angleGuardBits = 3, taper = true),
+      extra = Seq((TaperFigures.lean.iterations, TaperFigures.lean.width))),
     Variant("asin", "asin", (n, b) => CordicParams(CordicMode.Asin, n, b)),
     Variant("asin-double", "asin", (n, b) => CordicParams(CordicMode.AsinDouble, n, b)),
     Variant("asin-table", "asin", (n, b) => CordicParams(CordicMode.Asin, n, b, peakTableSize = 64))

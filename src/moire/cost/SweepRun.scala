@@ -4,9 +4,10 @@ import moire.cordic.{CordicAccuracy, CordicBound, CordicParams}
 
 /** The grid of a sweep: every (n, b) of the lists with `b - spread <= n <= b` (balanced: neither term dominates). */
 final case class SweepGrid(variants: Seq[Variant], iterations: Seq[Int], widths: Seq[Int], spread: Int) {
-  def points: Seq[(Variant, CordicParams)] = for {
-    v <- variants; b <- widths; n <- iterations if n <= b && n >= b - spread
-  } yield (v, v.make(n, b))
+  def points: Seq[(Variant, CordicParams)] = variants.flatMap { v =>
+    val grid = for (b <- widths; n <- iterations if n <= b && n >= b - spread) yield (n, b)
+    (grid ++ v.extra.filterNot(grid.contains)).map { case (n, b) => (v, v.make(n, b)) }
+  }
 }
 
 /** Runs a sweep with a cache keyed by the emitted Verilog, writes CSV, JSON and the plots. */
