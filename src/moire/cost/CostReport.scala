@@ -61,7 +61,7 @@ final case class CostReport(design: String, what: String, synth: SynthResult, la
         b ++= s"  ${m.name.padTo(w, ' ')} " + f"${m.logicCells}%11d ${m.luts}%7d ${m.registers}%7d ${m.m9k}%5d ${m.multCells}%5d\n"
     }
     b ++= f"  total: ${t.logicCells} logic cells (${t.luts} LUTs + ${t.registers} registers) = ${Ep4ce115.pct(t.logicCells, Ep4ce115.logicElements)} of the EP4CE115's ${Ep4ce115.logicElements} LEs\n"
-    b ++= f"  memory: ${synth.memoryBits} bits (${t.m9k} M9K) = ${Ep4ce115.pct(synth.memoryBits, Ep4ce115.memoryBits)} of ${Ep4ce115.memoryBits}; " +
+    b ++= f"  memory: ${synth.memoryBits} bits inferred (${t.m9k} M9K blocks; the rest is in logic) = ${Ep4ce115.pct(synth.memoryBits, Ep4ce115.memoryBits)} of ${Ep4ce115.memoryBits}; " +
       f"multipliers: ${synth.multipliers} of ${Ep4ce115.multipliers18} 18x18 (${Ep4ce115.pct(synth.multipliers, Ep4ce115.multipliers18)})\n"
     b ++= s"  longest path between registers: ${synth.longestPathCells.map(n => s"$n LUT cells").getOrElse("not measured")}\n"
     latency.foreach(l => b ++= s"  latency $l clocks${if (cordic.isDefined) ", one result per clock" else ""}\n")
