@@ -54,7 +54,7 @@ object Main {
            @arg(doc = "sweep: output folder (default cost-sweep)") out: String = "cost-sweep",
            @arg(doc = "sweep: comma-separated variants (default sincos,sincos-taper,sincos-taper-g2,asin,asin-double,asin-table; also sincos-truncate)") variants: String = "sincos,sincos-taper,sincos-taper-g2,asin,asin-double,asin-table",
            @arg(doc = "sweep: comma-separated iteration counts (default 8,12,16)") sweepIterations: String = "8,12,16",
-           @arg(doc = "sweep: comma-separated widths (default 12,16,18,20)") sweepWidths: String = "12,16,18,20",
+           @arg(doc = "sweep: comma-separated widths (default 12,16,20)") sweepWidths: String = "12,16,20",
            @arg(doc = "sweep: keep (n, b) with b - spread <= n <= b (default 4)") spread: Int = 4,
            @arg(doc = "sweep: skip the measured error of the bit-accurate model") noMeasure: Flag = Flag()): Unit =
     if (sweep.value) CostCmd.sweep(variants, sweepIterations, sweepWidths, spread, out, timeout, !noMeasure.value, json)

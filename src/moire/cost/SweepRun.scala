@@ -79,10 +79,10 @@ object SweepRun {
     for (f <- rows.map(_.function).distinct) {
       val unit = if (f == "sin") "full scale 1.0" else "rad"
       b ++= s"$f ($unit): cheapest configuration for each accuracy\n"
-      b ++= f"  ${"max error"}%10s  ${"variant"}%-12s ${"n"}%3s ${"b"}%3s ${"logic cells"}%11s ${"path"}%5s ${"clocks"}%6s ${"bound"}%10s ${"measured"}%10s\n"
+      b ++= f"  ${"max error"}%10s  ${"variant"}%-16s ${"n"}%3s ${"b"}%3s ${"logic cells"}%11s ${"path"}%5s ${"clocks"}%6s ${"bound"}%10s ${"measured"}%10s\n"
       val worst = rows.filter(_.function == f).map(_.errorBound).max
       for (t <- levels(f) if t < 3 * worst) Pareto.cheapest(rows, f, t) match {
-        case Some(r) => b ++= f"  $t%10.2e  ${r.variant}%-12s ${r.p.iterations}%3d ${r.p.width}%3d ${r.logicCells}%11d ${r.longestPathCells.map(_.toString).getOrElse("-")}%5s ${r.p.latency}%6d ${r.errorBound}%10.3e ${r.measuredError.map(e => f"$e%10.3e").getOrElse("-")}%10s\n"
+        case Some(r) => b ++= f"  $t%10.2e  ${r.variant}%-16s ${r.p.iterations}%3d ${r.p.width}%3d ${r.logicCells}%11d ${r.longestPathCells.map(_.toString).getOrElse("-")}%5s ${r.p.latency}%6d ${r.errorBound}%10.3e ${r.measuredError.map(e => f"$e%10.3e").getOrElse("-")}%10s\n"
         case None =>
       }
       b ++= s"  Pareto front: ${rows.filter(r => r.function == f && r.pareto).sortBy(_.logicCells).map(r => s"${r.variant} n=${r.p.iterations} b=${r.p.width} (${r.logicCells})").mkString(", ")}\n"
