@@ -78,7 +78,7 @@ final case class CostReport(design: String, what: String, synth: SynthResult, la
       f" | goal (bound <= ${PaperAnchor.accuracy}%.2e in <= ${PaperAnchor.goalCells} cells): " + goal(p)
 
   private def goal(p: CordicParams): String = {
-    val why = Seq(CordicBound.headline(p).total > PaperAnchor.accuracy -> "bound above", logicCells > PaperAnchor.goalCells -> "cells above")
+    val why = Seq((CordicBound.headline(p).total > PaperAnchor.accuracy) -> "bound above", (logicCells > PaperAnchor.goalCells) -> "cells above")
       .collect { case (true, w) => w }
     if (why.isEmpty) "met" else s"not met (${why.mkString(", ")})"
   }
