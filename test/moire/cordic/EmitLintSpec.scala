@@ -9,7 +9,8 @@ class EmitLintSpec extends AnyFlatSpec {
   "Emitted SystemVerilog" should "pass verilator --lint-only" in {
     SimSupport.requireTool(this, "verilator")
     val configs = Seq(CordicParams(), CordicParams(CordicMode.Atan2, 20, 24, pipelineEvery = 4),
-      CordicParams(CordicMode.AcosDouble, 16, 18, peakTableSize = 64, rounding = Rounding.Truncate))
+      CordicParams(CordicMode.AcosDouble, 16, 18, peakTableSize = 64, rounding = Rounding.Truncate),
+      TaperFigures.lean)
     for (p <- configs) {
       val dir = os.temp.dir()
       val sv = Emit.cordic(p, dir.toString)
