@@ -45,8 +45,8 @@ private[cordic] object CordicTaper {
       ups = ups :+ up
       val nextXy: Option[(SInt, SInt)] =
         if (s == m - 1) {
-          val e = lookup(table.map { case (x, y) => (BigInt(x) & ((BigInt(1) << w) - 1)) << w | (BigInt(y) & ((BigInt(1) << w) - 1)) },
-            if (p.taperFoldAtOutput) ups else folded +: ups, 2 * w)
+          def bits(v: Long) = BigInt(v) & ((BigInt(1) << w) - 1)
+          val e = lookup(table.map { case (x, y) => bits(x) << w | bits(y) }, if (p.taperFoldAtOutput) ups else folded +: ups, 2 * w)
           Some((e(2 * w - 1, w).asSInt, e(w - 1, 0).asSInt))
         } else if (s >= m) xy.map { case (x, y) => (addRounded(p, x, y, s, up), addRounded(p, y, x, s, !up)) }
         else None
