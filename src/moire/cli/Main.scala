@@ -46,7 +46,7 @@ object Main {
 
   @main(doc = "Logic cells, registers, memory bits, multipliers and longest path (yosys synth_intel, Cyclone IV E) of a design.")
   def cost(config: CordicConfig,
-           @arg(doc = "cordic (the emit options) | subdiv | quadcomp | adapt | corrected | harmonic") design: String = "cordic",
+           @arg(doc = "a design of moire.cost.CostDesigns: cordic (the emit options), subdiv, quadcomp, adapt, corrected, harmonic, ...") design: String = "cordic",
            @arg(doc = "also write the figures as JSON to this file") json: Option[String] = None,
            @arg(doc = "seconds each yosys run may take (default 1800)") timeout: Int = 1800,
            @arg(doc = "keep the Verilog and yosys files in this folder") keep: Option[String] = None,
