@@ -44,6 +44,22 @@ object Main {
     println(s"wrote $file (${p.moduleName}, latency ${p.latency} clocks)")
   }
 
+  @main(doc = "Logic cells, registers, memory bits, multipliers and longest path (yosys synth_intel, Cyclone IV E) of a design.")
+  def cost(config: CordicConfig,
+           @arg(doc = "a design of moire.cost.CostDesigns: cordic (the emit options), subdiv, quadcomp, adapt, corrected, harmonic, ...") design: String = "cordic",
+           @arg(doc = "also write the figures as JSON to this file") json: Option[String] = None,
+           @arg(doc = "seconds each yosys run may take (default 1800)") timeout: Int = 1800,
+           @arg(doc = "keep the Verilog and yosys files in this folder") keep: Option[String] = None,
+           @arg(doc = "sweep iterations x width over the CORDIC variants instead; writes CSV, JSON and PNG") sweep: Flag = Flag(),
+           @arg(doc = "sweep: output folder (default cost-sweep)") out: String = "cost-sweep",
+           @arg(doc = "sweep: comma-separated variants (default sincos,sincos-taper,sincos-taper-g2,asin,asin-double,asin-table; also sincos-truncate)") variants: String = "sincos,sincos-taper,sincos-taper-g2,asin,asin-double,asin-table",
+           @arg(doc = "sweep: comma-separated iteration counts (default 8,12,16)") sweepIterations: String = "8,12,16",
+           @arg(doc = "sweep: comma-separated widths (default 12,16,20)") sweepWidths: String = "12,16,20",
+           @arg(doc = "sweep: keep (n, b) with b - spread <= n <= b (default 4)") spread: Int = 4,
+           @arg(doc = "sweep: skip the measured error of the bit-accurate model") noMeasure: Flag = Flag()): Unit =
+    if (sweep.value) CostCmd.sweep(variants, sweepIterations, sweepWidths, spread, out, timeout, !noMeasure.value, json)
+    else CostCmd.run(config, design, json, timeout, keep)
+
   @main(doc = "Write the SystemVerilog of the subdivider with its ADC front end into a folder.")
   def emitSubdiv(config: SubdivConfig, @arg(doc = "output folder") out: String = "generated"): Unit = SubdivCmd.run(config, out)
 

@@ -1,0 +1,53 @@
+package moire.cli
+
+import moire.cost._
+
+/** `cost`: yosys logic cells, memory bits, multipliers and longest path of a design. */
+object CostCmd {
+  private def log(s: String): Unit = System.err.println(s"cost: $s")
+
+  def run(config: CordicConfig, design: String, json: Option[String], timeout: Int, keep: Option[String]): Unit = {
+    val d = CostDesigns.find(design).fold(e => throw new UsageError(e), identity)
+    val p = config.params
+    if (timeout < 1) throw new UsageError(s"--timeout must be at least 1 second, got $timeout")
+    if (!Yosys.available) throw new UsageError("yosys not found on PATH (install yosys 0.23 or newer)")
+    val work = keep.map(k => os.Path(k, os.pwd)).getOrElse(Cost.tempDir())
+    val r = try Cost.measure(d, p, work, timeout, log)
+    catch { case e: YosysError => throw new UsageError(e.getMessage) }
+    finally if (keep.isEmpty) os.remove.all(work)
+    print(r.text)
+    json.foreach { f =>
+      val path = os.Path(f, os.pwd)
+      os.write.over(path, ujson.write(r.json, indent = 2), createFolders = true)
+      println(s"wrote $path")
+    }
+  }
+
+  private def ints(opt: String, s: String): Seq[Int] = s.split(",").toSeq.map(_.trim).filter(_.nonEmpty).map(v =>
+    v.toIntOption.getOrElse(throw new UsageError(s"--$opt: '$v' is not an integer list like 8,12,16")))
+
+  def sweep(variants: String, iterations: String, widths: String, spread: Int, out: String, timeout: Int,
+            measure: Boolean, json: Option[String]): Unit = {
+    val vs = Variant.parse(variants).fold(e => throw new UsageError(e), identity)
+    if (vs.isEmpty) throw new UsageError("--variants: give at least one variant")
+    if (spread < 0) throw new UsageError(s"--spread must be 0 or more, got $spread")
+    if (timeout < 1) throw new UsageError(s"--timeout must be at least 1 second, got $timeout")
+    val grid = SweepGrid(vs, ints("sweep-iterations", iterations), ints("sweep-widths", widths), spread)
+    val pts = try grid.points catch {
+      case e: IllegalArgumentException => throw new UsageError("--sweep: " + e.getMessage.stripPrefix("requirement failed: "))
+    }
+    if (pts.isEmpty) throw new UsageError(s"--sweep: no (n, b) with b - $spread <= n <= b in these lists")
+    if (!Yosys.available) throw new UsageError("yosys not found on PATH (install yosys 0.23 or newer)")
+    val dir = os.Path(out, os.pwd)
+    log(s"${pts.size} configurations; results cached in ${dir / "cache"}")
+    val rows = try SweepRun.run(grid, dir, timeout, measure, log)
+    catch { case e: YosysError => throw new UsageError(e.getMessage) }
+    print(SweepRun.table(rows))
+    for (f <- SweepRun.write(rows, dir)) println(s"wrote $f")
+    json.foreach { f =>
+      val path = os.Path(f, os.pwd)
+      os.write.over(path, ujson.write(ujson.Arr(rows.map(_.json): _*), indent = 2), createFolders = true)
+      println(s"wrote $path")
+    }
+  }
+}

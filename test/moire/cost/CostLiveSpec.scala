@@ -1,0 +1,107 @@
+package moire.cost
+
+import moire.cordic.{CordicMode, CordicParams}
+import org.scalatest.flatspec.AnyFlatSpec
+import org.scalatest.matchers.should.Matchers
+
+/** yosys on small CORDICs (seconds each); cancelled where yosys is not installed. */
+class CostLiveSpec extends AnyFlatSpec with Matchers {
+  private def cordic(n: Int, b: Int, mode: CordicMode = CordicMode.SinCos) = CordicParams(mode, n, b)
+  private def measure(p: CordicParams): CostReport = {
+    assume(Yosys.available, "yosys not installed")
+    val work = os.temp.dir(prefix = "moire-cost-test-")
+    try Cost.measure(CostDesigns.find("cordic").toOption.get, p, work, 300, _ => ())
+    finally os.remove.all(work)
+  }
+
+  private lazy val small = measure(cordic(6, 10))
+  private lazy val wider = measure(cordic(6, 14))
+
+  "cost" should "count LUT cells and registers of a CORDIC, with a longest path" in {
+    small.logicCells shouldBe small.synth.total.luts + small.registers
+    // Every pipeline stage holds at least x, y and z: 3 * 10 bits over 6 iterations, plus valid bits.
+    small.registers should be >= (6L * 3 * 10)
+    small.synth.longestPathCells.get should be > 0
+    small.synth.memoryBits shouldBe 0
+    small.synth.multipliers shouldBe 0
+  }
+
+  it should "grow with the data width" in {
+    wider.logicCells should be > small.logicCells
+    wider.registers should be > small.registers
+  }
+
+  it should "write the JSON keys of the issue" in {
+    val j = small.json
+    for (k <- Seq("logic_cells", "registers", "memory_bits", "longest_path_cells", "error_bound", "latency", "results_per_clock"))
+      j.obj.keySet should contain(k)
+    j("logic_cells").num shouldBe small.logicCells.toDouble
+    j("latency").num shouldBe cordic(6, 10).latency.toDouble
+  }
+
+  it should "stop a yosys run that exceeds its time limit with one line" in {
+    assume(Yosys.available, "yosys not installed")
+    val work = os.temp.dir(prefix = "moire-cost-test-")
+    try {
+      val (top, files) = Synth.emit(() => new moire.cordic.Cordic(cordic(12, 16)), work / "rtl")
+      val e = the[YosysError] thrownBy Yosys.run(top, files, work / "flat", flatten = true, timeoutSeconds = 1)
+      e.getMessage should include("did not finish")
+      e.getMessage.linesIterator.size shouldBe 1
+    } finally os.remove.all(work)
+  }
+
+  it should "list the modules of a hierarchical design and add their instances up" in {
+    assume(Yosys.available, "yosys not installed")
+    val work = os.temp.dir(prefix = "moire-cost-test-")
+    val inner = cordic(4, 8)
+    val pair = CostDesign("pair", "two CORDICs", _ => new TwoCordics(inner), _ => None)
+    val r = try Cost.measure(pair, inner, work, 300, _ => ()) finally os.remove.all(work)
+    val cm = r.synth.modules.find(_.name == inner.moduleName).get
+    r.synth.modules.map(_.name) should contain allOf ("TwoCordics", inner.moduleName)
+    r.registers should be >= 2 * cm.registers
+    r.logicCells should be >= 2 * cm.logicCells
+    r.synth.longestPathCells.get should be > 0
+    r.json("modules").arr.size shouldBe 2
+    r.text should include(inner.moduleName)
+  }
+
+  "cost --sweep" should "write CSV, JSON and PNG with the Pareto front marked, and reuse its cache" in {
+    assume(Yosys.available, "yosys not installed")
+    val out = os.temp.dir(prefix = "moire-sweep-test-")
+    try {
+      val grid = SweepGrid(Variant.all.filter(v => v.name == "sincos" || v.name == "asin-double"), Seq(6, 8), Seq(10), 4)
+      val rows = SweepRun.run(grid, out, 300, measure = true, _ => ())
+      rows.size shouldBe 4
+      val files = SweepRun.write(rows, out)
+      files.map(_.last) shouldBe Seq("sweep.csv", "sweep.json", "pareto-sin.png", "pareto-asin.png")
+      os.read.lines(out / "sweep.csv").size shouldBe 5
+      os.read.bytes(out / "pareto-sin.png").take(4).toSeq shouldBe Seq(0x89.toByte, 'P'.toByte, 'N'.toByte, 'G'.toByte)
+      val json = ujson.read(os.read(out / "sweep.json")).arr
+      json.size shouldBe 4
+      for (r <- json) Seq("logic_cells", "registers", "memory_bits", "longest_path_cells", "error_bound", "pareto")
+        .foreach(k => r.obj.keySet should contain(k))
+      for (r <- rows) {
+        val dominated = rows.exists(o => o.function == r.function && o.logicCells <= r.logicCells && o.errorBound <= r.errorBound &&
+          (o.logicCells < r.logicCells || o.errorBound < r.errorBound))
+        r.pareto shouldBe !dominated
+        r.measuredError.get should be <= r.errorBound
+      }
+      // More iterations at the same width cost more cells.
+      val sin = rows.filter(_.variant == "sincos").sortBy(_.p.iterations)
+      sin(1).logicCells should be > sin(0).logicCells
+      SweepRun.synth(cordic(6, 10), out / "cache", 300, _ => ())._2 shouldBe true
+    } finally os.remove.all(out)
+  }
+}
+
+/** Two CORDICs side by side: a design with a hierarchy. */
+class TwoCordics(p: CordicParams) extends chisel3.Module {
+  import chisel3._
+  val io = IO(new Bundle { val z = Input(SInt(p.angleBits.W)); val y = Output(SInt(p.width.W)) })
+  private val a = Module(new moire.cordic.Cordic(p))
+  private val b = Module(new moire.cordic.Cordic(p))
+  Seq(a, b).foreach { c => c.io.in.valid := true.B; c.io.in.bits.x := 0.S; c.io.in.bits.y := 0.S }
+  a.io.in.bits.z := io.z
+  b.io.in.bits.z := -io.z
+  io.y := RegNext(a.io.out.bits.y ^ b.io.out.bits.x)
+}
