@@ -7,8 +7,7 @@ import moire.signal.AdcFormat
 /** Elaboration, Verilog emission and the Quartus project of the DE2-115 board in one place. */
 object De2115 {
   /** firtool options: plain Verilog (no automatic locals, no packed arrays) that yosys and Quartus read. */
-  val firtoolOpts: Array[String] = Array("-disable-all-randomization", "-strip-debug-info",
-    "--lowering-options=disallowLocalVariables,disallowPackedArrays")
+  val firtoolOpts: Array[String] = moire.cli.SubdivCmd.firtoolOpts
 
   def top(p: BoardParams): RawModule = new De2115Top(p)
 
@@ -18,16 +17,7 @@ object De2115 {
   def emitVerilog(p: BoardParams, dir: os.Path): Seq[os.Path] = {
     os.makeDir.all(dir)
     val sv = ChiselStage.emitSystemVerilog(top(p), Array.empty[String], firtoolOpts)
-    // firtool appends black-box resources after "// ----- 8< ----- FILE "name" ----- 8< -----" lines.
-    val marker = """(?m)^// ----- 8< ----- FILE "(.*)" ----- 8< -----$""".r
-    val cuts = marker.findAllMatchIn(sv).toSeq
-    val parts = (s"${p.topName}.sv", 0) +: cuts.map(m => (os.RelPath(m.group(1)).last, m.end))
-    val ends = cuts.map(_.start) :+ sv.length
-    parts.zip(ends).collect { case ((name, from), to) if name.endsWith(".sv") || name.endsWith(".v") =>
-      val f = dir / name
-      os.write.over(f, sv.substring(from, to).dropWhile(_ == '\n'))
-      f
-    }
+    moire.cli.Emit.writeSplit(sv, s"${p.topName}.sv", dir)
   }
 
   /** Writes a complete Quartus project into `dir`: Verilog, .qsf, .sdc, .qpf and flash.sh. */

@@ -25,7 +25,9 @@ object CostDesigns {
     CostDesign("corrected", "ADC front end + adaptive corrector + subdivider (M = 1024)",
       _ => new CorrectedSubdivider(CorrectedSubdivParams()), _ => Some(CorrectedSubdivParams().latency)),
     CostDesign("harmonic", "turntable harmonic compensator, m = 4 parallel CORDICs (seed 001)",
-      _ => new HarmonicCompensator(HarmonicParams()), _ => Some(HarmonicParams().latency))
+      _ => new HarmonicCompensator(HarmonicParams()), _ => Some(HarmonicParams().latency)),
+    CostDesign("board-de2-115", "DE2-115 board top: two AD9226 captures, subdivider, UART stream and registers, encoder I/O",
+      _ => moire.board.de2115.De2115.top(moire.board.de2115.BoardParams()), _ => None)
   )
 
   def find(name: String): Either[String, CostDesign] =

@@ -33,7 +33,7 @@ final case class CostReport(design: String, what: String, synth: SynthResult, la
     val o = ujson.Obj(
       "design" -> design, "top" -> synth.top,
       "logic_cells" -> ujson.Num(logicCells.toDouble), "registers" -> ujson.Num(registers.toDouble), "luts" -> ujson.Num(synth.total.luts.toDouble),
-      "memory_bits" -> ujson.Num(synth.memoryBits.toDouble), "m9k_blocks" -> ujson.Num(synth.total.m9k.toDouble), "multipliers" -> ujson.Num(synth.multipliers.toDouble),
+      "memory_bits" -> ujson.Num(synth.memoryBits.toDouble), "m9k_blocks" -> ujson.Num(synth.m9kBlocks.toDouble), "block_ram_bits" -> ujson.Num(synth.blockRamBits.toDouble), "multipliers" -> ujson.Num(synth.multipliers.toDouble),
       "longest_path_cells" -> synth.longestPathCells.map(n => ujson.Num(n)).getOrElse(ujson.Null),
       "latency" -> latency.map(n => ujson.Num(n)).getOrElse(ujson.Null),
       "yosys_seconds" -> math.round(synth.seconds * 10) / 10.0,
@@ -56,12 +56,12 @@ final case class CostReport(design: String, what: String, synth: SynthResult, la
     b ++= s"$design: $what\n  top ${synth.top}, yosys 0.23 synth_intel -family cycloneive (${f"${synth.seconds}%.0f"} s)\n"
     if (synth.modules.nonEmpty) {
       val w = synth.modules.map(_.name.length).max
-      b ++= s"  ${"module".padTo(w, ' ')} " + f"${"logic cells"}%11s ${"LUTs"}%7s ${"FFs"}%7s ${"M9K"}%5s ${"mults"}%5s  (one instance each)\n"
+      b ++= s"  ${"module".padTo(w, ' ')} " + f"${"logic cells"}%11s ${"LUTs"}%7s ${"FFs"}%7s ${"RAMs"}%5s ${"mults"}%5s  (one instance each)\n"
       for (m <- synth.modules.sortBy(-_.logicCells))
         b ++= s"  ${m.name.padTo(w, ' ')} " + f"${m.logicCells}%11d ${m.luts}%7d ${m.registers}%7d ${m.m9k}%5d ${m.multCells}%5d\n"
     }
     b ++= f"  total: ${t.logicCells} logic cells (${t.luts} LUTs + ${t.registers} registers) = ${Ep4ce115.pct(t.logicCells, Ep4ce115.logicElements)} of the EP4CE115's ${Ep4ce115.logicElements} LEs\n"
-    b ++= f"  memory: ${synth.memoryBits} bits inferred (${t.m9k} M9K blocks; the rest is in logic) = ${Ep4ce115.pct(synth.memoryBits, Ep4ce115.memoryBits)} of ${Ep4ce115.memoryBits}; " +
+    b ++= f"  memory: ${synth.memoryBits} bits inferred, ${synth.blockRamBits} of them in block RAM (${synth.m9kBlocks} of 432 M9K blocks; the rest in logic) = ${Ep4ce115.pct(synth.blockRamBits, Ep4ce115.memoryBits)} of ${Ep4ce115.memoryBits} bits; " +
       f"multipliers: ${synth.multipliers} of ${Ep4ce115.multipliers18} 18x18 (${Ep4ce115.pct(synth.multipliers, Ep4ce115.multipliers18)})\n"
     b ++= s"  longest path between registers: ${synth.longestPathCells.map(n => s"$n LUT cells").getOrElse("not measured")}\n"
     latency.foreach(l => b ++= s"  latency $l clocks${if (cordic.isDefined) ", one result per clock" else ""}\n")

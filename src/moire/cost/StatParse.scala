@@ -53,6 +53,31 @@ object StatParse {
     total
   }
 
+  private val memParam = """\s*parameter \\(SIZE|WIDTH) (\d+)\s*""".r
+  /** M9K aspect ratios of Cyclone IV E (depth x width). */
+  private val m9kShapes = Seq(8192 -> 1, 4096 -> 2, 2048 -> 4, 1024 -> 9, 512 -> 18, 256 -> 36)
+  /** M9K blocks for a depth x width memory: the best aspect ratio, ceil(depth / d) * ceil(width / w). */
+  def m9kBlocks(depth: Long, width: Long): Long =
+    m9kShapes.map { case (d, w) => ((depth + d - 1) / d) * ((width + w - 1) / w) }.min
+
+  /** (bits, M9K blocks) of the memory black boxes in a `dump` of `Yosys.m9kCell` cells. */
+  def blockRam(dump: String): (Long, Long) = {
+    var bits = 0L; var blocks = 0L; var size = 0L; var width = 0L; var inMem = false
+    def flush(): Unit = if (inMem) { bits += size * width; blocks += m9kBlocks(size, width); inMem = false }
+    dump.linesIterator.foreach { l =>
+      val t = l.trim
+      if (t.startsWith("cell ")) { flush(); inMem = true; size = 0; width = 0 }
+      else if (t == "end") flush()
+      else l match {
+        case memParam("SIZE", v) => size = v.toLong
+        case memParam("WIDTH", v) => width = v.toLong
+        case _ =>
+      }
+    }
+    flush()
+    (bits, blocks)
+  }
+
   private val ltpLine = """Longest topological path in \S+ \(length=(-?\d+)\)""".r.unanchored
   /** LUT cells on the longest path of an `ltp` run (None when yosys found none). */
   def longestPath(text: String): Option[Int] =

@@ -11,10 +11,8 @@ object Synth {
   val firtoolOpts: Array[String] = moire.cli.SubdivCmd.firtoolOpts
 
   def emit(gen: () => RawModule, dir: os.Path): (String, Seq[os.Path]) = {
-    os.makeDir.all(dir)
     var top = ""
-    ChiselStage.emitSystemVerilogFile({ val m = gen(); top = m.desiredName; m }, Array("--target-dir", dir.toString), firtoolOpts)
-    val files = os.walk(dir).filter(f => os.isFile(f) && Seq(".v", ".sv").exists(f.last.endsWith)).sorted
-    (top, files)
+    val sv = ChiselStage.emitSystemVerilog({ val m = gen(); top = m.desiredName; m }, Array.empty[String], firtoolOpts)
+    (top, moire.cli.Emit.writeSplit(sv, s"$top.sv", dir))
   }
 }

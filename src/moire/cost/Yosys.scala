@@ -8,8 +8,10 @@ final case class ModuleCells(name: String, cells: Map[String, Long]) {
   def registers: Long = cells.getOrElse("dffeas", 0L)
   /** Logic cells as the issue counts them: LUT cells plus flip-flops. */
   def logicCells: Long = luts + registers
-  /** M9K block RAMs (yosys maps each to an `altsyncram`). */
-  def m9k: Long = cells.collect { case (t, n) if t == "altsyncram" || t.endsWith("_ram_block") => n }.sum
+  /** Memories in block RAM: `altsyncram` cells, or memories with a synchronous read that [[Yosys]]
+    * keeps as `Yosys.m9kCell` black boxes (each takes one or more M9K blocks).
+    */
+  def m9k: Long = cells.collect { case (t, n) if t == "altsyncram" || t.endsWith("_ram_block") || t == Yosys.m9kCell => n }.sum
   /** Multiplications left as black boxes (see [[Yosys]]); each takes one or more 18 x 18 blocks. */
   def multCells: Long = cells.getOrElse(Yosys.multCell, 0L)
 }
@@ -18,9 +20,12 @@ final case class ModuleCells(name: String, cells: Map[String, Long]) {
   * @param memoryBits bits of the memories yosys inferred before mapping
   * @param multipliers 18 x 18 multiplier blocks the design's multiplications need
   * @param longestPathCells most LUT cells on a path between registers
+  * @param blockRamBits bits of the memories kept for block RAM (synchronous read)
+  * @param m9kBlocks M9K blocks those memories need (best M9K aspect ratio per memory)
   */
 final case class SynthResult(top: String, total: ModuleCells, modules: Seq[ModuleCells], memoryBits: Long,
-                             multipliers: Long, longestPathCells: Option[Int], seconds: Double)
+                             multipliers: Long, longestPathCells: Option[Int], seconds: Double,
+                             blockRamBits: Long = 0L, m9kBlocks: Long = 0L)
 
 /** A yosys failure, said in one line. */
 final class YosysError(msg: String) extends Exception(msg)
@@ -30,9 +35,13 @@ final class YosysError(msg: String) extends Exception(msg)
   * yosys 0.23 has no DSP mapping for Cyclone IV: a `$mul` would become thousands of LUTs (and take
   * many minutes). Like Quartus, we put each multiplication into 18 x 18 multiplier blocks instead:
   * the `$mul` cells become black boxes, counted as ceil(a / 18) * ceil(b / 18) blocks, not as LUTs.
+  * Nor does it map block RAM for Cyclone IV E: a memory with a synchronous read (which M9K can hold,
+  * as Quartus would place it) becomes a black box counted in M9K blocks; asynchronous-read memories
+  * go to logic, as they would in Quartus (memories with one read port; more ports go to logic).
   */
 object Yosys {
   val multCell = "moire_mult18"
+  val m9kCell = "$__moire_m9k"
   private val multStub =
     s"""(* blackbox *) module $multCell #(parameter A_SIGNED = 0, B_SIGNED = 0, A_WIDTH = 1, B_WIDTH = 1, Y_WIDTH = 1)
        |  (input [A_WIDTH-1:0] A, input [B_WIDTH-1:0] B, output [Y_WIDTH-1:0] Y); endmodule
@@ -48,10 +57,19 @@ object Yosys {
   def script(top: String, files: Seq[os.Path], flatten: Boolean): String = Seq(
     Seq(s"read_verilog -sv ${files.map(f => "\"" + f + "\"").mkString(" ")}",
       "read_verilog -lib mult_stub.v",
+      // Vendor PLL (board tops) as a black box: a hard block, no logic cells.
+      "read_verilog -lib -DNO_CLEARBOX +/intel/common/altpll_bb.v",
       s"hierarchy -check -top $top",
       "proc"),
-    if (flatten) Seq("flatten") else Nil,
+    // Memories sit in their own firtool modules with separate read and write clock ports; inline
+    // those modules into their parents so that yosys sees one clock and can spot a synchronous read.
+    if (flatten) Seq("flatten", "opt_clean")
+    else Seq("setattr -mod -set keep_hierarchy 1 *", "setattr -mod -unset keep_hierarchy m:* %m", "flatten",
+      "setattr -mod -unset keep_hierarchy *", "opt_clean"),
     Seq("tee -q -o pre.json stat -json",
+      "memory -nomap",
+      s"chtype -set $m9kCell t:$$mem_v2 r:RD_CLK_ENABLE=1'1 %i",
+      s"tee -q -o m9k.txt dump t:$m9kCell",
       "opt_expr", "opt_clean", "wreduce", "opt_clean",
       "tee -q -o mul.txt dump t:$mul",
       s"chtype -set $multCell t:$$mul",
@@ -95,6 +113,7 @@ object Yosys {
     val memBits = StatParse.memoryBits(os.read(work / "pre.json"))
     val mults = StatParse.multBlocks(os.read(work / "mul.txt"))
     val ltp = StatParse.longestPath(os.read(work / "ltp.txt"))
-    SynthResult(top, total, if (flatten) Nil else modules, memBits, mults, ltp, seconds)
+    val (ramBits, m9k) = StatParse.blockRam(os.read(work / "m9k.txt"))
+    SynthResult(top, total, if (flatten) Nil else modules, memBits, mults, ltp, seconds, ramBits, m9k)
   }
 }

@@ -92,6 +92,21 @@ class CostLiveSpec extends AnyFlatSpec with Matchers {
       SweepRun.synth(cordic(6, 10), out / "cache", 300, _ => ())._2 shouldBe true
     } finally os.remove.all(out)
   }
+
+  it should "put a synchronous-read memory in M9K blocks and an asynchronous one in logic" in {
+    assume(Yosys.available, "yosys not installed")
+    def run(sync: Boolean) = {
+      val work = os.temp.dir(prefix = "moire-cost-test-")
+      try { val (top, files) = RamProbe.emit(sync, work / "rtl"); Yosys.run(top, files, work / "synth", flatten = true, 300) }
+      finally os.remove.all(work)
+    }
+    val s = run(sync = true); val a = run(sync = false)
+    s.blockRamBits shouldBe 256L * 40
+    s.m9kBlocks shouldBe 2
+    a.blockRamBits shouldBe 0
+    a.memoryBits shouldBe 256L * 40
+    a.total.logicCells should be > (10 * s.total.logicCells)
+  }
 }
 
 /** Two CORDICs side by side: a design with a hierarchy. */
@@ -104,4 +119,27 @@ class TwoCordics(p: CordicParams) extends chisel3.Module {
   a.io.in.bits.z := io.z
   b.io.in.bits.z := -io.z
   io.y := RegNext(a.io.out.bits.y ^ b.io.out.bits.x)
+
+}
+
+/** A 256 x 40 memory with a synchronous or an asynchronous read port. */
+object RamProbe {
+  import chisel3._
+  class Ram(sync: Boolean) extends Module {
+    override def desiredName = if (sync) "RamProbeSync" else "RamProbeAsync"
+    val io = IO(new Bundle {
+      val wen = Input(Bool()); val waddr = Input(UInt(8.W)); val wdata = Input(UInt(40.W))
+      val raddr = Input(UInt(8.W)); val rdata = Output(UInt(40.W))
+    })
+    if (sync) {
+      val m = SyncReadMem(256, UInt(40.W))
+      when(io.wen) { m.write(io.waddr, io.wdata) }
+      io.rdata := m.read(io.raddr)
+    } else {
+      val m = Mem(256, UInt(40.W))
+      when(io.wen) { m.write(io.waddr, io.wdata) }
+      io.rdata := m(io.raddr)
+    }
+  }
+  def emit(sync: Boolean, dir: os.Path): (String, Seq[os.Path]) = Synth.emit(() => new Ram(sync), dir)
 }

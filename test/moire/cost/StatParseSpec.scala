@@ -50,4 +50,11 @@ class StatParseSpec extends AnyFlatSpec with Matchers {
     StatParse.longestPath("Longest topological path in top (length=-1):") shouldBe None
     StatParse.longestPath("nothing") shouldBe None
   }
+
+  "m9kBlocks" should "pick the best M9K aspect ratio" in {
+    StatParse.m9kBlocks(256, 96) shouldBe 3   // 256 x 36 three times
+    StatParse.m9kBlocks(8192, 1) shouldBe 1
+    StatParse.m9kBlocks(1024, 10) shouldBe 2  // 1024 x 9 twice
+    StatParse.m9kBlocks(4, 40) shouldBe 2
+  }
 }
