@@ -1,42 +1,79 @@
 // moire: Chisel generators for optical-grating signal processing.
+// Layers depend one way: hw <- boards <- host <- cli; the root project holds the tests and runs the cli.
 ThisBuild / scalaVersion := "2.13.15"
 ThisBuild / version := "0.1.0"
 ThisBuild / organization := "io.github.moire"
 
 val chiselVersion = "6.7.0"
+// chiseltest 6.0.0 asks for chisel 6.1.0, which is not on Maven Central: everyone gets 6.7.0.
+ThisBuild / dependencyOverrides += "org.chipsalliance" %% "chisel" % chiselVersion
+
+lazy val common = Seq(
+  addCompilerPlugin("org.chipsalliance" % "chisel-plugin" % chiselVersion cross CrossVersion.full),
+  scalacOptions ++= Seq("-deprecation", "-feature", "-unchecked", "-language:reflectiveCalls", "-Ymacro-annotations")
+)
+
+/** A layer whose Scala lives in `dir` (no test sources of its own: tests are in the root project). */
+def layer(id: String, dir: String) = Project(id, file(dir))
+  .settings(common)
+  .settings(
+    Compile / scalaSource := baseDirectory.value,
+    Compile / javaSource := baseDirectory.value,
+    Compile / resourceDirectory := baseDirectory.value / "resources",
+    Test / unmanagedSourceDirectories := Nil,
+    Test / unmanagedResourceDirectories := Nil,
+    target := (ThisBuild / baseDirectory).value / "target" / id
+  )
+
+/** CORDIC, datapaths, their golden models, io RTL, the stream protocol, fixed point, ADC formats, the emitter. */
+lazy val hw = layer("hw", "src/hw").settings(
+  libraryDependencies ++= Seq(
+    "org.chipsalliance" %% "chisel" % chiselVersion,
+    "com.lihaoyi" %% "upickle" % "3.1.0"
+  )
+)
+
+/** Board harnesses, pin tables, vendor project writers. */
+lazy val boards = layer("boards", "boards").dependsOn(hw).settings(
+  libraryDependencies += "com.lihaoyi" %% "mainargs" % "0.7.6"
+)
+
+/** Host tools: recording, stream codec and recorder, replay, explain, cost, the papers' tables, calibration. */
+lazy val host = layer("host", "src/host").dependsOn(boards).settings(
+  libraryDependencies ++= Seq(
+    "org.hipparchus" % "hipparchus-core" % "4.0.3",
+    "org.hipparchus" % "hipparchus-stat" % "4.0.3",
+    "org.hipparchus" % "hipparchus-fitting" % "4.0.3",
+    "org.hipparchus" % "hipparchus-optim" % "4.0.3",
+    "org.hipparchus" % "hipparchus-fft" % "4.0.3",
+    "org.knowm.xchart" % "xchart" % "3.8.8",
+    "me.tongfei" % "progressbar" % "0.10.2",
+    "com.fazecast" % "jSerialComm" % "2.11.4"
+  )
+)
+
+/** The command line: parses options, calls the libraries, turns their errors into one line and an exit code. */
+lazy val cli = layer("cli", "src/cli").dependsOn(host).settings(
+  libraryDependencies += "com.lihaoyi" %% "mainargs" % "0.7.6"
+)
 
 lazy val root = (project in file("."))
+  .aggregate(hw, boards, host, cli)
+  .dependsOn(cli)
+  .settings(common)
   .settings(
     name := "moire",
-    Compile / scalaSource := baseDirectory.value / "src",
-    Compile / javaSource := baseDirectory.value / "src",
-    Compile / resourceDirectory := baseDirectory.value / "src" / "resources",
-    // Board wrappers live apart from the designs: Scala under boards/, vendor Verilog under boards/resources.
-    Compile / unmanagedSourceDirectories += baseDirectory.value / "boards",
-    Compile / unmanagedResourceDirectories += baseDirectory.value / "boards" / "resources",
+    Compile / unmanagedSourceDirectories := Nil,
+    Compile / unmanagedResourceDirectories := Nil,
     Test / scalaSource := baseDirectory.value / "test",
     Test / javaSource := baseDirectory.value / "test",
     Test / resourceDirectory := baseDirectory.value / "test" / "resources",
     libraryDependencies ++= Seq(
-      "org.chipsalliance" %% "chisel" % chiselVersion,
-      "com.lihaoyi" %% "mainargs" % "0.7.6",
-      "com.lihaoyi" %% "upickle" % "3.1.0",
-      "org.hipparchus" % "hipparchus-core" % "4.0.3",
-      "org.hipparchus" % "hipparchus-stat" % "4.0.3",
-      "org.hipparchus" % "hipparchus-fitting" % "4.0.3",
-      "org.hipparchus" % "hipparchus-optim" % "4.0.3",
-      "org.hipparchus" % "hipparchus-fft" % "4.0.3",
-      "org.knowm.xchart" % "xchart" % "3.8.8",
-      "me.tongfei" % "progressbar" % "0.10.2",
-      "com.fazecast" % "jSerialComm" % "2.11.4",
-      // Compile scope: `bench` measures chiseltest peek/poke from the CLI.
-      "edu.berkeley.cs" %% "chiseltest" % "6.0.0",
+      "edu.berkeley.cs" %% "chiseltest" % "6.0.0" % Test,
       "org.scalatest" %% "scalatest" % "3.2.19" % Test,
       "org.scalatestplus" %% "scalacheck-1-18" % "3.2.19.0" % Test,
       "org.scalacheck" %% "scalacheck" % "1.18.1" % Test
     ),
-    addCompilerPlugin("org.chipsalliance" % "chisel-plugin" % chiselVersion cross CrossVersion.full),
-    scalacOptions ++= Seq("-deprecation", "-feature", "-unchecked", "-language:reflectiveCalls", "-Ymacro-annotations"),
     Compile / mainClass := Some("moire.cli.Main"),
     run / fork := true,
     run / outputStrategy := Some(StdoutOutput),

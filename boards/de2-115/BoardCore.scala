@@ -3,7 +3,7 @@ package moire.board.de2115
 import chisel3._
 import chisel3.util._
 import moire.chain.CorrectedSubdivider
-import moire.harmonic.{QuadratureCounter, QuadratureParams}
+import moire.io.{QuadratureCounter, QuadratureParams}
 import moire.io._
 import moire.signal.AdcFormat
 import moire.stream.Registers

@@ -1,24 +1,17 @@
 package moire.board.de2115
 
 import chisel3.RawModule
-import circt.stage.ChiselStage
+import moire.emit.{Emit, Target}
 import moire.signal.AdcFormat
 
 /** Elaboration, Verilog emission and the Quartus project of the DE2-115 board in one place. */
 object De2115 {
-  /** firtool options: plain Verilog (no automatic locals, no packed arrays) that yosys and Quartus read. */
-  val firtoolOpts: Array[String] = moire.cli.SubdivCmd.firtoolOpts
-
   def top(p: BoardParams): RawModule = new De2115Top(p)
 
   /** Writes the SystemVerilog of the board (and the PLL Verilog when used) into `dir`; returns the
     * Verilog files (top first).
     */
-  def emitVerilog(p: BoardParams, dir: os.Path): Seq[os.Path] = {
-    os.makeDir.all(dir)
-    val sv = ChiselStage.emitSystemVerilog(top(p), Array.empty[String], firtoolOpts)
-    moire.cli.Emit.writeSplit(sv, s"${p.topName}.sv", dir)
-  }
+  def emitVerilog(p: BoardParams, dir: os.Path): Seq[os.Path] = Emit.write(top(p), dir, Target.Verilog)._2
 
   /** Writes a complete Quartus project into `dir`: Verilog, .qsf, .sdc, .qpf and flash.sh. */
   def writeProject(p: BoardParams, dir: os.Path): Seq[os.Path] = {

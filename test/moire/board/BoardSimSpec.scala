@@ -89,7 +89,7 @@ class BoardSimSpec extends AnyFlatSpec with ChiselScalatestTester {
       // ---- encoder inputs: 37 steps up, 12 down, Z at count 30; glitches shorter than the filter ----
       val hold = 24
       def levels(n: Long) = Quadrature(n)
-      def Quadrature(n: Long) = moire.harmonic.Quadrature.levels(n)
+      def Quadrature(n: Long) = moire.io.Quadrature.levels(n)
       var count = 0L
       def setAB(n: Long, z: Boolean = false): Unit = { val (a, bb) = levels(n); b.enc = (a, bb, z) }
       def glitchAll(): Unit = { // a staggered A/B glitch that would count +4 if it got through, and a Z glitch

@@ -1,6 +1,6 @@
 package moire.cordic
 
-import moire.cli.Emit
+import moire.emit.{Emit, Target}
 import org.scalatest.flatspec.AnyFlatSpec
 import scala.sys.process._
 
@@ -13,7 +13,7 @@ class EmitLintSpec extends AnyFlatSpec {
       TaperFigures.lean)
     for (p <- configs) {
       val dir = os.temp.dir()
-      val sv = Emit.cordic(p, dir.toString)
+      val sv = Emit.write(new Cordic(p), os.Path(dir.toString, os.pwd), Target.SystemVerilog)._2.head
       val log = new StringBuilder
       val code = Seq("verilator", "--lint-only", "-Wno-fatal", "-Wno-WIDTH", "-Wno-DECLFILENAME", "-Wno-UNUSED", sv.toString)
         .!(ProcessLogger(l => log.append(l).append('\n'), l => log.append(l).append('\n')))

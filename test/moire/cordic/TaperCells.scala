@@ -8,7 +8,7 @@ import scala.sys.process._
   * `synth_intel -family cycloneive`. Run: ./sbt "Test/runMain moire.cordic.TaperCells [out folder]"
   */
 object TaperCells {
-  /** Plain Verilog that yosys 0.23 reads (as moire.cli.SubdivCmd.firtoolOpts). */
+  /** Plain Verilog that yosys 0.23 reads (as moire.emit.Target.Verilog.opts). */
   val firtoolOpts: Array[String] = Array("-disable-all-randomization", "-strip-debug-info",
     "--lowering-options=disallowLocalVariables,disallowPackedArrays")
 

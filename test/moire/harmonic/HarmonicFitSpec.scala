@@ -1,6 +1,6 @@
 package moire.harmonic
 
-import moire.paper.PaperBounds
+import moire.cordic.PaperBounds
 import org.scalatest.flatspec.AnyFlatSpec
 
 /** The harmonic fit recovers known coefficients; its register words drive the model to the fitted f. */

@@ -1,7 +1,8 @@
 package moire.harmonic
 
 import circt.stage.ChiselStage
-import moire.cli.Emit
+import moire.io.{QuadratureCounter, QuadratureParams}
+import moire.emit.{Emit, Target}
 import moire.cordic.SimSupport
 import org.scalatest.flatspec.AnyFlatSpec
 import scala.sys.process._
@@ -17,7 +18,7 @@ class HarmonicLintSpec extends AnyFlatSpec {
       QuadratureParams().moduleName -> (() => new QuadratureCounter(QuadratureParams())))
     for ((name, gen) <- designs) {
       val dir = os.temp.dir()
-      ChiselStage.emitSystemVerilogFile(gen(), Array("--target-dir", dir.toString, "--split-verilog"), Emit.firtoolOpts)
+      ChiselStage.emitSystemVerilogFile(gen(), Array("--target-dir", dir.toString, "--split-verilog"), Target.SystemVerilog.opts)
       val files = os.walk(dir).filter(_.ext == "sv").map(_.toString)
       val log = new StringBuilder
       val code = (Seq("verilator", "--lint-only", "-Wno-fatal", "-Wno-WIDTH", "-Wno-DECLFILENAME", "-Wno-UNUSED", "--top-module", name) ++ files)

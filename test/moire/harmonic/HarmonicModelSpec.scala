@@ -36,7 +36,7 @@ class HarmonicModelSpec extends AnyFlatSpec {
   }
 
   "The eq. 19 bound" should "cover the measured eq. 19 error" in {
-    val b = HarmonicBound.arcsec(HarmonicParams(), moire.paper.PaperBounds.seed001Eq19.map(c => math.abs(c._2)).sum)
+    val b = HarmonicBound.arcsec(HarmonicParams(), moire.cordic.PaperBounds.seed001Eq19.map(c => math.abs(c._2)).sum)
     val m = HarmonicReproduce.modelMax()
     info(f"measured $m%.4e arcsec, our bound $b%.4e arcsec (worst-case rounding per step), paper P_max 1.19e-3")
     assert(m < b)

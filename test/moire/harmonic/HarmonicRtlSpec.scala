@@ -3,7 +3,7 @@ package moire.harmonic
 import chisel3._
 import chiseltest._
 import moire.cordic.SimSupport
-import moire.paper.PaperBounds
+import moire.cordic.PaperBounds
 import org.scalatest.flatspec.AnyFlatSpec
 
 /** RTL against the bit-accurate model, bit for bit, over a sweep of configurations, and seed 001

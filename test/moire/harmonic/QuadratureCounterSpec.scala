@@ -1,6 +1,7 @@
 package moire.harmonic
 
 import chisel3._
+import moire.io._
 import chiseltest._
 import moire.cordic.SimSupport
 import org.scalatest.flatspec.AnyFlatSpec

@@ -1,7 +1,7 @@
 package moire.quadcomp
 
 import circt.stage.ChiselStage
-import moire.cli.Emit
+import moire.emit.{Emit, Target}
 import moire.cordic.SimSupport
 import org.scalatest.flatspec.AnyFlatSpec
 import scala.sys.process._
@@ -12,7 +12,7 @@ class QuadCompLintSpec extends AnyFlatSpec {
     SimSupport.requireTool(this, "verilator")
     for (p <- Seq(QuadCompParams(), QuadCompParams(iterations = 12, width = 16, averageLog2 = 0, fusePeaks = true))) {
       val dir = os.temp.dir()
-      ChiselStage.emitSystemVerilogFile(new QuadComp(p), Array("--target-dir", dir.toString), Emit.firtoolOpts)
+      ChiselStage.emitSystemVerilogFile(new QuadComp(p), Array("--target-dir", dir.toString), Target.SystemVerilog.opts)
       val sv = dir / s"${p.moduleName}.sv"
       assert(os.exists(sv), s"no ${sv.last} in ${os.list(dir).map(_.last)}")
       val log = new StringBuilder

@@ -1,6 +1,6 @@
 package moire.recording
 
-import moire.cli.UsageError
+import moire.MoireError
 import moire.signal.{Adc, AdcFormat}
 import org.scalatest.flatspec.AnyFlatSpec
 import org.scalatest.matchers.should.Matchers
@@ -29,7 +29,7 @@ class RecordingSpec extends AnyFlatSpec with Matchers {
 
   it should "reject malformed input with one message naming file, line and problem" in {
     def bad(lines: IndexedSeq[String], expect: String): Unit = {
-      val e = intercept[UsageError](Recording.parse("f.csv", lines))
+      val e = intercept[MoireError](Recording.parse("f.csv", lines))
       e.getMessage should startWith("f.csv:")
       e.getMessage should include(expect)
       e.getMessage.linesIterator.size shouldBe 1
@@ -52,8 +52,8 @@ class RecordingSpec extends AnyFlatSpec with Matchers {
   "Calibration" should "reject duplicate angles and bad directions, naming the line" in {
     val c = IndexedSeq("# moire-calibration v1", "angle_deg,error_arcsec,direction", "0,1.5,cw", "10,2,cw", "0,1,ccw", "20,1,cw")
     Calibration.parse("c.csv", c).hasDirection shouldBe true
-    intercept[UsageError](Calibration.parse("c.csv", c :+ "10,3,cw")).getMessage should include("c.csv:7: angle 10.0 repeats line 4 (cw)")
-    intercept[UsageError](Calibration.parse("c.csv", c :+ "30,3,up")).getMessage should include("c.csv:7: direction 'up'")
-    intercept[UsageError](Calibration.parse("c.csv", c :+ "30,nan,cw")).getMessage should include("c.csv:7: error_arcsec 'nan' is not a number")
+    intercept[MoireError](Calibration.parse("c.csv", c :+ "10,3,cw")).getMessage should include("c.csv:7: angle 10.0 repeats line 4 (cw)")
+    intercept[MoireError](Calibration.parse("c.csv", c :+ "30,3,up")).getMessage should include("c.csv:7: direction 'up'")
+    intercept[MoireError](Calibration.parse("c.csv", c :+ "30,nan,cw")).getMessage should include("c.csv:7: error_arcsec 'nan' is not a number")
   }
 }

@@ -1,5 +1,7 @@
 package moire.replay
 
+import moire.explain.BoardCheck
+
 import moire.cordic.SimSupport
 import moire.signal.{Adc, Motion, SignalParams, SignalSim}
 import moire.subdiv.{SubdivModel, SubdivSample}

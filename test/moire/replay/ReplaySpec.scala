@@ -66,7 +66,7 @@ class ReplayCorrectedSpec extends AnyFlatSpec {
 
   "replay of the corrected chain" should "equal its clock-level model on every row" in {
     SimSupport.requireTool(this, "verilator")
-    val d = ReplayDesign("corrected", moire.cli.SubdivConfig())
+    val d = ReplayDesign("corrected", moire.options.SubdivConfig())
     val s = SignalSim.generate(moire.subdiv.SubdivAccuracy.imperfect.copy(noiseRms = 0.001), Motion.Oscillate(40, 4000), Adc(d.inputBits, d.format), 50e6, 30000)
     val pins = PinStream(s.sin, s.cos, s.otrSin, s.otrCos)
     val out = Replay.run(ReplaySupport.harness(d), d, pins)

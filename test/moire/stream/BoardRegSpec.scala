@@ -1,6 +1,7 @@
 package moire.stream
 
-import moire.cli.{CliProcess, UsageError}
+import moire.MoireError
+import moire.cli.CliProcess
 import moire.harmonic.{CoefficientFile, Harmonic, HarmonicFitResult, HarmonicParams}
 import org.scalatest.flatspec.AnyFlatSpec
 import org.scalatest.matchers.should.Matchers
@@ -29,9 +30,9 @@ class BoardRegSpec extends AnyFlatSpec with Matchers {
     board.registers(Registers.Decimation.addr) shouldBe 100
     out(0) should startWith("wrote 0x04 decimation                100  0x00000064")
     out.drop(2).map(_.split("\\s+").take(3).mkString(" ")) shouldBe Seq("0x04 decimation 100", "0x03 control 3", "0x11 h0_c 0")
-    val e = intercept[UsageError](run(pty, _.copy(writes = Seq("status=1"))))
+    val e = intercept[MoireError](run(pty, _.copy(writes = Seq("status=1"))))
     e.getMessage should include("status is read-only")
-    intercept[UsageError](run(pty, _.copy(reads = Seq("speed")))).getMessage should include("register 'speed' is unknown")
+    intercept[MoireError](run(pty, _.copy(reads = Seq("speed")))).getMessage should include("register 'speed' is unknown")
     board.commands.count(_.write) shouldBe 2
   }
 
@@ -53,15 +54,15 @@ class BoardRegSpec extends AnyFlatSpec with Matchers {
     }
     // a board with one slot keeps 0 in slot 1: an error naming the register
     val small = new FakeBoard(pty, FakeBoard.registers(), harmonicSlots = 1)
-    val e = try intercept[UsageError](run(pty, _.copy(coefficients = Some((dir / "t.registers.txt").toString)))) finally small.close()
+    val e = try intercept[MoireError](run(pty, _.copy(coefficients = Some((dir / "t.registers.txt").toString)))) finally small.close()
     e.getMessage should include("h1_order (0x14), the board kept 0x00000000")
   }
 
   it should "name the file and line of a bad coefficient file" in {
     val f = os.temp("# moire harmonic registers\n00 00000001\n01 zz\n")
-    intercept[UsageError](BoardReg.loadCoefficients(f)).getMessage shouldBe s"$f:3: 'zz' is not a hex number"
+    intercept[MoireError](BoardReg.loadCoefficients(f)).getMessage shouldBe s"$f:3: 'zz' is not a hex number"
     val j = os.temp("""{"format": "other"}""")
-    intercept[UsageError](BoardReg.loadCoefficients(j)).getMessage should include("expected 'moire-harmonic-coefficients v1'")
+    intercept[MoireError](BoardReg.loadCoefficients(j)).getMessage should include("expected 'moire-harmonic-coefficients v1'")
   }
 
   "moire board-reg (command line)" should "read a register by name" in PtyPair { pty =>

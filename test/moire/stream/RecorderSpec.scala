@@ -1,6 +1,7 @@
 package moire.stream
 
-import moire.cli.{CliProcess, UsageError}
+import moire.MoireError
+import moire.cli.CliProcess
 import moire.recording.Recording
 import org.scalatest.flatspec.AnyFlatSpec
 import org.scalatest.matchers.should.Matchers
@@ -121,7 +122,7 @@ class RecorderSpec extends AnyFlatSpec with Matchers {
     val bytes = Encoder.frames(recs.grouped(n).zipWithIndex.map { case (rs, k) => RecordFrame(k, 0, rs) }.toSeq)
     val o = RecordOptions("memory", 0.2, "never.csv", baud = 1000000, quiet = true, listenOnly = true, decimation = Some(d),
       adcClockHz = Some(clock.toDouble), adcFormat = Some("offset-binary"), countsPerPeriod = Some(1024))
-    val e = intercept[UsageError](Recorder.record(new MemoryLink(bytes), o, _ => (), _ => ()))
+    val e = intercept[MoireError](Recorder.record(new MemoryLink(bytes), o, _ => (), _ => ()))
     e.getMessage should startWith(s"memory: records are 1000 samples apart, never the decimation $d in one frame")
     os.exists(os.pwd / "never.csv") shouldBe false
     // with the right D the same bytes record cleanly: all frames after the first
@@ -132,7 +133,7 @@ class RecorderSpec extends AnyFlatSpec with Matchers {
 
   it should "say in one line when the board does not answer, and write no file" in PtyPair { pty =>
     val out = pty.dir / "none.csv"
-    val e = intercept[UsageError](Recorder.run(opts(pty, out), _ => (), _ => ()))
+    val e = intercept[MoireError](Recorder.run(opts(pty, out), _ => (), _ => ()))
     e.getMessage should include("the board did not answer a read of id within 200 ms")
     e.getMessage should include("--listen-only")
     e.getMessage.linesIterator.size shouldBe 1
@@ -143,12 +144,12 @@ class RecorderSpec extends AnyFlatSpec with Matchers {
     val out = pty.dir / "none.csv"
     val hand = opts(pty, out, 0.3).copy(listenOnly = true, decimation = Some(d), adcClockHz = Some(4e7), adcFormat = Some("offset-binary"),
       countsPerPeriod = Some(1024), baud = 1000000)
-    val e = intercept[UsageError](Recorder.run(hand, _ => (), _ => ()))
+    val e = intercept[MoireError](Recorder.run(hand, _ => (), _ => ()))
     e.getMessage should include("no frames in")
     e.getMessage should include("nothing received")
     val noise = new Thread(() => pty.feed(Array.tabulate(30000)(i => (i * 7919 % 251).toByte), 20000))
     noise.start()
-    val e2 = intercept[UsageError](Recorder.run(hand, _ => (), _ => ()))
+    val e2 = intercept[MoireError](Recorder.run(hand, _ => (), _ => ()))
     noise.join()
     e2.getMessage should include("bytes but 0 record frames")
     e2.getMessage should include("check --baud")
@@ -156,7 +157,7 @@ class RecorderSpec extends AnyFlatSpec with Matchers {
   }
 
   it should "refuse bad options before opening the port" in {
-    def bad(o: RecordOptions, msg: String) = intercept[UsageError](Recorder.validate(o)).getMessage should include(msg)
+    def bad(o: RecordOptions, msg: String) = intercept[MoireError](Recorder.validate(o)).getMessage should include(msg)
     val o = RecordOptions("/dev/null", 1, "x.csv")
     bad(o.copy(seconds = 0), "--seconds")
     bad(o.copy(decimation = Some(0)), "--decimation must be in 1..16777216")

@@ -1,6 +1,6 @@
 package moire.subdiv
 
-import moire.cli.SubdivCmd
+import moire.options.SubdivCmd
 import moire.cordic.SimSupport
 import moire.signal.AdcFormat
 import org.scalatest.flatspec.AnyFlatSpec

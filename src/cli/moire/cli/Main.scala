@@ -1,0 +1,248 @@
+package moire.cli
+
+import mainargs.{Flag, ParserForClass, ParserForMethods, arg, main}
+import moire.cordic._
+import moire.emit.{Emit, Target}
+import moire.options.{SubdivCmd, SubdivConfig}
+import moire.paper.{AccuracyRow, Reproduce}
+
+/** Options shared by every subcommand that builds a CORDIC. */
+@main
+case class CordicConfig(
+  @arg(doc = "sincos | rotate | atan2 | asin | asin-double | acos | acos-double") mode: String = "sincos",
+  @arg(doc = "CORDIC iterations n, 4..40") iterations: Int = 16,
+  @arg(doc = "data width b in bits, 8..48") width: Int = 18,
+  @arg(doc = "fractional bits of data words (default width - 2)") fracBits: Int = -1,
+  @arg(doc = "angle word width, one turn = 2^angle-width (default width)") angleWidth: Int = -1,
+  @arg(doc = "extra fractional bits inside the iterations, 0..8") guardBits: Int = 0,
+  @arg(doc = "extra angle bits inside the iterations (default ceil(log2 n) + 1)") angleGuardBits: Int = -1,
+  @arg(doc = "a pipeline register every k iterations (1 = fully pipelined)") pipelineEvery: Int = 1,
+  @arg(doc = "truncate | half-even") rounding: String = "half-even",
+  @arg(doc = "leave the outputs scaled by the CORDIC gain K") noGainCompensation: Flag = Flag(),
+  @arg(doc = "arcsine peak lookup table entries for [83, 90] degrees (0 = none, power of two)") peakTable: Int = 0,
+  @arg(doc = "sincos only: lean datapath, same results, fewer cells (docs/cordic-taper.md)") taper: Flag = Flag()
+) {
+  /** The params, or one line saying which option is wrong. */
+  def params: CordicParams = {
+    val m = CordicMode.parse(mode).fold(e => throw new UsageError(e), identity)
+    val r = Rounding.parse(rounding).fold(e => throw new UsageError(e), identity)
+    try CordicParams(m, iterations, width, fracBits, angleWidth, guardBits, angleGuardBits, pipelineEvery, r,
+      !noGainCompensation.value, peakTable, taper.value)
+    catch { case e: IllegalArgumentException => throw new UsageError("--" + e.getMessage.stripPrefix("requirement failed: ")) }
+  }
+}
+
+/** A user mistake: printed as one line, exit code 2. */
+final class UsageError(msg: String) extends moire.MoireError(msg)
+
+object Main {
+  implicit val configParser: ParserForClass[CordicConfig] = ParserForClass[CordicConfig]
+  implicit val subdivParser: ParserForClass[SubdivConfig] = ParserForClass[SubdivConfig]
+
+  @main(doc = "Write the SystemVerilog of one CORDIC configuration into a folder.")
+  def emit(config: CordicConfig, @arg(doc = "output folder") out: String = "generated"): Unit = {
+    val p = config.params
+    val file = Emit.write(new Cordic(p), os.Path(out, os.pwd), Target.SystemVerilog)._2.head
+    println(s"wrote $file (${p.moduleName}, latency ${p.latency} clocks)")
+  }
+
+  @main(doc = "Logic cells, registers, memory bits, multipliers and longest path (yosys synth_intel, Cyclone IV E) of a design.")
+  def cost(config: CordicConfig,
+           @arg(doc = "a design of moire.cost.CostDesigns: cordic (the emit options), subdiv, quadcomp, adapt, corrected, harmonic, ...") design: String = "cordic",
+           @arg(doc = "also write the figures as JSON to this file") json: Option[String] = None,
+           @arg(doc = "seconds each yosys run may take (default 1800)") timeout: Int = 1800,
+           @arg(doc = "keep the Verilog and yosys files in this folder") keep: Option[String] = None,
+           @arg(doc = "sweep iterations x width over the CORDIC variants instead; writes CSV, JSON and PNG") sweep: Flag = Flag(),
+           @arg(doc = "sweep: output folder (default cost-sweep)") out: String = "cost-sweep",
+           @arg(doc = "sweep: comma-separated variants (default sincos,sincos-taper,sincos-taper-g2,asin,asin-double,asin-table; also sincos-truncate)") variants: String = "sincos,sincos-taper,sincos-taper-g2,asin,asin-double,asin-table",
+           @arg(doc = "sweep: comma-separated iteration counts (default 8,12,16)") sweepIterations: String = "8,12,16",
+           @arg(doc = "sweep: comma-separated widths (default 12,16,20)") sweepWidths: String = "12,16,20",
+           @arg(doc = "sweep: keep (n, b) with b - spread <= n <= b (default 4)") spread: Int = 4,
+           @arg(doc = "sweep: skip the measured error of the bit-accurate model") noMeasure: Flag = Flag()): Unit =
+    if (sweep.value) CostCmd.sweep(variants, sweepIterations, sweepWidths, spread, out, timeout, !noMeasure.value, json)
+    else CostCmd.run(config, design, json, timeout, keep)
+
+  @main(doc = "Write the SystemVerilog of the subdivider with its ADC front end into a folder.")
+  def emitSubdiv(config: SubdivConfig, @arg(doc = "output folder") out: String = "generated"): Unit = println(SubdivCmd.run(config, out))
+
+  @main(doc = "Reproduce the papers' accuracy tables; exit code 0 only when every row holds.")
+  def accuracy(@arg(doc = "also write the rows as JSON to this file") json: Option[String] = None): Unit = {
+    val rows = Reproduce.rows(s => System.err.println(s"accuracy: $s ..."))
+    AccuracyTable.print(rows)
+    json.foreach { f =>
+      val path = os.Path(f, os.pwd)
+      os.write.over(path, ujson.write(ujson.Arr(rows.map(_.json): _*), indent = 2), createFolders = true)
+      println(s"wrote $path")
+    }
+    val failed = rows.count(!_.holds)
+    if (failed > 0) { println(s"$failed of ${rows.size} rows do not hold"); sys.exit(1) }
+    println(s"all ${rows.size} rows hold")
+  }
+
+  @main(doc = "Measured maximum error of the bit-accurate model next to its a priori bound, over an n x b sweep.")
+  def bounds(@arg(doc = "one mode, or all when left out") mode: Option[String] = None,
+             @arg(doc = "comma-separated iteration counts") iterations: String = "8,12,16,20,24",
+             @arg(doc = "comma-separated data widths") widths: String = "12,16,18,24,32"): Unit = {
+    def ints(opt: String, s: String) = s.split(",").toSeq.map(v => v.trim.toIntOption.getOrElse(
+      throw new UsageError(s"--$opt: '$v' is not an integer list like 8,12,16")))
+    val modes = mode.map(m => Seq(CordicMode.parse(m).fold(e => throw new UsageError(e), identity))).getOrElse(CordicMode.all)
+    val ns = ints("iterations", iterations); val bs = ints("widths", widths)
+    val configs = for (m <- modes; n <- ns; b <- bs) yield (m, n, b)
+    val ps = configs.map { case (m, n, b) =>
+      try CordicParams(m, n, b)
+      catch { case e: IllegalArgumentException => throw new UsageError(e.getMessage.stripPrefix("requirement failed: ")) }
+    }
+    println(f"${"mode"}%-12s ${"n"}%3s ${"b"}%3s ${"measured"}%11s ${"bound"}%11s ${"unit"}%-11s inputs  ok")
+    var bad = 0
+    for ((p, i) <- ps.zipWithIndex) {
+      if (System.console() != null) System.err.print(s"\rbounds: ${i + 1}/${ps.size} ")
+      val m = CordicAccuracy.measure(p)
+      if (!m.ok) bad += 1
+      println(f"\r${p.mode.name}%-12s ${p.iterations}%3d ${p.width}%3d ${m.maxError}%11.4e ${m.bound}%11.4e ${m.unit}%-11s ${m.samples}%6d  ${if (m.ok) "yes" else "NO"}")
+    }
+    if (System.console() != null) System.err.println()
+    if (bad > 0) { println(s"$bad configurations exceed their bound"); sys.exit(1) }
+  }
+
+  @main(doc = "Cheapest (iterations, width) whose error bound meets a target, confirmed by simulation.")
+  def design(@arg(doc = "sin | asin | atan2") function: String,
+             @arg(doc = "largest error allowed (full scale 1.0 for sin, radians for angles)") maxError: Double,
+             @arg(doc = "truncate | half-even") rounding: String = "half-even",
+             @arg(doc = "asin only: peak lookup table entries (power of two, 0 = none)") peakTable: Int = 0): Unit = {
+    val r = Rounding.parse(rounding).fold(e => throw new UsageError(e), identity)
+    if (!(maxError > 0) || maxError.isInfinite) throw new UsageError(s"--max-error must be a positive number, got $maxError")
+    val d = Designer.cheapest(function, maxError, r, peakTable).fold(e => throw new UsageError(e), identity)
+    println(d.report)
+  }
+
+  @main(doc = "Write the SystemVerilog of the turntable harmonic compensator (seed 001) and its quadrature counter.")
+  def emitHarmonic(@arg(doc = "grating lines per turn, power of two (default 16384)") lines: Int = 16384,
+                   @arg(doc = "read-head subdivision, power of two (default 1024)") subdivision: Int = 1024,
+                   @arg(doc = "m, parallel CORDIC sines, 1..32 (default 4)") harmonics: Int = 4,
+                   @arg(doc = "CORDIC iterations n (default 16)") iterations: Int = 16,
+                   @arg(doc = "CORDIC data bits b, the fraction of the sine (default 18)") dataBits: Int = 18,
+                   @arg(doc = "output folder (default generated)") out: String = "generated"): Unit =
+    CalibrateCmd.emit(lines, subdivision, harmonics, iterations, dataBits, out)
+
+  @main(doc = "Write the SystemVerilog of a datapath at its default parameters (quadcomp | adapt | corrected).")
+  def emitDatapath(@arg(doc = "quadcomp | adapt | corrected") design: String,
+                   @arg(doc = "output folder (default generated)") out: String = "generated"): Unit =
+    DatapathCmd.run(design, out)
+
+  @main(doc = "Fit the m largest harmonics to a moire-calibration v1 CSV; write the coefficient file, register listing and plot.")
+  def calibrate(@arg(doc = "calibration CSV (moire-calibration v1)") input: String,
+                @arg(doc = "m, harmonics kept (parallel CORDICs on the board), 1..32 (default 4)") harmonics: Int = 4,
+                @arg(doc = "highest order fitted (default (distinct angles - 1) / 2, at most 32)") maxOrder: Int = -1,
+                @arg(doc = "grating lines per turn, power of two (default 16384)") lines: Int = 16384,
+                @arg(doc = "read-head subdivision, power of two (default 1024)") subdivision: Int = 1024,
+                @arg(doc = "output folder (default calibration)") out: String = "calibration"): Unit =
+    CalibrateCmd.run(input, harmonics, maxOrder, lines, subdivision, out)
+
+  @main(doc = "Write a moire-recording v1 file from the physics model (default part plus named effects).")
+  def simulate(@arg(doc = "output CSV file") out: String,
+               @arg(doc = "number of samples") samples: Int = 100000,
+               @arg(doc = "sample rate in Hz") sampleRateHz: Double = 10e6,
+               @arg(doc = "ADC bits") adcBits: Int = 12,
+               @arg(doc = "offset-binary | twos-complement") adc: String = "offset-binary",
+               @arg(doc = "constant:HZ | ramp:HZ0:HZ1:SECONDS | oscillate:PERIODS:RATE_HZ") motion: String = "ramp:20000:200000:0.01",
+               @arg(doc = "fringe amplitude, full scale 1") amplitude: Double = 0.9,
+               offsetSin: Double = 0.0, offsetCos: Double = 0.0, gainSin: Double = 1.0, gainCos: Double = 1.0,
+               @arg(doc = "quadrature phase error, degrees") phaseErrorDeg: Double = 0.0,
+               @arg(doc = "white noise rms, full scale") noise: Double = 0.0005,
+               seed: Long = 1L,
+               @arg(doc = "grating lines per revolution (amplitude_modulation)") linesPerRev: Option[Double] = None,
+               @arg(doc = "an effect NAME:key=value,...,channel=sin|cos|both (repeat); see docs/explain.md") effect: Seq[String] = Nil,
+               @arg(doc = "a model JSON file (the JSON simulate writes into the # model: line); overrides the options") model: Option[String] = None): Unit =
+    println(moire.explain.ExplainCmd.simulate(moire.explain.ExplainCmd.SimOptions(out, samples, sampleRateHz, adcBits, adc, motion,
+      amplitude, offsetSin, offsetCos, gainSin, gainCos, phaseErrorDeg, noise, seed, linesPerRev, effect, model)))
+
+  @main(doc = "Fit the physics model to recordings, locate the misfit, name the effects left out (JSON and PNG per file).")
+  def explain(@arg(doc = "recording or calibration files") files: mainargs.Leftover[String],
+              @arg(doc = "folder for one JSON report per file") jsonDir: Option[String] = None,
+              @arg(doc = "folder for PNG plots") plots: Option[String] = None,
+              @arg(doc = "model JSON whose effects are part of the simulation (fitted, not reported)") model: Option[String] = None,
+              @arg(doc = "no progress bar or text report") quiet: Flag = Flag(),
+              @arg(doc = "emit-subdiv options of the board's subdivider, e.g. \"--counts 4096\" (default: from the metadata)") subdiv: Option[String] = None,
+              @arg(doc = "do not compare a recording's board outputs (position column) with the RTL") noRtl: Flag = Flag()): Unit =
+    moire.explain.ExplainCmd.explainArgs(files.value, jsonDir, plots, model, quiet.value, subdiv, noRtl.value)
+
+  @main(doc = "Benchmark: simulate and explain one recording, print the time and samples per second.")
+  def explainBench(@arg(doc = "samples in the recording") samples: Int = 1000000,
+                   @arg(doc = "folder for the recording, JSON and plots (default: a temporary folder)") out: Option[String] = None): Unit =
+    println(moire.explain.ExplainCmd.bench(samples, out))
+
+  @main(doc = "Write a Quartus project for a board (de2-115): SystemVerilog, .qsf, .sdc, .qpf and flash.sh.")
+  def board(@arg(doc = "board name: de2-115 (also accepted as the first word after board)") name: String,
+            @arg(doc = "output folder (default generated/de2-115)") out: String = "generated/de2-115",
+            @arg(doc = "subdiv | corrected") design: String = "subdiv",
+            @arg(doc = "AD9226 clock in Hz, 50 MHz / k (default 50000000)") adcClockHz: Int = 50000000,
+            @arg(doc = "ADC strap: offset-binary | twos-complement") adcFormat: String = "offset-binary",
+            @arg(doc = "default decimation D, 1..16777216 (default 62500)") decimation: Int = 62500,
+            @arg(doc = "UART baud rate (default 115200)") baud: Int = 115200,
+            @arg(doc = "records per frame n, 1..255 (default 8)") frameRecords: Int = 8,
+            @arg(doc = "record FIFO depth (default 256)") fifoDepth: Int = 256,
+            @arg(doc = "encoder inputs: clocks stable before a level is taken (default 16)") glitchFilter: Int = 16,
+            @arg(doc = "M, counts per grating period (default 1024)") counts: Int = 1024,
+            @arg(doc = "pll | logic (no PLL, for simulation)") clockSource: String = "pll"): Unit = {
+    import moire.board.de2115.BoardCmd
+    try BoardCmd.run(name, BoardCmd.params(design, adcClockHz, adcFormat, decimation, baud, frameRecords, fifoDepth,
+      glitchFilter, counts, clockSource), out).foreach(println)
+    catch { case e: BoardCmd.BadOption => throw new UsageError(e.getMessage) }
+  }
+
+  @main(doc = "Record the DE2-115 board's UART stream for some seconds into a moire-recording v1 file (docs/recording.md).")
+  def record(@arg(doc = "serial port, e.g. /dev/ttyUSB0") port: String,
+             @arg(doc = "seconds to record") seconds: Double,
+             @arg(doc = "output CSV file") out: String,
+             @arg(doc = "UART baud rate (default 115200)") baud: Int = 115200,
+             @arg(doc = "write this decimation D to the board first (with --listen-only: the board's D)") decimation: Option[Long] = None,
+             @arg(doc = "ADC clock in Hz instead of register adc_clock_hz") adcClockHz: Option[Double] = None,
+             @arg(doc = "offset-binary | twos-complement instead of register adc_format") adcFormat: Option[String] = None,
+             @arg(doc = "counts per grating period M instead of register counts_per_period") countsPerPeriod: Option[Long] = None,
+             @arg(doc = "send no commands; needs --decimation, --adc-clock-hz, --adc-format, --counts-per-period") listenOnly: Flag = Flag(),
+             @arg(doc = "milliseconds to wait for each register reply (default 500)") timeoutMs: Int = 500,
+             @arg(doc = "no progress bar") quiet: Flag = Flag()): Unit =
+    moire.stream.Recorder.run(moire.stream.RecordOptions(port, seconds, out, baud, decimation, adcClockHz, adcFormat, countsPerPeriod,
+      listenOnly.value, timeoutMs, quiet.value), println(_), System.err.println(_))
+
+  @main(doc = "Read and write the board's registers by name (writes, then coefficients, then reads; none: read all).")
+  def boardReg(@arg(doc = "serial port, e.g. /dev/ttyUSB0") port: String,
+               @arg(doc = "UART baud rate (default 115200)") baud: Int = 115200,
+               @arg(doc = "register name or address to read (repeat)") read: Seq[String] = Nil,
+               @arg(doc = "NAME=VALUE to write (repeat)") write: Seq[String] = Nil,
+               @arg(doc = "harmonic coefficient file from calibrate (.coefficients.json or .registers.txt)") coefficients: Option[String] = None,
+               @arg(doc = "milliseconds to wait for each register reply (default 500)") timeoutMs: Int = 500): Unit =
+    moire.stream.BoardReg.run(moire.stream.BoardReg.Options(port, baud, read, write, coefficients, timeoutMs), println(_))
+
+  @main(doc = "Run a recording's ADC codes through the generated RTL (Verilator); see replay --help.")
+  def replay(@arg(doc = "FILE [--design subdiv|corrected] [--out OUT.csv] [--quiet] [emit-subdiv options]") args: mainargs.Leftover[String]): Unit =
+    moire.replay.ReplayCmd.main(args.value)
+
+  def oneLine(msg: String): String = SubdivCmd.oneLine(msg)
+
+  def main(args: Array[String]): Unit = {
+    val argv0 = if (args.isEmpty) Array("emit") else args
+    // `board de2-115 --out DIR`: the board name as a positional word.
+    val argv = if (argv0.length > 1 && argv0(0) == "board" && !argv0(1).startsWith("-")) Array("board", "--name") ++ argv0.tail else argv0
+    val parser = ParserForMethods(this)
+    val help = argv.contains("--help") || argv.contains("-h")
+    if (help && (argv.head == "--help" || argv.head == "-h")) {
+      println("moire: signal processing generators for optical gratings\nsubcommands:")
+      println(parser.helpText(sorted = false))
+      return
+    }
+    try {
+      parser.runEither(argv.toSeq, allowPositional = false) match {
+        case Left(msg) if help =>
+          val at = msg.indexOf("Expected Signature:")
+          println(if (at >= 0) "Usage: " + msg.substring(at + "Expected Signature:".length).trim else msg)
+        case Left(msg) =>
+          System.err.println(s"moire: ${oneLine(msg)}")
+          sys.exit(2)
+        case Right(_) =>
+      }
+    } catch {
+      case e: moire.MoireError => System.err.println(s"moire: ${e.getMessage}"); sys.exit(2)
+    }
+  }
+}

@@ -1,0 +1,137 @@
+package moire.explain
+
+import moire.recording.{Calibration, CsvText, Recording}
+import moire.signal.{Adc, AdcFormat, SignalParams}
+
+/** The logic behind `simulate`, `explain` and `explain-bench`. */
+object ExplainCmd {
+  final case class SimOptions(out: String, samples: Int, sampleRateHz: Double, adcBits: Int, adc: String, motion: String,
+                              amplitude: Double, offsetSin: Double, offsetCos: Double, gainSin: Double, gainCos: Double,
+                              phaseErrorDeg: Double, noise: Double, seed: Long, linesPerRev: Option[Double],
+                              effects: Seq[String], model: Option[String])
+
+  def model(o: SimOptions): PhysicsModel = {
+    val fmt = AdcFormat.parse(o.adc).fold(e => throw new ExplainError(s"--adc: $e"), identity)
+    val d = try PhysicsModel(SignalParams(o.amplitude, o.offsetSin, o.offsetCos, o.gainSin, o.gainCos, o.phaseErrorDeg, Nil, o.noise, o.seed),
+      PhysicsModel.parseMotion(o.motion), o.sampleRateHz, o.samples, Adc(o.adcBits, fmt), o.linesPerRev, o.effects.map(EffectSpec.parse))
+    catch { case e: IllegalArgumentException => throw new ExplainError(e.getMessage.stripPrefix("requirement failed: ")) }
+    o.model.map(f => PhysicsModel.fromJson(readText(f), f, d)).getOrElse(d)
+  }
+
+  private def readText(f: String): String = {
+    val p = os.Path(f, os.pwd)
+    if (!os.isFile(p)) throw new ExplainError(s"$f: no such file")
+    os.read(p)
+  }
+
+  def simulate(o: SimOptions): String = {
+    val m = model(o)
+    val (rec, _) = m.generate()
+    val path = os.Path(o.out, os.pwd)
+    Recording.write(path, rec)
+    s"wrote $path (${rec.length} samples, ${m.effects.map(_.effect).mkString(", ") match { case "" => "default model only"; case s => s }})"
+  }
+
+  /** Explains each file; writes `<stem>.json` into jsonDir and PNGs into plotDir. Returns the text reports. */
+  def explain(files: Seq[String], jsonDir: Option[String], plotDir: Option[String], modelFile: Option[String], quiet: Boolean,
+              rtl: Option[Seq[String]] = Some(Nil)): Seq[Report] = {
+    if (files.isEmpty) throw new ExplainError("explain: name at least one recording file")
+    val givenEffects = modelFile.map { f =>
+      val text = readText(f)
+      val v = try ujson.read(text) catch { case e: Exception => throw new ExplainError(s"$f: not valid JSON") }
+      v.obj.get("effects").map(_.arr.toSeq.map(EffectSpec.fromJson(_, f))).getOrElse(Nil)
+    }.getOrElse(Nil)
+    val paths = files.map(f => os.Path(f, os.pwd))
+    val kinds = paths.map(kindOf)   // check every file's first line before the long work
+    paths.zip(kinds).map { case (p, kind) =>
+      val stem = p.last.stripSuffix(".csv")
+      val progress = if (quiet) Progress.none else Progress.bar(stem)
+      val report = try {
+        if (kind == "calibration") {
+          val r = CalibrationExplain.run(p.toString, Calibration.read(p))
+          plotDir.foreach(d => CalibrationExplain.plots(r, os.Path(d, os.pwd), stem))
+          r.report
+        } else {
+          val rec = Recording.read(p)
+          val r = SignalExplain.run(p.toString, rec, givenEffects, progress)
+          progress.close()
+          plotDir.foreach(d => Plots.signals(r, os.Path(d, os.pwd), stem))
+          // Board outputs (a `position` column) against the RTL run on the recorded codes.
+          rtl.filter(_ => rec.extra.contains("position")).map { opts =>
+            val (f, notes) = BoardCheck.run(p.toString, rec, opts, s => if (!quiet) System.err.println(s"explain: $s"))
+            r.report.copy(findings = r.report.findings ++ f, notes = r.report.notes ++ notes)
+          }.getOrElse(r.report)
+        }
+      } finally progress.close()
+      jsonDir.foreach(d => os.write.over(os.Path(d, os.pwd) / s"$stem.json", ujson.write(report.json, indent = 2), createFolders = true))
+      if (!quiet) print(report.text)
+      report
+    }
+  }
+
+  /** Options may also follow the file names (mainargs puts everything after the first file into `rest`). */
+  def explainArgs(rest: Seq[String], jsonDir: Option[String], plots: Option[String], model: Option[String], quiet: Boolean,
+                  subdiv: Option[String] = None, noRtl: Boolean = false): Unit = {
+    if (rest.contains("--help") || rest.contains("-h")) { println(Usage); return }
+    var j = jsonDir; var p = plots; var m = model; var q = quiet; val files = Seq.newBuilder[String]
+    var sd = subdiv; var nr = noRtl
+    var i = 0
+    def value(o: String) = { i += 1; rest.lift(i).getOrElse(throw new ExplainError(s"$o needs a value")) }
+    while (i < rest.length) {
+      rest(i) match {
+        case "--json-dir" => j = Some(value("--json-dir"))
+        case "--plots" => p = Some(value("--plots"))
+        case "--model" => m = Some(value("--model"))
+        case "--quiet" => q = true
+        case "--subdiv" => sd = Some(value("--subdiv"))
+        case "--no-rtl" => nr = true
+        case o if o.startsWith("--") => throw new ExplainError(s"Unknown argument: $o (see --help)")
+        case f => files += f
+      }
+      i += 1
+    }
+    explain(files.result(), j, p, m, q, if (nr) None else Some(sd.toSeq.flatMap(_.trim.split("\\s+")).filter(_.nonEmpty)))
+  }
+
+  val Usage: String =
+    """Usage: explain FILE... [--json-dir DIR] [--plots DIR] [--model MODEL.json] [--quiet]
+      |  Fit the physics model to each recording (moire-recording v1) or calibration file (moire-calibration v1),
+      |  locate where the residual departs from noise, and name the catalogued effects that lower BIC by more than 10.
+      |    --json-dir DIR       one JSON report per file (DIR/<name>.json)
+      |    --plots DIR          PNG plots (residual against time, phase, frequency; one per finding)
+      |    --model MODEL.json   effects the simulation already has: fitted, not reported
+      |    --quiet              no progress bar or text report
+      |    --subdiv "OPTIONS"   emit-subdiv options of the board's subdivider (default: from the metadata adc_bits,
+      |                         adc, counts_per_period); a recording with a position column is replayed through this
+      |                         RTL (Verilator) and the board's outputs are compared with it, sample by sample
+      |    --no-rtl             do not compare board outputs with the RTL""".stripMargin
+
+  def kindOf(p: os.Path): String = {
+    if (!os.isFile(p)) throw new ExplainError(s"$p: no such file")
+    val first = CsvText.lines(p).headOption.map(_.trim).getOrElse("")
+    if (first == Calibration.Magic) "calibration"
+    else if (first == Recording.Magic) "signals"
+    else throw new ExplainError(s"$p:1: first line must be '${Recording.Magic}' or '${Calibration.Magic}', got '${first.take(40)}'")
+  }
+
+  /** Simulates a recording with five effects (skew, bandwidth, harmonic, stuck bit, interference) and explains it;
+    * prints the time and samples per second.
+    */
+  def bench(samples: Int, out: Option[String]): String = {
+    val m = PhysicsModel(SignalParams(amplitude = 0.9, phaseErrorDeg = 1.0, noiseRms = 0.0007, seed = 7),
+      moire.signal.Motion.Ramp(20e3, 250e3, samples / 10e6), 10e6, samples, Adc(12), None,
+      Seq(EffectSpec("channel_skew", Map("skew_s" -> 20e-9)), EffectSpec("bandwidth", Map("cutoff_hz" -> 600e3)),
+        EffectSpec("harmonic", Map("order" -> 3, "amplitude_rel" -> 0.001), "sin"),
+        EffectSpec("adc_bit_fault", Map("bit" -> 2, "stuck_at" -> 0), "cos"),
+        EffectSpec("interference", Map("frequency_hz" -> 50e3, "amplitude_fs" -> 3e-4))))
+    val (rec, _) = m.generate()
+    val dir = out.map(os.Path(_, os.pwd)).getOrElse(os.temp.dir(prefix = "moire-bench"))
+    val file = dir / "bench.csv"
+    Recording.write(file, rec)
+    val t0 = System.nanoTime()
+    val rep = explain(Seq(file.toString), Some((dir / "json").toString), Some((dir / "plots").toString), None, quiet = false).head
+    val s = (System.nanoTime() - t0) / 1e9
+    f"explain-bench: $samples samples explained in $s%.1f s (read, fit, JSON, plots) = ${samples / s}%.0f samples/s; " +
+      s"${Runtime.getRuntime.availableProcessors} cores; findings: ${rep.findings.map(_.effect).mkString(", ")}"
+  }
+}

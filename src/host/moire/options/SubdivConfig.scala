@@ -1,0 +1,61 @@
+package moire.options
+
+import mainargs.{arg, main}
+import moire.emit.{Emit, Target}
+import moire.cordic.Rounding
+import moire.signal.AdcFormat
+import moire.subdiv.{PhaseMethod, SubdivAdc, SubdivParams}
+
+/** Options of the subdivider (see moire.subdiv.SubdivParams). */
+@main
+case class SubdivConfig(
+  @arg(doc = "ADC bits, 4..16") inputBits: Int = 12,
+  @arg(doc = "atan2 | asin-double") method: String = "atan2",
+  @arg(doc = "M, counts per grating period: power of two, 4..65536") counts: Int = 1024,
+  @arg(doc = "CORDIC iterations, 4..40") iterations: Int = 16,
+  @arg(doc = "CORDIC data width (default input-bits + 6)") cordicWidth: Int = -1,
+  @arg(doc = "extra fractional bits inside the CORDIC, 0..8") guardBits: Int = 2,
+  @arg(doc = "phase word width (default max(cordic width, log2 M + 2))") phaseBits: Int = -1,
+  @arg(doc = "position word width") positionWidth: Int = 32,
+  @arg(doc = "A/B edges at least this many clocks apart") minEdgeClocks: Int = 1,
+  @arg(doc = "counts the A/B output may lag before overspeed is flagged") backlogLimit: Int = 64,
+  @arg(doc = "signal present when the amplitude is at least this (fraction of full scale)") presentThreshold: Double = 0.1,
+  @arg(doc = "asin-double: nominal signal amplitude (fraction of full scale)") asinAmplitude: Double = 0.9,
+  @arg(doc = "phase step (turns per sample) above which stepFault is set, <= 0.5") maxStepTurns: Double = 0.46875,
+  @arg(doc = "truncate | half-even") rounding: String = "half-even",
+  @arg(doc = "ADC pin format: offset-binary | twos-complement") adcFormat: String = "offset-binary"
+) {
+  def params: SubdivParams = {
+    val m = PhaseMethod.parse(method).fold(e => throw new OptionError(e), identity)
+    val r = Rounding.parse(rounding).fold(e => throw new OptionError(e), identity)
+    try SubdivParams(inputBits, m, counts, iterations, cordicWidth, guardBits, phaseBits, positionWidth, minEdgeClocks,
+      backlogLimit, presentThreshold, asinAmplitude, maxStepTurns, r)
+    catch { case e: IllegalArgumentException => throw new OptionError("--" + e.getMessage.stripPrefix("requirement failed: ")) }
+  }
+  def format: AdcFormat = AdcFormat.parse(adcFormat).fold(e => throw new OptionError(s"--adc-format: $e"), identity)
+}
+object SubdivCmd {
+  /** Writes the board-facing subdivider (ADC front end + subdivider) as SystemVerilog; returns the file,
+    * the latency from ADC pins to position, and the top's name.
+    */
+  def emit(p: SubdivParams, format: AdcFormat, out: String): (os.Path, Int, String) = {
+    val (top, files) = Emit.write(new SubdivAdc(p, format), os.Path(out, os.pwd), Target.SystemVerilog)
+    (files.head, top.latency, top.desiredName)
+  }
+
+  def run(c: SubdivConfig, out: String): String = {
+    val (file, latency, name) = emit(c.params, c.format, out)
+    s"wrote $file ($name, latency $latency clocks from ADC pins to position)"
+  }
+
+  private val badValue = """Invalid argument (--\S+) <(\w+)> failed to parse "(.*)" due to.*""".r
+  /** The first line of a mainargs error, reworded for a user. */
+  def oneLine(msg: String): String = {
+    val first = msg.linesIterator.map(_.trim).find(_.nonEmpty).getOrElse("bad arguments")
+    first match {
+      case badValue(opt, tpe, v) => s"$opt: '$v' is not a valid $tpe"
+      case other if other.startsWith("Unknown argument") || other.startsWith("Missing argument") => s"$other (see --help)"
+      case other => other
+    }
+  }
+}

@@ -1,0 +1,151 @@
+package moire.replay
+
+import mainargs.ParserForClass
+import moire.options.SubdivConfig
+import moire.recording.Recording
+
+/** `replay FILE [--design subdiv|corrected] [--out OUT.csv] [emit-subdiv options]`. */
+object ReplayCmd {
+  val Usage: String =
+    """Usage: replay FILE [--design subdiv|corrected] [--out OUT.csv] [--check-rows N] [--check-windows W] [--quiet] [emit-subdiv options]
+      |  Runs a moire-recording v1 file's ADC codes through the generated RTL (Verilator, built once per
+      |  configuration and cached), writes the outputs (row i = outputs for input sample i) and checks a
+      |  sample of the rows against the bit-accurate model. Design options default from the recording's
+      |  metadata (adc_bits -> --input-bits, adc -> --adc-format, counts_per_period -> --counts).
+      |    --check-rows N      rows checked clock by clock from the start (default 100000)
+      |    --check-windows W   windows of 5000 rows checked over the rest (default 20)""".stripMargin
+
+  private val subdivParser = ParserForClass[SubdivConfig]
+
+  /** Options of the subdivider: the recording's metadata first, then what the user gave (which wins). */
+  def config(opts: Seq[String], meta: Map[String, String]): SubdivConfig = {
+    def userGave(o: String) = opts.contains(o)
+    val fromMeta = Seq("--input-bits" -> meta.get("adc_bits"), "--adc-format" -> meta.get("adc"), "--counts" -> meta.get("counts_per_period"))
+      .collect { case (o, Some(v)) if !userGave(o) => Seq(o, v) }.flatten
+    subdivParser.constructEither(fromMeta ++ opts, allowPositional = false) match {
+      case Right(c) => c
+      case Left(msg) => throw new ReplayError(moire.options.SubdivCmd.oneLine(msg))
+    }
+  }
+
+  /** The pins of a recording, or one line saying why it cannot be replayed exactly. */
+  def pins(file: String, rec: Recording): PinStream = {
+    val dec = rec.meta.get("decimation").map(v => v.toDoubleOption.getOrElse(throw new ReplayError(s"$file: metadata decimation '$v' is not a number")))
+    dec.filter(_ != 1.0).foreach { d =>
+      throw new ReplayError(s"$file: the recording is decimated (decimation ${fmt(d)}): the RTL needs every ADC sample, so it cannot be replayed exactly")
+    }
+    rec.extra.get("sample_index").foreach { ix =>
+      var i = 1
+      while (i < ix.length) {
+        val step = (ix(i).toLong - ix(i - 1).toLong) & 0xffffffffL
+        if (step != 1) throw new ReplayError(s"$file: sample_index jumps from ${fmt(ix(i - 1))} to ${fmt(ix(i))} (data row ${i + 1}): " +
+          "records are missing, so the RTL cannot be replayed exactly")
+        i += 1
+      }
+    }
+    def flags(c: String) = rec.extra.get(c).map(_.map(_ != 0)).getOrElse(Array.emptyBooleanArray)
+    PinStream(rec.sin, rec.cos, flags("otr_sin"), flags("otr_cos"))
+  }
+  private def fmt(d: Double) = if (d == math.rint(d)) d.toLong.toString else d.toString
+
+  /** Checks that the design reads the recording's ADC. */
+  def matchAdc(file: String, rec: Recording, d: ReplayDesign): Unit = {
+    if (rec.adc.bits != d.inputBits)
+      throw new ReplayError(s"$file: the recording has ${rec.adc.bits}-bit ADC codes, the design reads ${d.inputBits} bits (--input-bits)")
+    if (rec.adc.format != d.format)
+      throw new ReplayError(s"$file: the recording's ADC format is ${rec.adc.format.name}, the design reads ${d.format.name} (--adc-format)")
+  }
+
+  /** Emits and builds (or finds in the cache) the harness of a design. */
+  def build(d: ReplayDesign, log: String => Unit): Harness = {
+    VerilatorBuild.verilatorVersion
+    val t0 = System.nanoTime()
+    val v = d.verilog()
+    val emitS = (System.nanoTime() - t0) / 1e9
+    val h = VerilatorBuild.harness(v, d.topName)
+    log((if (h.cached) s"cached build ${h.dir}" else f"built ${h.dir} in ${h.buildSeconds}%.1f s") + f" (emitting the Verilog took $emitS%.1f s)")
+    h
+  }
+
+  /** Replays pins through a design: build, run with a progress bar on long runs, check against the model. */
+  def replay(d: ReplayDesign, p: PinStream, quiet: Boolean, log: String => Unit, head: Int = 100000, windows: Int = 20): (ReplayOutput, CheckResult) = {
+    val h = build(d, log)
+    val bar = if (quiet || p.length < 2000000) None
+      else Some(new me.tongfei.progressbar.ProgressBarBuilder().setTaskName("replay").setInitialMax(p.length.toLong)
+        .setConsumer(new me.tongfei.progressbar.ConsoleProgressBarConsumer(System.err)).build())
+    val t0 = System.nanoTime()
+    val out = try Replay.run(h, d, p, k => bar.foreach(_.stepTo(k))) finally bar.foreach(_.close())
+    val t1 = System.nanoTime()
+    val check = ModelCheck.run(d, p, out, head, windows)
+    log(f"harness ${(t1 - t0) / 1e9}%.1f s (clocking loop ${out.loopSeconds}%.2f s), model check ${(System.nanoTime() - t1) / 1e9}%.1f s")
+    (out, check)
+  }
+
+  def main(args: Seq[String]): Unit = {
+    if (args.contains("--help") || args.contains("-h")) { println(Usage); return }
+    var design = "subdiv"; var out: Option[String] = None; var file: Option[String] = None; var quiet = false
+    var head = 100000; var windows = 20
+    def count(o: String, v: String, min: Int) = v.toIntOption.filter(_ >= min).getOrElse(throw new ReplayError(s"$o: '$v' is not an integer >= $min"))
+    val rest = Seq.newBuilder[String]
+    var i = 0
+    def value(o: String) = { i += 1; args.lift(i).getOrElse(throw new ReplayError(s"$o needs a value")) }
+    while (i < args.length) {
+      args(i) match {
+        case "--design" => design = value("--design")
+        case "--out" => out = Some(value("--out"))
+        case "--quiet" => quiet = true
+        case "--check-rows" => head = count("--check-rows", value("--check-rows"), 1)
+        case "--check-windows" => windows = count("--check-windows", value("--check-windows"), 0)
+        case o if o.startsWith("--") => rest += o; rest += value(o)
+        case f if file.isEmpty => file = Some(f)
+        case f => throw new ReplayError(s"replay: one recording at a time, got '${file.get}' and '$f'")
+      }
+      i += 1
+    }
+    val f = file.getOrElse(throw new ReplayError("replay: name a recording file (see --help)"))
+    val path = os.Path(f, os.pwd)
+    var t = System.nanoTime()
+    def lap(): Double = { val now = System.nanoTime(); val s = (now - t) / 1e9; t = now; s }
+    val rec = Recording.read(path)
+    val readS = lap()
+    val d = ReplayDesign(design, config(rest.result(), rec.meta))
+    matchAdc(f, rec, d)
+    val p = pins(f, rec)
+    def log(s: String): Unit = if (!quiet) System.err.println(s"replay: $s")
+    log(s"${d.describe}, latency ${d.latency} clocks, ${p.length} samples")
+    val (o, check) = replay(d, p, quiet, log, head, windows)
+    val replayS = lap()
+    val dest = os.Path(out.getOrElse(path.last.stripSuffix(".csv") + "-replay.csv"), os.pwd)
+    OutputCsv.write(dest, f, d, o, rec.extra.get("sample_index"))
+    val writeS = lap()
+    log(f"read CSV $readS%.1f s, emit + build + replay + check $replayS%.1f s, write CSV $writeS%.1f s")
+    println(f"wrote $dest (${o.length} rows; harness ${o.length / o.loopSeconds / 1e6}%.2f M samples/s)")
+    println(check.text)
+    if (!check.ok) sys.exit(1)
+  }
+}
+
+/** OUT.csv of replay: row i = outputs for input sample i (taken `latency` clocks after it entered). */
+object OutputCsv {
+  val Magic = "# moire-replay v1"
+  def write(dest: os.Path, input: String, d: ReplayDesign, o: ReplayOutput, sampleIndex: Option[Array[Double]]): Unit = {
+    os.makeDir.all(dest / os.up)
+    val w = new java.io.BufferedWriter(new java.io.OutputStreamWriter(new java.io.FileOutputStream(dest.toIO), "US-ASCII"), 1 << 20)
+    try {
+      w.write(s"$Magic\n# input: $input\n# design: ${d.describe}\n# latency: ${d.latency}\n" +
+        s"# alignment: row i = the outputs for input sample i, taken ${d.latency} clocks after the sample entered\n" +
+        "sample,position,phase,present,over_range,step_fault,a,b,z,overspeed\n")
+      val sb = new java.lang.StringBuilder(64)
+      var i = 0
+      while (i < o.length) {
+        sb.setLength(0)
+        sb.append(sampleIndex.map(_(i).toLong).getOrElse(i.toLong)).append(',').append(o.position(i)).append(',').append(o.phase(i))
+        var bit = Replay.Present
+        while (bit <= Replay.Overspeed) { sb.append(',').append((o.flags(i) >> bit) & 1); bit += 1 }
+        sb.append('\n')
+        w.write(sb.toString)
+        i += 1
+      }
+    } finally w.close()
+  }
+}

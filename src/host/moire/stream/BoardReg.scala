@@ -1,0 +1,98 @@
+package moire.stream
+
+import moire.harmonic.CoefficientFile
+
+/** `moire board-reg`: read and write the board's registers by name, load harmonic coefficients. */
+object BoardReg {
+  final case class Options(port: String, baud: Int = 115200, reads: Seq[String] = Nil, writes: Seq[String] = Nil,
+                           coefficients: Option[String] = None, timeoutMs: Int = 500)
+
+  private def parseWrite(s: String): (Int, Long) = s.split("=", 2) match {
+    case Array(n, v) =>
+      val a = Registers.parse(n).fold(e => throw new StreamError(s"--write $s: $e"), identity)
+      if (!Registers.writable(a)) throw new StreamError(
+        s"--write $s: ${Registers.name(a)} is read-only; writable: ${Registers.all.filter(_.writable).map(_.name).mkString(", ")}, h<slot>_<order|c|phi>")
+      a -> Registers.parseValue(v).fold(e => throw new StreamError(s"--write $s: $e"), identity)
+    case _ => throw new StreamError(s"--write '$s' must be NAME=VALUE, like decimation=100")
+  }
+
+  /** Writes first (in the order given), then coefficients, then reads; with none of them, reads the whole table. */
+  def run(o: Options, say: String => Unit): Unit = {
+    val writes = o.writes.map(parseWrite)
+    val reads = o.reads.map(r => Registers.parse(r).fold(e => throw new StreamError(s"--read: $e"), identity))
+    val coefs = o.coefficients.map(f => loadCoefficients(os.Path(f, os.pwd)))
+    if (o.baud < 300 || o.baud > 12000000) throw new StreamError(s"--baud must be in 300..12000000, got ${o.baud}")
+    val link = SerialLink.open(o.port, o.baud)
+    try {
+      val c = new BoardClient(link, o.timeoutMs)
+      BoardClient.check(c, o.baud, "")
+      def ask[T](f: => T): T = try f catch { case e: NoAnswer => throw new StreamError(e.getMessage) }
+      for ((a, v) <- writes) {
+        val got = ask(c.write(a, v))
+        say(s"wrote ${line(a, got)}")
+        if (got != v) throw new StreamError(f"${o.port}: wrote 0x$v%08x to ${Registers.name(a)}, the board kept 0x$got%08x")
+      }
+      for ((ws, file) <- coefs.zip(o.coefficients)) {
+        for ((a, v) <- ws) {
+          val got = ask(c.write(a, v))
+          if (got != v) throw new StreamError(f"${o.port}: wrote 0x$v%08x to ${Registers.name(a)} (0x$a%02x), the board kept 0x$got%08x: " +
+            "is the harmonic compensator in the design, with enough slots?")
+        }
+        say(s"loaded ${ws.size} harmonic registers (0x${"%02x".format(ws.map(_._1).min)}..0x${"%02x".format(ws.map(_._1).max)}) from $file, each read back")
+      }
+      val toRead = if (reads.isEmpty && writes.isEmpty && coefs.isEmpty) Registers.all.map(_.addr) else reads
+      toRead.foreach(a => say(line(a, ask(c.read(a)))))
+    } finally link.close()
+  }
+
+  /** One register as a line: address, name, decimal, hex and what it means. */
+  def line(addr: Int, v: Long): String = {
+    val signed = if (v >= (1L << 31)) v - (1L << 32) else v
+    val note = addr match {
+      case 0x00 => new String(Array(24, 16, 8, 0).map(s => ((v >> s) & 0xFF).toByte), "ISO-8859-1").filter(ch => ch >= ' ' && ch < 127)
+      case 0x02 => Seq(0 -> "overspeed", 1 -> "over_range", 2 -> "step_fault", 3 -> "fifo_overflow", 4 -> "otr_sin", 5 -> "otr_cos", 8 -> "present")
+        .collect { case (b, n) if ((v >> b) & 1) != 0 => n }.mkString(" ")
+      case 0x03 => if ((v & 1) != 0) "stream on" else "stream off"
+      case 0x07 | 0x0B | 0x0C => s"signed $signed"
+      case 0x0D => v match { case 0 => "offset-binary"; case 1 => "twos-complement"; case _ => "unknown" }
+      case _ => ""
+    }
+    f"0x$addr%02x ${Registers.name(addr)}%-18s $v%10d  0x$v%08x  $note".trim
+  }
+
+  /** Register writes of a coefficient file from `calibrate`: `.coefficients.json` or the `addr data` hex listing.
+    * Addresses in the file are within the harmonic window; the board's are [[Registers.HarmonicBase]] + them.
+    */
+  def loadCoefficients(path: os.Path): Seq[(Int, Long)] = {
+    if (!os.isFile(path)) throw new StreamError(s"$path: no such file")
+    val text = try os.read(path) catch { case e: java.io.IOException => throw new StreamError(s"$path: cannot read (${e.getMessage})") }
+    def place(where: String, a: Long, d: Long): (Int, Long) = {
+      if (a < 0 || Registers.HarmonicBase + a > 0xFF) throw new StreamError(s"$where: window address $a is outside 0..${0xFF - Registers.HarmonicBase}")
+      if (d < 0 || d > Wire.MaxU32) throw new StreamError(s"$where: data $d is not a u32")
+      (Registers.HarmonicBase + a.toInt) -> d
+    }
+    def hex(where: String, s: String): Long = scala.util.Try(java.lang.Long.parseLong(s.trim.stripPrefix("0x").stripPrefix("0X"), 16))
+      .getOrElse(throw new StreamError(s"$where: '$s' is not a hex number"))
+    val ws = if (text.trim.startsWith("{")) {
+      val j = try ujson.read(text) catch { case e: Exception => throw new StreamError(s"$path: not valid JSON (${e.getMessage.linesIterator.next()})") }
+      val fmt = j.obj.get("format").flatMap(_.strOpt)
+      if (!fmt.contains(CoefficientFile.format)) throw new StreamError(s"$path: format is ${fmt.getOrElse("missing")}, expected '${CoefficientFile.format}'")
+      val regs = j.obj.get("registers").flatMap(_.arrOpt).getOrElse(throw new StreamError(s"$path: no 'registers' list"))
+      regs.zipWithIndex.map { case (r, i) =>
+        val where = s"$path: registers[$i]"
+        val a = r.obj.get("addr").flatMap(_.numOpt).getOrElse(throw new StreamError(s"$where: 'addr' missing"))
+        val d = r.obj.get("data").flatMap(_.strOpt).getOrElse(throw new StreamError(s"$where: 'data' missing"))
+        place(where, a.toLong, hex(where, d))
+      }.toSeq
+    } else text.linesIterator.zipWithIndex.flatMap { case (l, i) =>
+      val body = l.takeWhile(_ != '#').trim
+      if (body.isEmpty) None
+      else body.split("\\s+") match {
+        case Array(a, d) => val w = s"$path:${i + 1}"; Some(place(w, hex(w, a), hex(w, d)))
+        case _ => throw new StreamError(s"$path:${i + 1}: expected 'addr data' in hex, got '${l.take(40)}'")
+      }
+    }.toSeq
+    if (ws.isEmpty) throw new StreamError(s"$path: no register writes in the file")
+    ws
+  }
+}

@@ -1,0 +1,4 @@
+package moire.stream
+
+/** A bad input to the stream library: one line, said by the command line. */
+final class StreamError(msg: String) extends moire.MoireError(msg)
