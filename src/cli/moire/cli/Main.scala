@@ -62,6 +62,20 @@ object Main {
     if (sweep.value) CostCmd.sweep(variants, sweepIterations, sweepWidths, spread, out, timeout, !noMeasure.value, json)
     else CostCmd.run(config, design, json, timeout, keep)
 
+  @main(doc = "Fmax, utilisation and critical path on the LFE5U-85F (yosys synth_ecp5, nextpnr-ecp5) at speed grades 6 and 8; exit code 1 when a design misses its target.")
+  def timing(config: CordicConfig,
+             @arg(doc = "a design of the registry: cordic (the emit options), subdiv, quadcomp, adapt, corrected, harmonic, board-de2-115, ...") design: Option[String] = None,
+             @arg(doc = "every design of the registry") all: Flag = Flag(),
+             @arg(doc = "comma-separated speed grades (default 6,8)") speeds: String = "6,8",
+             @arg(doc = "target clock in MHz (default 65, the AD9226's full rate)") targetMhz: Double = 65.0,
+             @arg(doc = "nextpnr router: router1 | router2 (default router2)") router: String = "router2",
+             @arg(doc = "place with I/O buffers and global clocks (default: out of context)") inContext: Flag = Flag(),
+             @arg(doc = "also write the figures as JSON to this file") json: Option[String] = None,
+             @arg(doc = "also write a markdown table to this file") markdown: Option[String] = None,
+             @arg(doc = "cache folder (default ~/.cache/moire-tools/timing; $MOIRE_TOOLS moves it)") cache: Option[String] = None,
+             @arg(doc = "seconds each tool run may take (default 3600)") timeout: Int = 3600): Unit =
+    if (!TimingCmd.run(config, design, all.value, speeds, targetMhz, router, inContext.value, json, markdown, cache, timeout)) sys.exit(1)
+
   @main(doc = "Write the SystemVerilog of the subdivider with its ADC front end into a folder.")
   def emitSubdiv(config: SubdivConfig, @arg(doc = "output folder") out: String = "generated"): Unit = println(SubdivCmd.run(config, out))
 

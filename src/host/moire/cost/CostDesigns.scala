@@ -1,6 +1,7 @@
 package moire.cost
 
 import chisel3.RawModule
+import moire.board.de2115.{BoardDesign, BoardParams, De2115}
 import moire.adapt.{AdaptParams, AdaptiveCorrector}
 import moire.chain.{CorrectedSubdivParams, CorrectedSubdivider}
 import moire.cordic.{Cordic, CordicParams}
@@ -27,8 +28,14 @@ object CostDesigns {
     CostDesign("harmonic", "turntable harmonic compensator, m = 4 parallel CORDICs (seed 001)",
       _ => new HarmonicCompensator(HarmonicParams()), _ => Some(HarmonicParams().latency)),
     CostDesign("board-de2-115", "DE2-115 board top: two AD9226 captures, subdivider, UART stream and registers, encoder I/O",
-      _ => moire.board.de2115.De2115.top(moire.board.de2115.BoardParams()), _ => None)
+      _ => De2115.top(boards("board-de2-115")), _ => None),
+    CostDesign("board-de2-115-corrected", "DE2-115 board top with the adaptive corrector before the subdivider",
+      _ => De2115.top(boards("board-de2-115-corrected")), _ => None)
   )
+
+  /** The board parameters of the board designs. */
+  lazy val boards: Map[String, BoardParams] =
+    Map("board-de2-115" -> BoardParams(), "board-de2-115-corrected" -> BoardParams(design = BoardDesign.Corrected))
 
   def find(name: String): Either[String, CostDesign] =
     all.find(_.name == name).toRight(s"--design: '$name' is not a design; allowed: ${all.map(_.name).mkString(", ")}")

