@@ -45,6 +45,28 @@ class StatParseSpec extends AnyFlatSpec with Matchers {
     StatParse.multBlocks("") shouldBe 0
   }
 
+  it should "count a signed product by its operands' own widths, not firtool's sign extension" in {
+    // firtool writes a 12 x 12 signed square as a 24 x 24 unsigned product of sign-extended operands.
+    val ext = (Seq.fill(12)("\\x [11]") :+ "\\x").mkString("{ ", " ", " }")
+    val sq = s"  cell $$mul $$m\n    parameter \\A_WIDTH 24\n    parameter \\B_WIDTH 24\n    connect \\A $ext\n    connect \\B $ext\n  end\n"
+    StatParse.multipliers(sq) shouldBe Seq((12, 12))
+    StatParse.multBlocks(sq) shouldBe 1
+    // 18 x 24 signed, widened to 42 x 42: two blocks, not nine.
+    val a = (Seq.fill(24)("\\a [17]") :+ "\\a").mkString("{ ", " ", " }")
+    val b = (Seq.fill(18)("\\b [23]") :+ "\\b").mkString("{ ", " ", " }")
+    StatParse.multBlocks(s"  cell $$mul $$m\n    parameter \\A_WIDTH 42\n    parameter \\B_WIDTH 42\n    connect \\A $a\n    connect \\B $b\n  end\n") shouldBe 2
+  }
+
+  "Operand.realWidth" should "drop zero extension and repeated sign bits only" in {
+    Operand.realWidth(20, "{ 4'0000 \\y }") shouldBe 16
+    Operand.realWidth(20, "{ 4'0010 \\y }") shouldBe 18
+    Operand.realWidth(16, "\\y") shouldBe 16
+    // Copies of the top bit of a part: the first copy is the sign bit itself.
+    Operand.realWidth(11, "{ \\y [7] \\y [7] \\y [7] \\z [7:0] }") shouldBe 9
+    Operand.realWidth(10, "{ \\y [7] \\y [7] \\y [7:0] }") shouldBe 8
+    Operand.realWidth(8, "{ \\y [7] \\y [6] \\y [5:0] }") shouldBe 8
+  }
+
   "StatParse.longestPath" should "read the length of ltp" in {
     StatParse.longestPath(res("sample-ltp.txt")) shouldBe Some(8)
     StatParse.longestPath("Longest topological path in top (length=-1):") shouldBe None

@@ -34,6 +34,8 @@ final case class CostReport(design: String, what: String, synth: SynthResult, la
       "design" -> design, "top" -> synth.top,
       "logic_cells" -> ujson.Num(logicCells.toDouble), "registers" -> ujson.Num(registers.toDouble), "luts" -> ujson.Num(synth.total.luts.toDouble),
       "memory_bits" -> ujson.Num(synth.memoryBits.toDouble), "m9k_blocks" -> ujson.Num(synth.m9kBlocks.toDouble), "block_ram_bits" -> ujson.Num(synth.blockRamBits.toDouble), "multipliers" -> ujson.Num(synth.multipliers.toDouble),
+      "cells_by_type" -> ujson.Obj.from(synth.total.cells.toSeq.sortBy(_._1).map { case (t, n) => t -> ujson.Num(n.toDouble) }),
+      "unmapped_cells" -> ujson.Obj.from(synth.total.unmapped.toSeq.sortBy(_._1).map { case (t, n) => t -> ujson.Num(n.toDouble) }),
       "longest_path_cells" -> synth.longestPathCells.map(n => ujson.Num(n)).getOrElse(ujson.Null),
       "latency" -> latency.map(n => ujson.Num(n)).getOrElse(ujson.Null),
       "yosys_seconds" -> math.round(synth.seconds * 10) / 10.0,
@@ -63,6 +65,8 @@ final case class CostReport(design: String, what: String, synth: SynthResult, la
     b ++= f"  total: ${t.logicCells} logic cells (${t.luts} LUTs + ${t.registers} registers) = ${Ep4ce115.pct(t.logicCells, Ep4ce115.logicElements)} of the EP4CE115's ${Ep4ce115.logicElements} LEs\n"
     b ++= f"  memory: ${synth.memoryBits} bits inferred, ${synth.blockRamBits} of them in block RAM (${synth.m9kBlocks} of 432 M9K blocks; the rest in logic) = ${Ep4ce115.pct(synth.blockRamBits, Ep4ce115.memoryBits)} of ${Ep4ce115.memoryBits} bits; " +
       f"multipliers: ${synth.multipliers} of ${Ep4ce115.multipliers18} 18x18 (${Ep4ce115.pct(synth.multipliers, Ep4ce115.multipliers18)})\n"
+    if (t.unmapped.nonEmpty)
+      b ++= s"  left unmapped by synth_intel (generic yosys cells, not in the logic cells): ${t.unmapped.toSeq.sortBy(_._1).map { case (c, n) => s"$c $n" }.mkString(", ")}\n"
     b ++= s"  longest path between registers: ${synth.longestPathCells.map(n => s"$n LUT cells").getOrElse("not measured")}\n"
     latency.foreach(l => b ++= s"  latency $l clocks${if (cordic.isDefined) ", one result per clock" else ""}\n")
     cordic.foreach { p =>

@@ -35,22 +35,31 @@ object StatParse {
   }
 
   private val widthParam = """\s*parameter \\([AB])_WIDTH (\d+)\s*""".r
-  /** 18 x 18 multiplier blocks for the `$mul` (or black-boxed multiplier) cells of a `dump`: ceil(a / 18) * ceil(b / 18) each. */
-  def multBlocks(dump: String): Long = {
-    var total = 0L; var a = 0; var b = 0; var inMul = false
-    def flush(): Unit = if (inMul) { total += ((a + 17) / 18).toLong * ((b + 17) / 18); inMul = false }
+  private val connectAB = """\s*connect \\([AB]) (.*)""".r
+  /** 18 x 18 multiplier blocks for the `$mul` (or black-boxed multiplier) cells of a `dump`:
+    * ceil(a / 18) * ceil(b / 18) each, with a and b the operands' real widths ([[Operand.realWidth]]).
+    */
+  def multBlocks(dump: String): Long = multipliers(dump).map { case (a, b) => ((a + 17) / 18).toLong * ((b + 17) / 18) }.sum
+
+  /** The real operand widths (a, b) of each multiplication in a `dump`. */
+  def multipliers(dump: String): Seq[(Int, Int)] = {
+    val out = Seq.newBuilder[(Int, Int)]
+    var a = 0; var b = 0; var ca = ""; var cb = ""; var inMul = false
+    def flush(): Unit = if (inMul) { out += ((Operand.realWidth(a, ca), Operand.realWidth(b, cb))); inMul = false }
     dump.linesIterator.foreach { l =>
       val t = l.trim
-      if (t.startsWith("cell ")) { flush(); inMul = Seq("$mul", Yosys.multCell, "\\" + Yosys.multCell).exists(c => t.startsWith(s"cell $c ")); a = 0; b = 0 }
+      if (t.startsWith("cell ")) { flush(); inMul = Seq("$mul", Yosys.multCell, "\\" + Yosys.multCell).exists(c => t.startsWith(s"cell $c ")); a = 0; b = 0; ca = ""; cb = "" }
       else if (t == "end") flush()
       else l match {
         case widthParam("A", w) => a = w.toInt
         case widthParam("B", w) => b = w.toInt
+        case connectAB("A", c) => ca = c
+        case connectAB("B", c) => cb = c
         case _ =>
       }
     }
     flush()
-    total
+    out.result()
   }
 
   private val memParam = """\s*parameter \\(SIZE|WIDTH) (\d+)\s*""".r

@@ -14,6 +14,8 @@ final case class ModuleCells(name: String, cells: Map[String, Long]) {
   def m9k: Long = cells.collect { case (t, n) if t == "altsyncram" || t.endsWith("_ram_block") || t == Yosys.m9kCell => n }.sum
   /** Multiplications left as black boxes (see [[Yosys]]); each takes one or more 18 x 18 blocks. */
   def multCells: Long = cells.getOrElse(Yosys.multCell, 0L)
+  /** Generic yosys cells that `synth_intel` left unmapped (`$mux`, `$not`, ...): listed, not in the logic cells. */
+  def unmapped: Map[String, Long] = cells.filter { case (t, _) => t.startsWith("$") && t != "$scopeinfo" && t != Yosys.m9kCell }
 }
 
 /** What one yosys run measured. `modules` is empty for a flattened run.

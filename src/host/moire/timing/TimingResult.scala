@@ -17,9 +17,10 @@ final case class SpeedResult(speed: Int, targetMhz: Double, fmaxMhz: Map[String,
     "speed_grade" -> speed, "fmax_mhz" -> r2(fmax), "target_mhz" -> targetMhz, "slack_ns" -> r2(slackNs), "meets_target" -> meets,
     "fmax_mhz_per_clock" -> ujson.Obj.from(fmaxMhz.toSeq.sortBy(_._1).map { case (c, f) => c -> ujson.Num(r2(f)) }),
     "critical_path" -> criticalPath.map(_.json).getOrElse(ujson.Null),
-    "luts" -> luts, "lut4_logic" -> synth.lut4, "carry_cells" -> synth.carry, "registers" -> registers, "brams" -> brams,
-    "multipliers" -> multipliers, "pnr_seconds" -> math.round(seconds).toDouble, "cached" -> cached)
+    "luts" -> n(luts), "lut4_logic" -> n(synth.lut4), "carry_cells" -> n(synth.carry), "registers" -> n(registers), "brams" -> n(brams),
+    "multipliers" -> n(multipliers), "pnr_seconds" -> math.round(seconds).toDouble, "cached" -> cached)
 
+  private def n(x: Long) = ujson.Num(x.toDouble)
   private def r2(x: Double) = if (x.isInfinite) 0.0 else math.round(x * 100) / 100.0
 }
 

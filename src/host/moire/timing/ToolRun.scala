@@ -12,6 +12,10 @@ object ToolRun {
     * Throws a [[TimingError]] naming `what` and the log on a non-zero exit or the time limit.
     */
   def run(what: String, cmd: Seq[String], cwd: os.Path, log: os.Path, timeoutSeconds: Int, progress: String => Unit): Double = {
+    val exe = cmd.head
+    val found = if (exe.contains('/')) os.isFile(os.Path(exe, os.pwd))
+      else sys.env.getOrElse("PATH", "").split(':').exists(d => d.nonEmpty && os.isFile(os.Path(d, os.pwd) / exe))
+    if (!found) throw new TimingError(s"$what: $exe not found; ${Ecp5Tools.installHint}")
     os.makeDir.all(cwd)
     val t0 = System.nanoTime()
     def secs = (System.nanoTime() - t0) / 1e9

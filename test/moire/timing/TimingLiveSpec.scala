@@ -1,0 +1,49 @@
+package moire.timing
+
+import moire.cost.CostDesigns
+import org.scalatest.flatspec.AnyFlatSpec
+import org.scalatest.matchers.should.Matchers
+
+/** The open ECP5 flow on the subdivider: synth_ecp5, nextpnr-ecp5 out of context at speed grade 6
+  * (about 2 minutes). Cancelled where the tools are not installed (boards/tools/ecp5-tools.sh; CI installs them).
+  */
+class TimingLiveSpec extends AnyFlatSpec with Matchers {
+  private def tools: Ecp5Tools = Ecp5Tools.find.getOrElse(cancel(s"ECP5 tools not installed: ${Ecp5Tools.installHint}"))
+  private lazy val cache = os.temp.dir(prefix = "moire-timing-cache-")
+  private lazy val opts = TimingOptions(speeds = Seq(6), cache = cache)
+  private val subdiv = CostDesigns.find("subdiv").toOption.get
+  private val gen = TimingDesigns.gen(subdiv, moire.cordic.CordicParams(moire.cordic.CordicMode.SinCos, 16, 18))
+  private lazy val first = Timing.run(tools, "subdiv", gen, opts, _ => ())
+
+  "timing" should "place the subdivider at speed grade 6 at or above 65 MHz" in {
+    val s = first.speeds.head
+    s.speed shouldBe 6
+    withClue(first.text) { s.fmax should be >= 65.0 }
+    s.meets shouldBe true
+    s.registers should be > 100L
+    s.luts should be > s.registers
+    s.multipliers should be >= 1L
+    s.cached shouldBe false
+    val p = s.criticalPath.get
+    p.signals should not be empty
+    p.from should not startWith "$"
+    p.logicLevels should be >= 1
+    first.json("speed_grades")(0)("fmax_mhz").num shouldBe s.fmax +- 0.01
+  }
+
+  it should "read a second run of the same Verilog from the cache at once" in {
+    val t0 = System.nanoTime()
+    val again = Timing.run(tools, "subdiv", gen, opts, _ => ())
+    val seconds = (System.nanoTime() - t0) / 1e9
+    again.speeds.head.cached shouldBe true
+    again.speeds.head.fmax shouldBe first.speeds.head.fmax
+    seconds should be < 60.0 // elaboration only
+  }
+
+  it should "say in one line which tool is missing" in {
+    val none = Ecp5Tools(Some(os.temp.dir() / "no-such-bin"))
+    val e = the[TimingError] thrownBy Timing.run(none, "subdiv", gen, TimingOptions(speeds = Seq(6), cache = os.temp.dir()), _ => ())
+    e.getMessage should include("ecp5-tools.sh")
+    e.getMessage.linesIterator.size shouldBe 1
+  }
+}
