@@ -57,6 +57,11 @@ class StatParseSpec extends AnyFlatSpec with Matchers {
     StatParse.multBlocks(s"  cell $$mul $$m\n    parameter \\A_WIDTH 42\n    parameter \\B_WIDTH 42\n    connect \\A $a\n    connect \\B $b\n  end\n") shouldBe 2
   }
 
+  it should "keep the sign extension of an operand multiplied by a constant, as synth_ecp5 maps it" in {
+    val a = (Seq.fill(18)("\\d [24]") :+ "\\d").mkString("{ ", " ", " }")
+    StatParse.multipliers(s"  cell $$mul $$m\n    parameter \\A_WIDTH 43\n    parameter \\B_WIDTH 12\n    connect \\A $a\n    connect \\B 12'110010010001\n  end\n") shouldBe Seq((43, 12))
+  }
+
   "Operand.realWidth" should "drop zero extension and repeated sign bits only" in {
     Operand.realWidth(20, "{ 4'0000 \\y }") shouldBe 16
     Operand.realWidth(20, "{ 4'0010 \\y }") shouldBe 18

@@ -45,7 +45,9 @@ object StatParse {
   def multipliers(dump: String): Seq[(Int, Int)] = {
     val out = Seq.newBuilder[(Int, Int)]
     var a = 0; var b = 0; var ca = ""; var cb = ""; var inMul = false
-    def flush(): Unit = if (inMul) { out += ((Operand.realWidth(a, ca), Operand.realWidth(b, cb))); inMul = false }
+    def flush(): Unit = if (inMul) {
+      out += ((Operand.realWidth(a, ca, !Operand.constant(cb)), Operand.realWidth(b, cb, !Operand.constant(ca)))); inMul = false
+    }
     dump.linesIterator.foreach { l =>
       val t = l.trim
       if (t.startsWith("cell ")) { flush(); inMul = Seq("$mul", Yosys.multCell, "\\" + Yosys.multCell).exists(c => t.startsWith(s"cell $c ")); a = 0; b = 0; ca = ""; cb = "" }
