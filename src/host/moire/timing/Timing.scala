@@ -22,6 +22,17 @@ object Timing {
     (top.desiredName, files)
   }
 
+  /** A fresh work folder `name.tmp-PID` in `parent`, after removing those of runs that are gone (killed). */
+  private def tmpDir(parent: os.Path, name: String): os.Path = {
+    if (os.isDir(parent)) os.list(parent).filter(_.last.startsWith(s"$name.tmp-")).foreach { d =>
+      val alive = d.last.stripPrefix(s"$name.tmp-").toLongOption.exists(p => ProcessHandle.of(p).filter(_.isAlive).isPresent)
+      if (!alive) os.remove.all(d)
+    }
+    val tmp = parent / s"$name.tmp-${ProcessHandle.current().pid()}"
+    os.remove.all(tmp); os.makeDir.all(tmp)
+    tmp
+  }
+
   private def sha(parts: Seq[Array[Byte]]): String = {
     val md = java.security.MessageDigest.getInstance("SHA-256")
     parts.foreach { p => md.update(p); md.update(0.toByte) }
@@ -39,8 +50,7 @@ object Timing {
     val dir = o.cache / s"$top-$key"
     if (os.exists(dir / "synth.json") && os.exists(dir / "stat.json")) (dir, true)
     else {
-      val tmp = o.cache / s"$top-$key.tmp-${ProcessHandle.current().pid()}"
-      os.remove.all(tmp); os.makeDir.all(tmp)
+      val tmp = tmpDir(o.cache, s"$top-$key")
       files.foreach(f => os.copy.over(f, tmp / f.last))
       extra.foreach { case (n, t) => os.write.over(tmp / n, t) }
       progress(s"synth_ecp5 $top (yosys 0.70)")
@@ -56,8 +66,7 @@ object Timing {
     val cached = os.exists(dir / "report.json")
     var seconds = 0.0
     if (!cached) {
-      val tmp = synthDir / s"${p.tag}.tmp-${ProcessHandle.current().pid()}"
-      os.remove.all(tmp); os.makeDir.all(tmp)
+      val tmp = tmpDir(synthDir, p.tag)
       os.copy.over(synthDir / "synth.json", tmp / "synth.json")
       p.lpf.foreach(f => os.copy.over(synthDir / f, tmp / f))
       progress(s"nextpnr-ecp5 $top, speed ${p.speed}, target ${p.targetMhz} MHz, ${p.router}${if (p.outOfContext) ", out of context" else ""}")
