@@ -52,7 +52,7 @@ object SubdivCmd {
   /** The first line of a mainargs error, reworded for a user. */
   def oneLine(msg: String): String = {
     val first = msg.linesIterator.map(_.trim).find(_.nonEmpty).getOrElse("bad arguments")
-    first match {
+    first.replaceFirst("""^moire\.[\w.$]+Error: """, "") match {
       case badValue(opt, tpe, v) => s"$opt: '$v' is not a valid $tpe"
       case other if other.startsWith("Unknown argument") || other.startsWith("Missing argument") => s"$other (see --help)"
       case other => other
