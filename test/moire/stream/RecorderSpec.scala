@@ -2,6 +2,7 @@ package moire.stream
 
 import moire.MoireError
 import moire.cli.CliProcess
+import moire.protocol.{Registers, StreamV1}
 import moire.recording.Recording
 import org.scalatest.flatspec.AnyFlatSpec
 import org.scalatest.matchers.should.Matchers
@@ -185,7 +186,7 @@ class RecorderSpec extends AnyFlatSpec with Matchers {
   it should "exit 0 with a WARNING line when frames were lost" in PtyPair { pty =>
     val (frames, _) = plan()
     val board = new FakeBoard(pty, FakeBoard.registers(), streamWhen = Some(_.addr == Registers.FrameRecords.addr))
-    board.stream(frames.iterator, Wire.recordFrameBytes(n) * 500 / n) // as fast as a real board makes 500 records/s
+    board.stream(frames.iterator, StreamV1.recordFrameBytes(n) * 500 / n) // as fast as a real board makes 500 records/s
     val out = pty.dir / "cli.csv"
     val (code, stdout, err) = try CliProcess.run("record", "--port", pty.host.toString, "--seconds", "1.5", "--out", out.toString, "--quiet")
       finally board.close()

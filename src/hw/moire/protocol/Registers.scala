@@ -1,9 +1,11 @@
-package moire.stream
+package moire.protocol
 
 /** One board register (u32). */
 final case class Reg(addr: Int, name: String, writable: Boolean, doc: String)
 
-/** The board's register table (stream format v1, docs/recording.md), the one place that names them. */
+/** The board's register table (stream format v1, docs/recording.md), the one place that names them;
+  * the board's register file (moire.board.de2115.BoardCore) and `board-reg` both read it.
+  */
 object Registers {
   val Id: Reg = Reg(0x00, "id", false, "0x4D4F4952 \"MOIR\"")
   val Version: Reg = Reg(0x01, "version", false, "stream format version (1)")
@@ -19,6 +21,22 @@ object Registers {
   val EncoderCount: Reg = Reg(0x0B, "encoder_count", false, "quadrature count of the encoder inputs A/B, two's complement")
   val EncoderZCount: Reg = Reg(0x0C, "encoder_z_count", false, "encoder_count latched at the last Z edge")
   val AdcFormat: Reg = Reg(0x0D, "adc_format", false, "0 offset binary, 1 two's complement")
+  /** Register `id`: "MOIR". */
+  val IdValue: Long = 0x4D4F4952L
+  /** Bits of `status`: sticky flags and the live `present`. */
+  object StatusBit {
+    val Overspeed = 0; val OverRange = 1; val StepFault = 2; val FifoOverflow = 3; val OtrSin = 4; val OtrCos = 5
+    val Present = 8
+    val named: Seq[(Int, String)] = Seq(Overspeed -> "overspeed", OverRange -> "over_range", StepFault -> "step_fault",
+      FifoOverflow -> "fifo_overflow", OtrSin -> "otr_sin", OtrCos -> "otr_cos", Present -> "present")
+  }
+  /** Bits of `control`: stream enable, clear the sticky status flags. */
+  object ControlBit { val Enable = 0; val Clear = 1 }
+  /** Largest decimation D (the smallest is 1). */
+  val MaxDecimation: Long = 1L << 24
+  /** Values of `adc_format`. */
+  val AdcOffsetBinary: Int = 0
+  val AdcTwosComplement: Int = 1
   val all: Seq[Reg] = Seq(Id, Version, Status, Control, Decimation, DroppedTotal, CmdErrors, Position, AdcClockHz,
     FrameRecords, CountsPerPeriod, EncoderCount, EncoderZCount, AdcFormat)
 
@@ -53,7 +71,7 @@ object Registers {
   def parseValue(s: String): Either[String, Long] = {
     val t = s.trim
     val v = if (t.startsWith("0x") || t.startsWith("0X")) scala.util.Try(java.lang.Long.parseLong(t.drop(2), 16)).toOption
-      else t.toLongOption.map(x => if (x < 0 && x >= Int.MinValue) x & Wire.MaxU32 else x)
-    v.filter(x => x >= 0 && x <= Wire.MaxU32).toRight(s"value '$t' is not a u32 (decimal, negative decimal or 0x hex)")
+      else t.toLongOption.map(x => if (x < 0 && x >= Int.MinValue) x & StreamV1.MaxU32 else x)
+    v.filter(x => x >= 0 && x <= StreamV1.MaxU32).toRight(s"value '$t' is not a u32 (decimal, negative decimal or 0x hex)")
   }
 }
