@@ -5,7 +5,8 @@ import chisel3.util._
 import moire.protocol.BurstLayout
 
 /** Parameters of the burst capture.
-  * @param samples block-RAM depth: the longest burst (65,536 x 29 bits = 1.9 Mbit: 232 M9K, 106 DP16KD)
+  * @param samples block-RAM depth: the longest burst (65,536 x 29 bits = 1.9 Mbit: 116 DP16KD after yosys synth_ecp5,
+  *                232 M9K by arithmetic at 8K x 1 each)
   */
 case class BurstParams(samples: Int = 65536) {
   require(samples >= 2 && samples <= (1 << 20), s"burst samples must be in 2..${1 << 20}, got $samples")
