@@ -38,6 +38,27 @@ class BurstAssemblerSpec extends AnyFlatSpec with Matchers {
     }
   }
 
+  it should "rebuild what BurstModel captured after Encoder and Decoder (model -> frames -> bytes -> recording)" in {
+    import moire.io.{BurstCfg, BurstIn, BurstModel, BurstParams}
+    val n = 300
+    // the board's counter (latency L) next to the pins; word() puts Z at sample 50
+    val ins = (0 until 600).map(k => BurstIn(word(k).toInt, k * 5, refPos(k - L).toInt, 0, 5000L + k))
+    val m = new BurstModel(BurstParams(512))
+    m.step(None, Some(BurstCfg(BurstLayout.Trigger.RefZ, n, 40)))
+    ins.foreach(i => m.step(Some(i), None))
+    val frames = BurstInfo(0, m.length, m.pre, m.trigger, m.last) +:
+      m.words.map(_.toLong).grouped(255).zipWithIndex.map { case (ws, j) => BurstSamples(1 + j, 255L * j, ws) }.toVector
+    val d = new Decoder(1)
+    val got = d.feed(Encoder.frames(frames)) ++ d.finish()
+    got shouldBe frames
+    val (r, check) = BurstAssembler.recording(got.head.asInstanceOf[BurstInfo], got.tail.collect { case b: BurstSamples => b }, 50e6, AdcFormat.OffsetBinary)
+    // the trigger is the Z edge at sample 50 with 40 samples before it: the burst is input samples 10..309
+    r.extra("sample_index").head shouldBe 5010.0
+    r.extra("ref_counts").toSeq shouldBe (10 until 10 + n).map(k => refPos(k).toDouble)
+    r.extra("ref_z").indexOf(1.0) shouldBe 40
+    check shouldBe BurstCheck(0, Some(0L))
+  }
+
   it should "refuse a burst with lost frames, naming how many samples are missing" in {
     val info = BurstInfo(0, 20, 0, Anchor(0, 0, 0), Anchor(19, 0, 0))
     val e = the[StreamError] thrownBy BurstAssembler.recording(info, Seq(BurstSamples(1, 0, IndexedSeq.fill(15)(0L))), 1e6, AdcFormat.OffsetBinary)
