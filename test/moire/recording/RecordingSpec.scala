@@ -27,6 +27,26 @@ class RecordingSpec extends AnyFlatSpec with Matchers {
     }
   }
 
+  it should "read adc as free text, adc_format as the code format, and old files that named the format under adc" in {
+    def fmt(extra: String*) = Recording.parse("f.csv", good.take(3) ++ extra ++ good.drop(3))
+    val free = fmt("# adc: AD9226")
+    free.adc.format shouldBe AdcFormat.OffsetBinary; free.meta("adc") shouldBe "AD9226"; free.meta("operator") shouldBe "bench A"
+    fmt("# adc: AD9226", "# adc_format: twos-complement").adc.format shouldBe AdcFormat.TwosComplement
+    fmt("# adc: twos-complement").adc.format shouldBe AdcFormat.TwosComplement   // an old file
+    fmt("# adc: offset-binary").adc.format shouldBe AdcFormat.OffsetBinary
+    fmt("# scope: Rigol DS1054Z, 8 bit", "# adc: scope").meta("scope") shouldBe "Rigol DS1054Z, 8 bit"
+    val e = intercept[MoireError](fmt("# adc_format: gray"))
+    e.getMessage should (include("adc_format") and include("'gray'") and include("twos-complement"))
+    // writing: adc_format from the recording, free-text adc kept, an old format-only adc dropped
+    val p = os.temp(suffix = ".csv")
+    Recording.write(p, free.copy(adc = Adc(12, AdcFormat.TwosComplement)))
+    val text = os.read.lines(p)
+    text should contain("# adc_format: twos-complement"); text should contain("# adc: AD9226")
+    Recording.write(p, fmt("# adc: twos-complement"))
+    os.read.lines(p).count(_.startsWith("# adc")) shouldBe 2   // adc_bits and adc_format only
+    Recording.read(p).adc.format shouldBe AdcFormat.TwosComplement
+  }
+
   it should "reject malformed input with one message naming file, line and problem" in {
     def bad(lines: IndexedSeq[String], expect: String): Unit = {
       val e = intercept[MoireError](Recording.parse("f.csv", lines))

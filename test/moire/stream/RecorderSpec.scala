@@ -68,7 +68,7 @@ class RecorderSpec extends AnyFlatSpec with Matchers {
 
     rec.sampleRateHz shouldBe clock.toDouble / d
     val m = rec.meta
-    m("adc") shouldBe "offset-binary"; m("adc_bits") shouldBe "12"; m("source") shouldBe "de2-115"
+    m("adc_format") shouldBe "offset-binary"; m("adc") shouldBe "AD9226"; m("adc_bits") shouldBe "12"; m("source") shouldBe "de2-115"
     m("decimation") shouldBe d.toString; m("adc_clock_hz") shouldBe clock.toString; m("counts_per_period") shouldBe "1024"
     // injected: one CRC error (frame 30), one bad header (frame 75), frames 30, 60, 75 missing from seq,
     // index gaps at 30 (8 records), 45 (3 dropped), 60 (8), 75 (8)
@@ -97,7 +97,7 @@ class RecorderSpec extends AnyFlatSpec with Matchers {
     board.commands shouldBe empty
     r.stats.lost shouldBe false
     val rec = Recording.read(out)
-    rec.meta("adc") shouldBe "twos-complement"; rec.meta("crc_errors") shouldBe "0"; rec.meta("gaps") shouldBe "0"
+    rec.meta("adc_format") shouldBe "twos-complement"; rec.adc.format shouldBe moire.signal.AdcFormat.TwosComplement; rec.meta("crc_errors") shouldBe "0"; rec.meta("gaps") shouldBe "0"
     val idx = rec.extra("sample_index")
     idx.sliding(2).forall(p => p(1) - p(0) == d.toDouble) shouldBe true // unwrapped past 2^32
     idx.last should be > 4294967295.0

@@ -32,41 +32,63 @@ object ExplainCmd {
     s"wrote $path (${rec.length} samples, ${m.effects.map(_.effect).mkString(", ") match { case "" => "default model only"; case s => s }})"
   }
 
-  /** Explains each file; writes `<stem>.json` into jsonDir and PNGs into plotDir. Returns the text reports. */
+  /** Explains each file; writes `<stem>.json` into jsonDir and PNGs into plotDir. Returns the text reports.
+    * Every file is tried: a file that fails prints its one-line error (stderr) and the others still get
+    * their reports; afterwards one ExplainError says how many failed.
+    */
   def explain(files: Seq[String], jsonDir: Option[String], plotDir: Option[String], modelFile: Option[String], quiet: Boolean,
               rtl: Option[Seq[String]] = Some(Nil)): Seq[Report] = {
+    val all = explainEach(files, jsonDir, plotDir, modelFile, quiet, rtl)
+    val failed = all.collect { case Left(e) => e }
+    if (failed.nonEmpty)
+      throw new ExplainError(if (all.length == 1) failed.head else s"explain: ${failed.length} of ${all.length} files failed (each named above)")
+    all.collect { case Right(r) => r }
+  }
+
+  /** Each file's report, or its one-line error; a bad file does not stop the others. */
+  def explainEach(files: Seq[String], jsonDir: Option[String], plotDir: Option[String], modelFile: Option[String], quiet: Boolean,
+                  rtl: Option[Seq[String]] = Some(Nil)): Seq[Either[String, Report]] = {
     if (files.isEmpty) throw new ExplainError("explain: name at least one recording file")
     val givenEffects = modelFile.map { f =>
       val text = readText(f)
       val v = try ujson.read(text) catch { case e: Exception => throw new ExplainError(s"$f: not valid JSON") }
       v.obj.get("effects").map(_.arr.toSeq.map(EffectSpec.fromJson(_, f))).getOrElse(Nil)
     }.getOrElse(Nil)
-    val paths = files.map(f => os.Path(f, os.pwd))
-    val kinds = paths.map(kindOf)   // check every file's first line before the long work
-    paths.zip(kinds).map { case (p, kind) =>
-      val stem = p.last.stripSuffix(".csv")
-      val progress = if (quiet) Progress.none else Progress.bar(stem)
-      val report = try {
-        if (kind == "calibration") {
-          val r = CalibrationExplain.run(p.toString, Calibration.read(p))
-          plotDir.foreach(d => CalibrationExplain.plots(r, os.Path(d, os.pwd), stem))
-          r.report
-        } else {
-          val rec = Recording.read(p)
-          val r = SignalExplain.run(p.toString, rec, givenEffects, progress)
-          progress.close()
-          plotDir.foreach(d => Plots.signals(r, os.Path(d, os.pwd), stem))
-          // Board outputs (a `position` column) against the RTL run on the recorded codes.
-          rtl.filter(_ => rec.extra.contains("position")).map { opts =>
-            val (f, notes) = BoardCheck.run(p.toString, rec, opts, s => if (!quiet) System.err.println(s"explain: $s"))
-            r.report.copy(findings = r.report.findings ++ f, notes = r.report.notes ++ notes)
-          }.getOrElse(r.report)
-        }
-      } finally progress.close()
-      jsonDir.foreach(d => os.write.over(os.Path(d, os.pwd) / s"$stem.json", ujson.write(report.json, indent = 2), createFolders = true))
-      if (!quiet) print(report.text)
-      report
+    files.map { f =>
+      try Right(explainOne(os.Path(f, os.pwd), givenEffects, jsonDir, plotDir, quiet, rtl))
+      catch {
+        case e: moire.MoireError =>
+          if (files.length > 1) System.err.println(s"moire: ${e.getMessage}")
+          Left(e.getMessage)
+      }
     }
+  }
+
+  private def explainOne(p: os.Path, givenEffects: Seq[EffectSpec], jsonDir: Option[String], plotDir: Option[String],
+                         quiet: Boolean, rtl: Option[Seq[String]]): Report = {
+    val kind = kindOf(p)
+    val stem = p.last.stripSuffix(".csv")
+    val progress = if (quiet) Progress.none else Progress.bar(stem)
+    val report = try {
+      if (kind == "calibration") {
+        val r = CalibrationExplain.run(p.toString, Calibration.read(p))
+        plotDir.foreach(d => CalibrationExplain.plots(r, os.Path(d, os.pwd), stem))
+        r.report
+      } else {
+        val rec = Recording.read(p)
+        val r = SignalExplain.run(p.toString, rec, givenEffects, progress)
+        progress.close()
+        plotDir.foreach(d => Plots.signals(r, os.Path(d, os.pwd), stem))
+        // Board outputs (a `position` column) against the RTL run on the recorded codes.
+        rtl.filter(_ => rec.extra.contains("position")).map { opts =>
+          val (f, notes) = BoardCheck.run(p.toString, rec, opts, s => if (!quiet) System.err.println(s"explain: $s"))
+          r.report.copy(findings = r.report.findings ++ f, notes = r.report.notes ++ notes)
+        }.getOrElse(r.report)
+      }
+    } finally progress.close()
+    jsonDir.foreach(d => os.write.over(os.Path(d, os.pwd) / s"$stem.json", ujson.write(report.json, indent = 2), createFolders = true))
+    if (!quiet) print(report.text)
+    report
   }
 
   /** Options may also follow the file names (mainargs puts everything after the first file into `rest`). */
@@ -102,7 +124,7 @@ object ExplainCmd {
       |    --model MODEL.json   effects the simulation already has: fitted, not reported
       |    --quiet              no progress bar or text report
       |    --subdiv "OPTIONS"   emit-subdiv options of the board's subdivider (default: from the metadata adc_bits,
-      |                         adc, counts_per_period); a recording with a position column is replayed through this
+      |                         adc_format, counts_per_period); a recording with a position column is replayed through this
       |                         RTL (Verilator) and the board's outputs are compared with it, sample by sample
       |    --no-rtl             do not compare board outputs with the RTL""".stripMargin
 

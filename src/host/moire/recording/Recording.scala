@@ -28,13 +28,16 @@ final case class Recording(
 object Recording {
   val Magic = "# moire-recording v1"
 
-  /** Writes the file; metadata keys `sample_rate_hz`, `adc_bits`, `adc`, `samples` are set from the recording. */
+  /** Writes the file; metadata keys `sample_rate_hz`, `adc_bits`, `adc_format`, `samples` are set from the recording.
+    * Other metadata is written as it is, except an old-style `adc` that only named the code format.
+    */
   def write(path: os.Path, r: Recording): Unit = {
     val sb = new java.lang.StringBuilder(r.length * 12 + 256)
     sb.append(Magic).append('\n')
     val fixed = Seq("sample_rate_hz" -> fmt(r.sampleRateHz), "adc_bits" -> r.adc.bits.toString,
-      "adc" -> r.adc.format.name, "samples" -> r.length.toString)
-    val rest = r.meta.filter { case (k, _) => !fixed.exists(_._1 == k) }.toSeq.sortBy(_._1)
+      "adc_format" -> r.adc.format.name, "samples" -> r.length.toString)
+    val rest = r.meta.filter { case (k, v) => !fixed.exists(_._1 == k) && !(k == "adc" && AdcFormat.parse(v).isRight) }
+      .toSeq.sortBy(_._1)
     for ((k, v) <- fixed ++ rest) sb.append("# ").append(k).append(": ").append(v).append('\n')
     val cols = r.extra.keys.toSeq.sorted
     sb.append((Seq("sin", "cos") ++ cols).mkString(",")).append('\n')
@@ -56,6 +59,14 @@ object Recording {
     parse(path.toString, lines)
   }
 
+  /** The code format: metadata `adc_format`; else an old-style `adc` naming a format; else offset binary.
+    * `adc` is free text (the converter's name, say) and never an error.
+    */
+  def codeFormat(meta: Map[String, String]): Either[String, AdcFormat] = meta.get("adc_format") match {
+    case Some(v) => AdcFormat.parse(v).left.map(e => s"metadata adc_format: $e")
+    case None => Right(meta.get("adc").flatMap(AdcFormat.parse(_).toOption).getOrElse(AdcFormat.OffsetBinary))
+  }
+
   def parse(name: String, lines: IndexedSeq[String]): Recording = {
     def bad(line: Int, msg: String) = throw new RecordingError(s"$name:$line: $msg")
     if (lines.isEmpty || lines.forall(_.trim.isEmpty)) bad(1, "empty file, expected '# moire-recording v1'")
@@ -66,7 +77,7 @@ object Recording {
       .getOrElse(bad(headerAt + 1, s"metadata sample_rate_hz '${meta("sample_rate_hz")}' is not a positive number"))
     val bits = need("adc_bits").toIntOption.filter(b => b >= 4 && b <= 24)
       .getOrElse(bad(headerAt + 1, s"metadata adc_bits '${meta("adc_bits")}' is not an integer in 4..24"))
-    val format = meta.get("adc").map(s => AdcFormat.parse(s).fold(e => bad(headerAt + 1, e), identity)).getOrElse(AdcFormat.OffsetBinary)
+    val format = codeFormat(meta).fold(e => bad(headerAt + 1, e), identity)
     val adc = Adc(bits, format)
     if (headerAt >= lines.length) bad(lines.length, "the header row 'sin,cos' is missing")
     val header = lines(headerAt).split(",", -1).map(_.trim)

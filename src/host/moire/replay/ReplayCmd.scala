@@ -20,7 +20,7 @@ object ReplayCmd {
   /** Options of the subdivider: the recording's metadata first, then what the user gave (which wins). */
   def config(opts: Seq[String], meta: Map[String, String]): SubdivConfig = {
     def userGave(o: String) = opts.contains(o)
-    val fromMeta = Seq("--input-bits" -> meta.get("adc_bits"), "--adc-format" -> meta.get("adc"), "--counts" -> meta.get("counts_per_period"))
+    val fromMeta = Seq("--input-bits" -> meta.get("adc_bits"), "--adc-format" -> moire.recording.Recording.codeFormat(meta).toOption.map(_.name), "--counts" -> meta.get("counts_per_period"))
       .collect { case (o, Some(v)) if !userGave(o) => Seq(o, v) }.flatten
     subdivParser.constructEither(fromMeta ++ opts, allowPositional = false) match {
       case Right(c) => c

@@ -136,7 +136,7 @@ object Recorder {
   }
 
   private def metadata(o: RecordOptions, s: BoardSetup, st: StreamStats, elapsed: Double): Map[String, String] = Map(
-    "source" -> "de2-115", "decimation" -> s.decimation.toString, "adc_clock_hz" -> num(s.adcClockHz),
+    "source" -> "de2-115", "adc" -> "AD9226", "decimation" -> s.decimation.toString, "adc_clock_hz" -> num(s.adcClockHz),
     "counts_per_period" -> s.countsPerPeriod.toString, "frames" -> st.frames.toString, "records" -> st.records.toString,
     "crc_errors" -> st.crcErrors.toString, "bad_headers" -> st.badHeaders.toString, "gaps" -> st.indexGaps.toString,
     "missing_records" -> st.indexMissing.toString, "dropped_records" -> st.dropped.toString, "seq_gaps" -> st.seqGaps.toString,
