@@ -25,6 +25,10 @@ class PlausibleSpec extends AnyFlatSpec with Matchers {
     val r = explain(rec)
     println(s"40 Hz pickup in 0.1 s: findings [${describe(r)}]; unexplained [${r.unexplained.map(_.summary).mkString("; ")}]")
     r.findings.map(_.effect) should not contain "interference"
+    println(s"not tested: ${r.untested.mkString("; ")}")
+    r.untested.exists(_.startsWith("interference below 100.0 Hz")) shouldBe true
+    r.untested.exists(_.contains("not identifiable without a reference")) shouldBe true
+    r.untested.exists(_.startsWith("channel skew")) shouldBe true   // one constant speed
     r.unexplained.exists(u => u.where.startsWith("interference") && u.summary.contains("cycles")) shouldBe true
     // the same pickup over 20 cycles is a finding
     val long = explain(sim(Seq(EffectSpec("interference", Map("frequency_hz" -> 200.0, "amplitude_fs" -> 0.01))),

@@ -8,7 +8,7 @@ final case class Located(where: String, summary: String, params: Map[String, Dou
 /** The JSON report of one file. Information criterion: BIC = -2 ln L + k ln n (n = observations). */
 final case class Report(file: String, kind: String, baselineRms: Double, baselineBic: Double, baseline: Map[String, Double],
                         located: Seq[Located], findings: Seq[Finding], unexplained: Seq[Located], finalRms: Double, finalBic: Double,
-                        samples: Int, seconds: Double, notes: Seq[String] = Nil) {
+                        samples: Int, seconds: Double, notes: Seq[String] = Nil, untested: Seq[String] = Nil) {
   def json: ujson.Obj = ujson.Obj(
     "file" -> file, "kind" -> kind, "criterion" -> s"BIC = -2 ln L + k ln n; an effect is accepted when it lowers BIC by more than ${SignalExplain.Threshold}",
     "samples" -> samples,
@@ -18,6 +18,7 @@ final case class Report(file: String, kind: String, baselineRms: Double, baselin
     "unexplained" -> ujson.Arr(unexplained.map(_.json): _*),
     "final" -> ujson.Obj("rms" -> finalRms, "bic" -> finalBic),
     "notes" -> ujson.Arr(notes.map(ujson.Str(_)): _*),
+    "not_tested" -> ujson.Arr(untested.map(ujson.Str(_)): _*),
     "seconds" -> seconds)
 
   /** Short text for the terminal. */
@@ -33,6 +34,7 @@ final case class Report(file: String, kind: String, baselineRms: Double, baselin
     }
     unexplained.foreach(u => sb ++= s"  unexplained: ${u.where}: ${u.summary}\n")
     notes.foreach(n => sb ++= s"  note: $n\n")
+    untested.foreach(n => sb ++= s"  not tested: $n\n")
     sb ++= f"  final rms $finalRms%.4g, BIC $finalBic%.6g ($seconds%.1f s)\n"
     sb.toString
   }

@@ -95,7 +95,7 @@ object SignalExplain {
     }
     val unexplained = Locate.all(e).filter(_.significant) ++ rejected
     val report = Report(file, "signals", baseRms, baseBic, baseParams, located, fin.map(_._1), unexplained, e.rms, e.bic,
-      rec.length, (System.nanoTime() - t0) / 1e9, notes(e))
+      rec.length, (System.nanoTime() - t0) / 1e9, notes(e), Coverage.untested(e, cands.fMin, cands.fMax))
     Result(report, e, before, fin)
   }
 
