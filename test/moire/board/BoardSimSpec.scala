@@ -1,7 +1,6 @@
 package moire.board
 
 import chiseltest._
-import moire.board.de2115.{BoardParams, ClockSource, Regs}
 import moire.cordic.SimSupport
 import moire.signal.{AdcFormat, Motion, SignalParams}
 import moire.stream.{Command, Crc16, RecordFrame, Record}
