@@ -6,21 +6,9 @@ import moire.chain.CorrectedSubdivider
 import moire.io.{QuadratureCounter, QuadratureParams}
 import moire.io._
 import moire.signal.AdcFormat
-import moire.stream.Registers
+import moire.protocol.{RegReply, Registers, StreamRecord, StreamV1}
+import moire.protocol.Registers.{ControlBit, StatusBit}
 import moire.subdiv.{AdcPins, SubdivAdc, SubdivOut, SubdivStatus}
-
-/** Register addresses of stream v1 (moire.stream.Registers) and the id value. */
-object Regs {
-  val Id = Registers.Id.addr; val Version = Registers.Version.addr; val Status = Registers.Status.addr
-  val Control = Registers.Control.addr; val Decimation = Registers.Decimation.addr
-  val DroppedTotal = Registers.DroppedTotal.addr; val CmdErrors = Registers.CmdErrors.addr
-  val Position = Registers.Position.addr; val AdcClockHz = Registers.AdcClockHz.addr
-  val FrameRecords = Registers.FrameRecords.addr; val Counts = Registers.CountsPerPeriod.addr
-  val EncoderCount = Registers.EncoderCount.addr; val EncoderZCount = Registers.EncoderZCount.addr
-  val AdcFormatReg = Registers.AdcFormat.addr
-  /** Register 0x00: "MOIR". */
-  val IdValue: Long = 0x4D4F4952L
-}
 
 /** Everything of a board on the system clock, shared by the DE2-115 and the ULX3S harnesses:
   * AD9226 capture, datapath, record stream over the UART, register interface, encoder input counter
@@ -82,11 +70,10 @@ class BoardCore(val p: BoardParams) extends Module {
   require(latency == p.datapathLatency, s"datapath latency $latency, expected ${p.datapathLatency}")
 
   // The sample each output belongs to: the input side delayed by the datapath latency.
-  private val side = ShiftRegister(Cat(otrC, otrS, cosD, sinD, index), latency)
+  private val sPins = ShiftRegister(dpIn.bits, latency)
+  private val sIndex = ShiftRegister(index, latency)
   private val sideValid = ShiftRegister(sampleValid, latency, false.B, true.B)
   assert(out.valid === sideValid, "datapath output not aligned with its sample")
-  private val sIndex = side(31, 0)
-  private val sCodes = side(57, 32)   // sin 12, cos 12, otr_sin, otr_cos
 
   private val livePos = RegInit(0.S(32.W))
   private val present = RegInit(false.B)
@@ -98,8 +85,9 @@ class BoardCore(val p: BoardParams) extends Module {
 
   // ---- registers ----
   private val enable = RegInit(true.B)
-  private val decim = RegInit(p.decimation.U(25.W))
-  private val decCnt = RegInit(0.U(25.W))
+  private val decimWidth = log2Ceil(Registers.MaxDecimation + 1)
+  private val decim = RegInit(p.decimation.U(decimWidth.W))
+  private val decCnt = RegInit(0.U(decimWidth.W))
   private val droppedTotal = RegInit(0.U(32.W))
   private val cmdErrors = RegInit(0.U(32.W))
   private def sticky(event: Bool): Bool = {
@@ -111,10 +99,17 @@ class BoardCore(val p: BoardParams) extends Module {
   // ---- decimation and record FIFO ----
   private val take = out.valid && decCnt === 0.U && enable
   when(out.valid) { decCnt := Mux(decCnt === 0.U, decim - 1.U, decCnt - 1.U) }
-  private val word = Cat(0.U(2.W), dirNow, out.bits.stepFault, out.bits.overRange, out.bits.present, sCodes)
-  private val fifo = Module(new OverflowFifo(StreamRecord.width, p.fifoDepth))
+  private val record = Wire(new StreamRecord)
+  record.index := sIndex
+  record.position := pos32
+  record.word.sin := sPins.sin; record.word.cos := sPins.cos
+  record.word.otrSin := sPins.otrSin; record.word.otrCos := sPins.otrCos
+  record.word.present := out.bits.present; record.word.overRange := out.bits.overRange
+  record.word.stepFault := out.bits.stepFault; record.word.up := dirNow
+  record.word.reserved := 0.U
+  private val fifo = Module(new OverflowFifo(StreamV1.RecordLayout.width, p.fifoDepth))
   fifo.io.in.valid := take
-  fifo.io.in.bits := StreamRecord.pack(sIndex, word, pos32)
+  fifo.io.in.bits := record.asUInt
   when(fifo.io.dropped && droppedTotal =/= "hffffffff".U) { droppedTotal := droppedTotal + 1.U }
   private val fifoOverflow = sticky(fifo.io.dropped)
   private val otrSinSticky = sticky(sampleValid && otrS)
@@ -125,7 +120,9 @@ class BoardCore(val p: BoardParams) extends Module {
   private val rx = Module(new UartRx(p.baudDivisor))
   private val framer = Module(new FrameTx(p.frameRecords, log2Ceil(p.fifoDepth + 1)))
   private val cmdRx = Module(new CommandRx)
-  framer.io.records <> fifo.io.out
+  framer.io.records.valid := fifo.io.out.valid
+  framer.io.records.bits := fifo.io.out.bits.asTypeOf(new StreamRecord)
+  fifo.io.out.ready := framer.io.records.ready
   framer.io.recordCount := fifo.io.count
   framer.io.dropped := fifo.io.dropped
   tx.io.in <> framer.io.out
@@ -147,20 +144,24 @@ class BoardCore(val p: BoardParams) extends Module {
   io.pins.ENC_Z_OUT := RegNext(encZ, false.B)
 
   // ---- register file ----
-  private val statusWord = Cat(present, 0.U(2.W), otrCosSticky, otrSinSticky, fifoOverflow,
-    status.stepFault, status.overRange, status.overspeed)
+  private val statusFlags = Seq(StatusBit.Overspeed -> status.overspeed, StatusBit.OverRange -> status.overRange,
+    StatusBit.StepFault -> status.stepFault, StatusBit.FifoOverflow -> fifoOverflow, StatusBit.OtrSin -> otrSinSticky,
+    StatusBit.OtrCos -> otrCosSticky, StatusBit.Present -> present)
+  private val statusWord = VecInit(Seq.tabulate(StatusBit.named.map(_._1).max + 1)(statusFlags.toMap.getOrElse(_, false.B))).asUInt
+  private val adcFormatValue = if (p.adcFormat == AdcFormat.OffsetBinary) Registers.AdcOffsetBinary else Registers.AdcTwosComplement
   private def read(addr: UInt): UInt = MuxLookup(addr, 0.U(32.W))(Seq(
-    Regs.Id -> Regs.IdValue.U(32.W), Regs.Version -> 1.U, Regs.Status -> statusWord,
-    Regs.Control -> enable.asUInt, Regs.Decimation -> decim, Regs.DroppedTotal -> droppedTotal,
-    Regs.CmdErrors -> cmdErrors, Regs.Position -> livePos.asUInt, Regs.AdcClockHz -> p.adcClockHz.U,
-    Regs.FrameRecords -> p.frameRecords.U, Regs.Counts -> sp.counts.U, Regs.EncoderCount -> qc.io.out.bits,
-    Regs.EncoderZCount -> zCount, Regs.AdcFormatReg -> (if (p.adcFormat == AdcFormat.OffsetBinary) 0 else 1).U
-  ).map { case (a, v) => a.U(8.W) -> Cat(0.U(32.W), v)(31, 0) })
+    Registers.Id -> Registers.IdValue.U(32.W), Registers.Version -> StreamV1.Version.U, Registers.Status -> statusWord,
+    Registers.Control -> enable.asUInt, Registers.Decimation -> decim, Registers.DroppedTotal -> droppedTotal,
+    Registers.CmdErrors -> cmdErrors, Registers.Position -> livePos.asUInt, Registers.AdcClockHz -> p.adcClockHz.U,
+    Registers.FrameRecords -> p.frameRecords.U, Registers.CountsPerPeriod -> sp.counts.U,
+    Registers.EncoderCount -> qc.io.out.bits, Registers.EncoderZCount -> zCount, Registers.AdcFormat -> adcFormatValue.U
+  ).map { case (r, v) => r.addr.U(8.W) -> Cat(0.U(32.W), v)(31, 0) })
   private val cmd = cmdRx.io.cmd
   private val isWrite = cmd.valid && cmd.bits.write
-  clear := isWrite && cmd.bits.addr === Regs.Control.U && cmd.bits.value(1)
-  when(isWrite && cmd.bits.addr === Regs.Control.U) { enable := cmd.bits.value(0) }
-  when(isWrite && cmd.bits.addr === Regs.Decimation.U && cmd.bits.value >= 1.U && cmd.bits.value <= (1 << 24).U) {
+  clear := isWrite && cmd.bits.addr === Registers.Control.addr.U && cmd.bits.value(ControlBit.Clear)
+  when(isWrite && cmd.bits.addr === Registers.Control.addr.U) { enable := cmd.bits.value(ControlBit.Enable) }
+  when(isWrite && cmd.bits.addr === Registers.Decimation.addr.U && cmd.bits.value >= 1.U &&
+    cmd.bits.value <= Registers.MaxDecimation.U) {
     decim := cmd.bits.value; decCnt := 0.U
   }
   // The reply reads the register one clock later, so a write answers with the new value.

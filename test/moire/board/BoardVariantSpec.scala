@@ -3,6 +3,7 @@ package moire.board
 import chiseltest._
 import moire.chain.{AdcPinCodes, CorrectedSubdivModel}
 import moire.cordic.SimSupport
+import moire.protocol.Registers
 import moire.signal.{AdcFormat, Motion, SignalParams}
 import org.scalatest.flatspec.AnyFlatSpec
 
@@ -20,8 +21,8 @@ class BoardVariantSpec extends AnyFlatSpec with ChiselScalatestTester {
       val adc = Ad9226Model(AdcFormat.TwosComplement, SignalParams(amplitude = 0.85), Motion.Constant(-30e3, start = 0.6), p.adcClockHz)
       val b = new BoardBench(c, adc)
       b.reset()
-      assert(b.read(Regs.AdcFormatReg) == 1)
-      assert(b.read(Regs.AdcClockHz) == p.adcClockHz)
+      assert(b.read(Registers.AdcFormat.addr) == 1)
+      assert(b.read(Registers.AdcClockHz.addr) == p.adcClockHz)
       b.runUntil(200000, "5 record frames")(b.recordFrames.size >= 5)
       val recs = b.recordFrames.flatMap(_.records)
       assert(b.decoder.stats.crcErrors == 0 && recs.map(_.index).sliding(2).forall { case Seq(x, y) => y - x == p.decimation })

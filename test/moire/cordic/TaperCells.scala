@@ -1,6 +1,6 @@
 package moire.cordic
 
-import circt.stage.ChiselStage
+import moire.emit.{Emit, Target}
 import scala.sys.process._
 
 /** Benchmark, not a test: yosys cell counts of the conventional and the tapered sincos CORDIC beside
@@ -8,10 +8,6 @@ import scala.sys.process._
   * `synth_intel -family cycloneive`. Run: ./sbt "Test/runMain moire.cordic.TaperCells [out folder]"
   */
 object TaperCells {
-  /** Plain Verilog that yosys 0.23 reads (as moire.emit.Target.Verilog.opts). */
-  val firtoolOpts: Array[String] = Array("-disable-all-randomization", "-strip-debug-info",
-    "--lowering-options=disallowLocalVariables,disallowPackedArrays")
-
   def yosysCommand(top: String): String =
     s"read_verilog -sv $top.sv; synth_intel -family cycloneive -top $top; tee -q -o stat.txt stat"
 
@@ -19,7 +15,7 @@ object TaperCells {
   def cells(p: CordicParams, out: os.Path): (Int, Int) = {
     val dir = out / p.moduleName
     os.makeDir.all(dir)
-    ChiselStage.emitSystemVerilogFile(new Cordic(p), Array("--target-dir", dir.toString), firtoolOpts)
+    Emit.write(new Cordic(p), dir, Target.Verilog)
     val code = Process(Seq("yosys", "-q", "-p", yosysCommand(p.moduleName)), dir.toIO).!(ProcessLogger(_ => ()))
     require(code == 0, s"yosys failed in $dir")
     val stat = os.read.lines(dir / "stat.txt")

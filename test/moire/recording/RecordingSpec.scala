@@ -27,6 +27,21 @@ class RecordingSpec extends AnyFlatSpec with Matchers {
     }
   }
 
+  it should "take adc as free text and the code format from adc_format, and still read files that put the format under adc" in {
+    def fmt(meta: String*): AdcFormat = Recording.parse("f.csv", good.take(3) ++ meta ++ good.drop(3)).adc.format
+    fmt("# adc: AD9226") shouldBe AdcFormat.OffsetBinary
+    fmt("# adc: AD9226", "# adc_format: twos-complement") shouldBe AdcFormat.TwosComplement
+    fmt("# adc: twos-complement") shouldBe AdcFormat.TwosComplement
+    Recording.parse("f.csv", good.take(3) ++ Seq("# adc: AD9226 (12 bit, 65 MS/s)") ++ good.drop(3)).meta("adc") shouldBe "AD9226 (12 bit, 65 MS/s)"
+    val e = intercept[MoireError](Recording.parse("f.csv", good.take(3) ++ Seq("# adc_format: gray") ++ good.drop(3)))
+    e.getMessage should (startWith("f.csv:") and include("adc_format") and include("gray"))
+    val r = Recording(1e6, Adc(12, AdcFormat.TwosComplement), Array(1), Array(2), Map("adc" -> "AD9226"))
+    val p = os.temp(suffix = ".csv"); Recording.write(p, r)
+    val text = os.read.lines(p)
+    text should contain allOf ("# adc_format: twos-complement", "# adc: AD9226")
+    Recording.read(p).adc.format shouldBe AdcFormat.TwosComplement
+  }
+
   it should "reject malformed input with one message naming file, line and problem" in {
     def bad(lines: IndexedSeq[String], expect: String): Unit = {
       val e = intercept[MoireError](Recording.parse("f.csv", lines))
@@ -43,7 +58,7 @@ class RecordingSpec extends AnyFlatSpec with Matchers {
     bad(good.updated(7, "0,4096,1.5"), "f.csv:8: cos code 4096 is outside the 12-bit ADC range 0..4095")
     bad(good.updated(7, "0,-1,1.5"), "outside the 12-bit ADC range")
     bad(good.updated(6, "2048,4095"), "f.csv:7: 2 cells, the header has 3")
-    bad(good.updated(6, "2048,4095,NaN"), "f.csv:7: ref_deg 'NaN' is not a number")
+    bad(good.updated(6, "2048,4095,NaN"), "f.csv:7: ref_deg 'NaN' is not a finite number")
     bad(good.take(6), "no data rows")
     bad(good.updated(5, "a,b"), "header must name columns sin and cos")
     bad(good.updated(4, "# operator bench A"), "f.csv:5: metadata line must be")

@@ -3,6 +3,7 @@ package moire.stream
 import moire.MoireError
 import moire.cli.CliProcess
 import moire.harmonic.{CoefficientFile, Harmonic, HarmonicFitResult, HarmonicParams}
+import moire.protocol.Registers
 import org.scalatest.flatspec.AnyFlatSpec
 import org.scalatest.matchers.should.Matchers
 

@@ -1,5 +1,6 @@
 package moire.stream
 
+import moire.protocol.StreamV1
 import moire.signal.{Adc, Motion, SignalParams, SignalSim}
 import moire.subdiv.{SubdivModel, SubdivParams, SubdivSample}
 
@@ -16,7 +17,7 @@ object BoardStreamFixture {
       val r = model.process(SubdivSample(s.sinSigned(i), s.cosSigned(i), s.otrSin(i), s.otrCos(i)))
       if (i > 0 && r.position != last) up = r.position > last
       last = r.position
-      Record.of((first + i * decimation) & Wire.MaxU32, s.sin(i), s.cos(i), r.position.toInt, s.otrSin(i), s.otrCos(i),
+      Record.of((first + i * decimation) & StreamV1.MaxU32, s.sin(i), s.cos(i), r.position.toInt, s.otrSin(i), s.otrCos(i),
         r.present, r.overRange, r.stepFault, up)
     }
   }

@@ -1,5 +1,7 @@
 package moire.stream
 
+import moire.protocol.StreamV1
+
 /** A fake board on a pty for trying `record` and `board-reg` without hardware (needs socat):
   * ./sbt "Test/runMain moire.stream.FakeBoardDemo 60"  then, in another shell, the printed commands.
   * Streams 500 records/s (D 80000 at 40 MHz) of the simulated signal for the given seconds (default 60).
@@ -13,7 +15,7 @@ object FakeBoardDemo {
     try {
       val n = 8; val d = 80000L
       val recs = BoardStreamFixture.records((seconds * 500).toInt + n, d, 40e6)
-      board.stream(recs.grouped(n).map(rs => Planned(rs)), Wire.recordFrameBytes(n) * 500 / n)
+      board.stream(recs.grouped(n).map(rs => Planned(rs)), StreamV1.recordFrameBytes(n) * 500 / n)
       println(s"fake board on ${pty.host} for $seconds s; try:")
       println(s"""  ./sbt "run board-reg --port ${pty.host}"""")
       println(s"""  ./sbt "run record --port ${pty.host} --seconds 5 --out rec.csv"""")

@@ -1,5 +1,6 @@
 package moire.stream
 
+import moire.protocol.Registers
 import java.io.{FileInputStream, FileOutputStream, IOException}
 import java.util.concurrent.ConcurrentLinkedQueue
 import scala.collection.mutable
@@ -179,7 +180,7 @@ object FakeBoard {
   /** A register map as a DE2-115 build might have it. */
   def registers(decimation: Long = 80000, adcClockHz: Long = 40000000, countsPerPeriod: Long = 1024, adcFormat: Long = 0,
                 frameRecords: Long = 8): Map[Int, Long] = Map(
-    Registers.Id.addr -> BoardClient.MoirId, Registers.Version.addr -> 1L, Registers.Status.addr -> 0x100L,
+    Registers.Id.addr -> Registers.IdValue, Registers.Version.addr -> 1L, Registers.Status.addr -> 0x100L,
     Registers.Control.addr -> 1L, Registers.Decimation.addr -> decimation, Registers.AdcClockHz.addr -> adcClockHz,
     Registers.FrameRecords.addr -> frameRecords, Registers.CountsPerPeriod.addr -> countsPerPeriod,
     Registers.AdcFormat.addr -> adcFormat, Registers.Position.addr -> 0xFFFFFFF0L)

@@ -2,6 +2,7 @@ package moire.stream
 
 import moire.MoireError
 import moire.cli.CliProcess
+import moire.protocol.{Registers, StreamV1}
 import moire.recording.Recording
 import org.scalatest.flatspec.AnyFlatSpec
 import org.scalatest.matchers.should.Matchers
@@ -67,7 +68,7 @@ class RecorderSpec extends AnyFlatSpec with Matchers {
 
     rec.sampleRateHz shouldBe clock.toDouble / d
     val m = rec.meta
-    m("adc") shouldBe "offset-binary"; m("adc_bits") shouldBe "12"; m("source") shouldBe "de2-115"
+    m("adc_format") shouldBe "offset-binary"; m("adc") shouldBe "AD9226"; m("adc_bits") shouldBe "12"; m("source") shouldBe "de2-115"
     m("decimation") shouldBe d.toString; m("adc_clock_hz") shouldBe clock.toString; m("counts_per_period") shouldBe "1024"
     // injected: one CRC error (frame 30), one bad header (frame 75), frames 30, 60, 75 missing from seq,
     // index gaps at 30 (8 records), 45 (3 dropped), 60 (8), 75 (8)
@@ -96,7 +97,7 @@ class RecorderSpec extends AnyFlatSpec with Matchers {
     board.commands shouldBe empty
     r.stats.lost shouldBe false
     val rec = Recording.read(out)
-    rec.meta("adc") shouldBe "twos-complement"; rec.meta("crc_errors") shouldBe "0"; rec.meta("gaps") shouldBe "0"
+    rec.meta("adc_format") shouldBe "twos-complement"; rec.adc.format.name shouldBe "twos-complement"; rec.meta("crc_errors") shouldBe "0"; rec.meta("gaps") shouldBe "0"
     val idx = rec.extra("sample_index")
     idx.sliding(2).forall(p => p(1) - p(0) == d.toDouble) shouldBe true // unwrapped past 2^32
     idx.last should be > 4294967295.0
@@ -185,7 +186,7 @@ class RecorderSpec extends AnyFlatSpec with Matchers {
   it should "exit 0 with a WARNING line when frames were lost" in PtyPair { pty =>
     val (frames, _) = plan()
     val board = new FakeBoard(pty, FakeBoard.registers(), streamWhen = Some(_.addr == Registers.FrameRecords.addr))
-    board.stream(frames.iterator, Wire.recordFrameBytes(n) * 500 / n) // as fast as a real board makes 500 records/s
+    board.stream(frames.iterator, StreamV1.recordFrameBytes(n) * 500 / n) // as fast as a real board makes 500 records/s
     val out = pty.dir / "cli.csv"
     val (code, stdout, err) = try CliProcess.run("record", "--port", pty.host.toString, "--seconds", "1.5", "--out", out.toString, "--quiet")
       finally board.close()

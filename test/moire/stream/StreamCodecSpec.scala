@@ -1,5 +1,6 @@
 package moire.stream
 
+import moire.protocol.{Crc16, Registers, StreamV1}
 import org.scalacheck.Gen
 import org.scalatest.flatspec.AnyFlatSpec
 import org.scalatest.matchers.should.Matchers
@@ -13,7 +14,7 @@ class StreamCodecSpec extends AnyFlatSpec with Matchers with ScalaCheckPropertyC
 
   /** Records whose bytes hold the sync pattern a5 5a in index, word and position. */
   private def records(first: Long, n: Int, d: Long): IndexedSeq[Record] = IndexedSeq.tabulate(n) { k =>
-    Record((first + k * d) & Wire.MaxU32, 0x5AA5L + 0x5A00000L * (k % 2), 0x5AA55AA5 ^ k)
+    Record((first + k * d) & StreamV1.MaxU32, 0x5AA5L + 0x5A00000L * (k % 2), 0x5AA55AA5 ^ k)
   }
   /** k record frames of n records, seq from seq0, sample index from 0 in steps of d. */
   private def stream(k: Int, n: Int = 8, d: Long = 1, seq0: Int = 0): IndexedSeq[Frame] =
@@ -51,7 +52,7 @@ class StreamCodecSpec extends AnyFlatSpec with Matchers with ScalaCheckPropertyC
       bytes(0xBC, 0x3A, 0x12, 0x25) ++ bytes(0xFE, 0xFF, 0xFF, 0xFF)
     val crc = Crc16.of(body)
     hex(a) shouldBe hex(bytes(0xA5, 0x5A) ++ body ++ bytes(crc & 0xFF, crc >> 8))
-    a.length shouldBe Wire.recordFrameBytes(1)
+    a.length shouldBe StreamV1.recordFrameBytes(1)
   }
 
   it should "lay out a register reply and a command as the spec says" in {
@@ -67,12 +68,12 @@ class StreamCodecSpec extends AnyFlatSpec with Matchers with ScalaCheckPropertyC
   }
 
   private val genRecord: Gen[Record] = for {
-    i <- Gen.choose(0L, Wire.MaxU32); w <- Gen.choose(0L, Wire.MaxU32); p <- Gen.choose(Int.MinValue, Int.MaxValue)
+    i <- Gen.choose(0L, StreamV1.MaxU32); w <- Gen.choose(0L, StreamV1.MaxU32); p <- Gen.choose(Int.MinValue, Int.MaxValue)
   } yield Record(i, w, p)
   private def genFrame(seq: Int): Gen[Frame] = Gen.frequency(
     3 -> (for { n <- Gen.choose(1, 255); rs <- Gen.listOfN(n, genRecord); d <- Gen.choose(0, 0xFFFF) }
       yield RecordFrame(seq, d, rs.toIndexedSeq)),
-    1 -> (for { a <- Gen.choose(0, 255); v <- Gen.choose(0L, Wire.MaxU32) } yield RegisterReply(seq, a, v)))
+    1 -> (for { a <- Gen.choose(0, 255); v <- Gen.choose(0L, StreamV1.MaxU32) } yield RegisterReply(seq, a, v)))
   private val genStream: Gen[List[Frame]] = for {
     k <- Gen.choose(1, 6); seq0 <- Gen.choose(0, 0xFFFF)
     fs <- Gen.sequence[List[Frame], Frame]((0 until k).map(j => genFrame((seq0 + j) & 0xFFFF)))
@@ -107,7 +108,7 @@ class StreamCodecSpec extends AnyFlatSpec with Matchers with ScalaCheckPropertyC
   it should "lose exactly the damaged frame for a corrupted byte anywhere in it, and count it once" in {
     val fs = stream(5)
     val a = Encoder.frames(fs)
-    val len = Wire.recordFrameBytes(8)
+    val len = StreamV1.recordFrameBytes(8)
     for (at <- 2 * len until 3 * len; flip <- Seq(0x01, 0x80, 0xFF)) withClue(s"byte $at ^ $flip: ") {
       val b = a.clone(); b(at) = (b(at) ^ flip).toByte
       val (out, st) = decode(b)
@@ -169,9 +170,9 @@ class StreamCodecSpec extends AnyFlatSpec with Matchers with ScalaCheckPropertyC
     val (out, st) = decode(garbage ++ a)
     out shouldBe fs; st.leadingBytes shouldBe garbage.length; st.crcErrors shouldBe 0; st.badHeaders shouldBe 0
     // a port opened mid-frame: every start inside the first frame
-    for (cut <- 1 until Wire.recordFrameBytes(8)) withClue(s"cut $cut: ") {
+    for (cut <- 1 until StreamV1.recordFrameBytes(8)) withClue(s"cut $cut: ") {
       val (o, t) = decode(a.drop(cut))
-      o shouldBe fs.tail; t.leadingBytes shouldBe Wire.recordFrameBytes(8) - cut
+      o shouldBe fs.tail; t.leadingBytes shouldBe StreamV1.recordFrameBytes(8) - cut
       t.crcErrors shouldBe 0; t.badHeaders shouldBe 0; t.seqGaps shouldBe 0; t.lost shouldBe false
     }
   }
@@ -187,7 +188,7 @@ class StreamCodecSpec extends AnyFlatSpec with Matchers with ScalaCheckPropertyC
   it should "report a stream cut inside a frame as one truncated frame" in {
     val fs = stream(3)
     val a = Encoder.frames(fs)
-    val len = Wire.recordFrameBytes(8)
+    val len = StreamV1.recordFrameBytes(8)
     for (cut <- 1 until len) withClue(s"cut $cut: ") {
       val (out, st) = decode(a.dropRight(cut))
       out shouldBe fs.take(2); st.truncated shouldBe 1; st.truncatedBytes shouldBe len - cut
@@ -207,8 +208,8 @@ class StreamCodecSpec extends AnyFlatSpec with Matchers with ScalaCheckPropertyC
 
   it should "count seq gaps, sample-index gaps and dropped records, and follow both wraps" in {
     val d = 5L
-    val f0 = RecordFrame(0xFFFE, 0, records(Wire.MaxU32 - 2 * d + 1, 2, d)) // index wraps inside the next frame
-    val f1 = RecordFrame(0xFFFF, 0, records((f0.records.last.index + d) & Wire.MaxU32, 2, d))
+    val f0 = RecordFrame(0xFFFE, 0, records(StreamV1.MaxU32 - 2 * d + 1, 2, d)) // index wraps inside the next frame
+    val f1 = RecordFrame(0xFFFF, 0, records((f0.records.last.index + d) & StreamV1.MaxU32, 2, d))
     val f2 = RecordFrame(0x0000, 3, records(f1.records.last.index + 4 * d, 2, d)) // 3 records dropped on the board
     val f3 = RecordFrame(0x0003, 0, records(f2.records.last.index + 17 * d, 2, d)) // 2 frames lost: 16 records
     val f4 = RecordFrame(0x0004, 0, records(f3.records.last.index + 3, 2, d)) // misaligned step: a gap, count unknown
@@ -239,7 +240,7 @@ class StreamCodecSpec extends AnyFlatSpec with Matchers with ScalaCheckPropertyC
     Registers.name(0x19) shouldBe "h2_c"
     Registers.parse("0x100").left.toOption.get should include("outside")
     Registers.parse("speed").left.toOption.get should include("unknown")
-    Registers.parseValue("-1") shouldBe Right(Wire.MaxU32)
+    Registers.parseValue("-1") shouldBe Right(StreamV1.MaxU32)
     Registers.parseValue("0x10") shouldBe Right(16L)
     Registers.parseValue("x").isLeft shouldBe true
     Registers.all.map(_.addr).distinct.size shouldBe Registers.all.size

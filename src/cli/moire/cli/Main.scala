@@ -85,7 +85,7 @@ object Main {
     AccuracyTable.print(rows)
     json.foreach { f =>
       val path = os.Path(f, os.pwd)
-      os.write.over(path, ujson.write(ujson.Arr(rows.map(_.json): _*), indent = 2), createFolders = true)
+      moire.files.SafeWrite.text(path, ujson.write(ujson.Arr(rows.map(_.json): _*), indent = 2))
       println(s"wrote $path")
     }
     val failed = rows.count(!_.holds)
@@ -235,7 +235,10 @@ object Main {
 
   def oneLine(msg: String): String = SubdivCmd.oneLine(msg)
 
-  def main(args: Array[String]): Unit = {
+  def main(args: Array[String]): Unit = { val code = run(args); if (code != 0) sys.exit(code) }
+
+  /** The command line without leaving the JVM: the exit code (2 for a user's mistake, told in one line). */
+  def run(args: Array[String]): Int = {
     val argv0 = if (args.isEmpty) Array("emit") else args
     // `board de2-115 --out DIR`: the board name as a positional word.
     val argv = if (argv0.length > 1 && argv0(0) == "board" && !argv0(1).startsWith("-")) Array("board", "--name") ++ argv0.tail else argv0
@@ -244,20 +247,27 @@ object Main {
     if (help && (argv.head == "--help" || argv.head == "-h")) {
       println("moire: signal processing generators for optical gratings\nsubcommands:")
       println(parser.helpText(sorted = false))
-      return
+      return 0
     }
     try {
       parser.runEither(argv.toSeq, allowPositional = false) match {
         case Left(msg) if help =>
           val at = msg.indexOf("Expected Signature:")
           println(if (at >= 0) "Usage: " + msg.substring(at + "Expected Signature:".length).trim else msg)
+          0
         case Left(msg) =>
           System.err.println(s"moire: ${oneLine(msg)}")
-          sys.exit(2)
-        case Right(_) =>
+          2
+        case Right(_) => 0
       }
     } catch {
-      case e: moire.MoireError => System.err.println(s"moire: ${e.getMessage}"); sys.exit(2)
+      case e: moire.MoireError => System.err.println(s"moire: ${e.getMessage}"); 2
+      // Last resort: what a library let through still becomes one line in words, never a class name.
+      case e: java.io.IOException => System.err.println(s"moire: ${moire.files.SafeWrite.reason(e)}"); 2
+      case e: IllegalArgumentException =>
+        System.err.println(s"moire: ${Option(e.getMessage).getOrElse("invalid value").stripPrefix("requirement failed: ")}"); 2
+      case _: OutOfMemoryError =>
+        System.err.println("moire: out of memory; give the JVM more (e.g. JAVA_OPTS=-Xmx8g) or a shorter recording"); 2
     }
   }
 }

@@ -58,9 +58,9 @@ object SweepRun {
   def write(rows: Seq[SweepRow], out: os.Path): Seq[os.Path] = {
     os.makeDir.all(out)
     val csv = out / "sweep.csv"
-    os.write.over(csv, (SweepRow.csvHeader +: rows.map(SweepRow.csv)).mkString("", "\n", "\n"))
+    moire.files.SafeWrite.text(csv, (SweepRow.csvHeader +: rows.map(SweepRow.csv)).mkString("", "\n", "\n"))
     val json = out / "sweep.json"
-    os.write.over(json, ujson.write(ujson.Arr(rows.map(_.json): _*), indent = 2))
+    moire.files.SafeWrite.text(json, ujson.write(ujson.Arr(rows.map(_.json): _*), indent = 2))
     val pngs = rows.map(_.function).distinct.map { f =>
       val png = out / s"pareto-$f.png"
       ParetoPlot.write(png, f, rows.filter(_.function == f))

@@ -57,23 +57,7 @@ object Yosys {
     * are the sum over instances), then flattens the mapped netlist for the longest path.
     */
   def script(top: String, files: Seq[os.Path], flatten: Boolean): String = Seq(
-    Seq(s"read_verilog -sv ${files.map(f => "\"" + f + "\"").mkString(" ")}",
-      "read_verilog -lib mult_stub.v",
-      // Vendor PLL (board tops) as a black box: a hard block, no logic cells.
-      "read_verilog -lib -DNO_CLEARBOX +/intel/common/altpll_bb.v",
-      s"hierarchy -check -top $top",
-      "proc"),
-    // Memories sit in their own firtool modules with separate read and write clock ports; inline
-    // those modules into their parents so that yosys sees one clock and can spot a synchronous read.
-    if (flatten) Seq("flatten", "opt_clean")
-    else Seq("setattr -mod -set keep_hierarchy 1 *", "setattr -mod -unset keep_hierarchy m:* %m", "flatten",
-      "setattr -mod -unset keep_hierarchy *", "opt_clean"),
-    Seq("tee -q -o pre.json stat -json",
-      "memory -nomap",
-      s"chtype -set $m9kCell t:$$mem_v2 r:RD_CLK_ENABLE=1'1 %i",
-      s"tee -q -o m9k.txt dump t:$m9kCell",
-      "opt_expr", "opt_clean", "wreduce", "opt_clean",
-      "tee -q -o mul.txt dump t:$mul",
+    coarse(top, files, flatten) ++ Seq(
       s"chtype -set $multCell t:$$mul",
       s"synth_intel -family cycloneive -top $top" + (if (flatten) "" else " -noflatten"),
       "tee -q -o stat.json stat -json"),
@@ -83,6 +67,35 @@ object Yosys {
     Seq("tee -q -o ltp.txt ltp -noff w:* t:*_lcell_comb")
   ).flatten.mkString("\n") + "\n"
 
+  /** The script up to the multiplications' dump (`mul.txt`): reading, memories, width reduction. */
+  private def coarse(top: String, files: Seq[os.Path], flatten: Boolean): Seq[String] =
+    Seq(s"read_verilog -sv ${files.map(f => "\"" + f + "\"").mkString(" ")}",
+      "read_verilog -lib mult_stub.v",
+      // Vendor PLL (board tops) as a black box: a hard block, no logic cells.
+      "read_verilog -lib -DNO_CLEARBOX +/intel/common/altpll_bb.v",
+      s"hierarchy -check -top $top",
+      "proc") ++
+    // Memories sit in their own firtool modules with separate read and write clock ports; inline
+    // those modules into their parents so that yosys sees one clock and can spot a synchronous read.
+    (if (flatten) Seq("flatten", "opt_clean")
+    else Seq("setattr -mod -set keep_hierarchy 1 *", "setattr -mod -unset keep_hierarchy m:* %m", "flatten",
+      "setattr -mod -unset keep_hierarchy *", "opt_clean")) ++
+    Seq("tee -q -o pre.json stat -json",
+      "memory -nomap",
+      s"chtype -set $m9kCell t:$$mem_v2 r:RD_CLK_ENABLE=1'1 %i",
+      s"tee -q -o m9k.txt dump t:$m9kCell",
+      "opt_expr", "opt_clean", "wreduce", "opt_clean",
+      "tee -q -o mul.txt dump t:$mul")
+
+  /** The multiplier blocks alone, as `run` counts them on a flat design, in seconds instead of minutes. */
+  def multipliers(top: String, files: Seq[os.Path], work: os.Path, timeoutSeconds: Int): Long = {
+    os.makeDir.all(work)
+    os.write.over(work / "mult_stub.v", multStub)
+    os.write.over(work / "synth.ys", (coarse(top, files, flatten = true) :+ "").mkString("\n"))
+    exec(top, work, timeoutSeconds, _ => ())
+    StatParse.multBlocks(os.read(work / "mul.txt"))
+  }
+
   /** Synthesizes `files` with `top` in `work`; progress lines every 30 s go to `progress`. */
   def run(top: String, files: Seq[os.Path], work: os.Path, flatten: Boolean, timeoutSeconds: Int,
           progress: String => Unit = _ => ()): SynthResult = {
@@ -90,6 +103,18 @@ object Yosys {
     os.makeDir.all(work)
     os.write.over(work / "mult_stub.v", multStub)
     os.write.over(work / "synth.ys", script(top, files, flatten))
+    val seconds = exec(top, work, timeoutSeconds, progress)
+    if (!os.exists(work / "stat.json")) throw new YosysError(s"yosys wrote no statistics for $top (log: ${work / "yosys.log"})")
+    val (total, modules) = StatParse.cells(os.read(work / "stat.json"), top)
+    val memBits = StatParse.memoryBits(os.read(work / "pre.json"))
+    val mults = StatParse.multBlocks(os.read(work / "mul.txt"))
+    val ltp = StatParse.longestPath(os.read(work / "ltp.txt"))
+    val (ramBits, m9k) = StatParse.blockRam(os.read(work / "m9k.txt"))
+    SynthResult(top, total, if (flatten) Nil else modules, memBits, mults, ltp, seconds, ramBits, m9k)
+  }
+
+  /** Runs `synth.ys` in `work` within the time limit; returns the seconds taken. */
+  private def exec(top: String, work: os.Path, timeoutSeconds: Int, progress: String => Unit): Double = {
     val t0 = System.nanoTime()
     val proc = os.proc("yosys", "-q", "-l", "yosys.log", "-s", "synth.ys").spawn(cwd = work, stdout = os.Pipe, stderr = os.Pipe,
       mergeErrIntoOut = true)
@@ -105,17 +130,11 @@ object Yosys {
       proc.destroy(); proc.waitFor(2000L); if (proc.isAlive()) proc.destroyForcibly()
       throw new YosysError(s"yosys did not finish $top within $timeoutSeconds s (raise --timeout; big designs can take many minutes)")
     }
-    val seconds = (System.nanoTime() - t0) / 1e9
-    if (proc.exitCode() != 0 || !os.exists(work / "stat.json")) {
+    if (proc.exitCode() != 0) {
       val log = if (os.exists(work / "yosys.log")) os.read.lines(work / "yosys.log") else Nil
       val err = log.find(_.contains("ERROR")).getOrElse(s"exit code ${proc.exitCode()}").trim
       throw new YosysError(s"yosys failed on $top: $err (log: ${work / "yosys.log"})")
     }
-    val (total, modules) = StatParse.cells(os.read(work / "stat.json"), top)
-    val memBits = StatParse.memoryBits(os.read(work / "pre.json"))
-    val mults = StatParse.multBlocks(os.read(work / "mul.txt"))
-    val ltp = StatParse.longestPath(os.read(work / "ltp.txt"))
-    val (ramBits, m9k) = StatParse.blockRam(os.read(work / "m9k.txt"))
-    SynthResult(top, total, if (flatten) Nil else modules, memBits, mults, ltp, seconds, ramBits, m9k)
+    (System.nanoTime() - t0) / 1e9
   }
 }

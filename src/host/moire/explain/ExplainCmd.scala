@@ -11,6 +11,15 @@ object ExplainCmd {
                               effects: Seq[String], model: Option[String])
 
   def model(o: SimOptions): PhysicsModel = {
+    for ((name, v) <- Seq("--sample-rate-hz" -> o.sampleRateHz, "--amplitude" -> o.amplitude, "--offset-sin" -> o.offsetSin,
+      "--offset-cos" -> o.offsetCos, "--gain-sin" -> o.gainSin, "--gain-cos" -> o.gainCos, "--phase-error-deg" -> o.phaseErrorDeg,
+      "--noise" -> o.noise) ++ o.linesPerRev.map("--lines-per-rev" -> _))
+      if (v.isNaN || v.isInfinite) throw new ExplainError(s"$name must be a finite number, got $v")
+    if (!(o.sampleRateHz > 0 && o.sampleRateHz <= Recording.MaxSampleRateHz))
+      throw new ExplainError(s"--sample-rate-hz must be above 0 and at most 1e11 Hz, got ${o.sampleRateHz}")
+    if (o.noise < 0) throw new ExplainError(s"--noise must be 0 or more (full-scale rms), got ${o.noise}")
+    if (o.samples < 1) throw new ExplainError(s"--samples must be at least 1, got ${o.samples}")
+    if (!(o.amplitude > 0)) throw new ExplainError(s"--amplitude must be above 0, got ${o.amplitude}")
     val fmt = AdcFormat.parse(o.adc).fold(e => throw new ExplainError(s"--adc: $e"), identity)
     val d = try PhysicsModel(SignalParams(o.amplitude, o.offsetSin, o.offsetCos, o.gainSin, o.gainCos, o.phaseErrorDeg, Nil, o.noise, o.seed),
       PhysicsModel.parseMotion(o.motion), o.sampleRateHz, o.samples, Adc(o.adcBits, fmt), o.linesPerRev, o.effects.map(EffectSpec.parse))
@@ -42,31 +51,62 @@ object ExplainCmd {
       v.obj.get("effects").map(_.arr.toSeq.map(EffectSpec.fromJson(_, f))).getOrElse(Nil)
     }.getOrElse(Nil)
     val paths = files.map(f => os.Path(f, os.pwd))
-    val kinds = paths.map(kindOf)   // check every file's first line before the long work
-    paths.zip(kinds).map { case (p, kind) =>
-      val stem = p.last.stripSuffix(".csv")
-      val progress = if (quiet) Progress.none else Progress.bar(stem)
-      val report = try {
-        if (kind == "calibration") {
-          val r = CalibrationExplain.run(p.toString, Calibration.read(p))
-          plotDir.foreach(d => CalibrationExplain.plots(r, os.Path(d, os.pwd), stem))
-          r.report
-        } else {
-          val rec = Recording.read(p)
-          val r = SignalExplain.run(p.toString, rec, givenEffects, progress)
-          progress.close()
-          plotDir.foreach(d => Plots.signals(r, os.Path(d, os.pwd), stem))
-          // Board outputs (a `position` column) against the RTL run on the recorded codes.
-          rtl.filter(_ => rec.extra.contains("position")).map { opts =>
-            val (f, notes) = BoardCheck.run(p.toString, rec, opts, s => if (!quiet) System.err.println(s"explain: $s"))
-            r.report.copy(findings = r.report.findings ++ f, notes = r.report.notes ++ notes)
-          }.getOrElse(r.report)
-        }
-      } finally progress.close()
-      jsonDir.foreach(d => os.write.over(os.Path(d, os.pwd) / s"$stem.json", ujson.write(report.json, indent = 2), createFolders = true))
-      if (!quiet) print(report.text)
-      report
+    // Outputs are checked before the long work: writable folders, no two reports under one name.
+    val outDirs = (jsonDir ++ plotDir).map(d => os.Path(d, os.pwd))
+    outDirs.foreach(moire.files.SafeWrite.checkFolder)
+    if (outDirs.nonEmpty) paths.groupBy(_.last.stripSuffix(".csv")).collectFirst { case (stem, ps) if ps.distinct.size > 1 =>
+      throw new ExplainError(s"${ps.distinct.mkString(" and ")} share the name $stem: their reports would overwrite each other; rename one")
     }
+    // Every file gets its report or its one-line error; the command fails after all were tried.
+    val results = paths.map { p =>
+      try Right(explainOne(p, givenEffects, jsonDir, plotDir, quiet, rtl))
+      catch { case e: moire.MoireError => if (paths.size > 1) System.err.println(s"moire: ${e.getMessage}"); Left(e) }
+    }
+    val failed = results.collect { case Left(e) => e }
+    if (failed.nonEmpty) {
+      if (paths.size == 1) throw failed.head
+      throw new ExplainError(s"${failed.size} of ${paths.size} files failed (their errors are above); the other reports are complete")
+    }
+    results.collect { case Right(r) => r }
+  }
+
+  private def explainOne(p: os.Path, givenEffects: Seq[EffectSpec], jsonDir: Option[String], plotDir: Option[String],
+                         quiet: Boolean, rtl: Option[Seq[String]]): Report = {
+    val kind = kindOf(p)
+    val stem = p.last.stripSuffix(".csv")
+    val progress = if (quiet) Progress.none else Progress.bar(stem)
+    val report = try {
+      if (kind == "calibration") {
+        val r = CalibrationExplain.run(p.toString, Calibration.read(p))
+        plotDir.foreach(d => CalibrationExplain.plots(r, os.Path(d, os.pwd), stem))
+        r.report
+      } else {
+        val rec = Recording.read(p)
+        checkSignals(p, rec)
+        val r = SignalExplain.run(p.toString, rec, givenEffects, progress)
+        progress.close()
+        plotDir.foreach(d => Plots.signals(r, os.Path(d, os.pwd), stem))
+        // Board outputs (a `position` column) against the RTL run on the recorded codes.
+        rtl.filter(_ => rec.extra.contains("position")).map { opts =>
+          val (f, notes) = BoardCheck.run(p.toString, rec, opts, s => if (!quiet) System.err.println(s"explain: $s"))
+          r.report.copy(findings = r.report.findings ++ f, notes = r.report.notes ++ notes)
+        }.getOrElse(r.report)
+      }
+    } finally progress.close()
+    jsonDir.foreach(d => moire.files.SafeWrite.text(os.Path(d, os.pwd) / s"$stem.json", ujson.write(report.json, indent = 2)))
+    if (!quiet) print(report.text)
+    report
+  }
+
+  /** Fewest samples explain fits (a one-period recording of 1000 samples is fine; ten rows are not). */
+  val MinSamples = 64
+
+  /** What no fit can use: too few samples, a channel that never changes (dead or unconnected). */
+  def checkSignals(p: os.Path, rec: Recording): Unit = {
+    if (rec.length < MinSamples)
+      throw new ExplainError(s"$p: ${rec.length} samples; explain needs at least $MinSamples (and a few fringe periods)")
+    for ((name, c) <- Seq("sin" -> rec.sin, "cos" -> rec.cos) if c.forall(_ == c(0)))
+      throw new ExplainError(s"$p: $name channel constant at code ${c(0)} over all ${rec.length} samples: a dead or unconnected channel, nothing to fit")
   }
 
   /** Options may also follow the file names (mainargs puts everything after the first file into `rest`). */
@@ -102,7 +142,7 @@ object ExplainCmd {
       |    --model MODEL.json   effects the simulation already has: fitted, not reported
       |    --quiet              no progress bar or text report
       |    --subdiv "OPTIONS"   emit-subdiv options of the board's subdivider (default: from the metadata adc_bits,
-      |                         adc, counts_per_period); a recording with a position column is replayed through this
+      |                         adc_format, counts_per_period); a recording with a position column is replayed through this
       |                         RTL (Verilator) and the board's outputs are compared with it, sample by sample
       |    --no-rtl             do not compare board outputs with the RTL""".stripMargin
 

@@ -1,5 +1,7 @@
 package moire.stream
 
+import moire.protocol.{Reg, Registers, StreamV1}
+
 
 /** The board did not answer a command in time. */
 final class NoAnswer(val addr: Int, msg: String) extends Exception(msg)
@@ -42,16 +44,16 @@ final class BoardClient(val link: ByteLink, timeoutMs: Int = 500, retries: Int =
 }
 
 object BoardClient {
-  val MoirId: Long = 0x4D4F4952L
-
   /** Reads id and version and checks them; one clear line when the board does not answer or is not ours. */
   def check(c: BoardClient, baud: Int, hint: String): (Long, Long) = {
     val id = try c.read(Registers.Id) catch {
       case e: NoAnswer => throw new StreamError(s"${e.getMessage}: check --baud ($baud), the wiring and that the moire design is loaded$hint")
     }
-    if (id != MoirId) throw new StreamError(f"${c.link.name}: register id reads 0x$id%08x, not 0x4d4f4952 (MOIR): not a moire board?")
+    if (id != Registers.IdValue)
+      throw new StreamError(f"${c.link.name}: register id reads 0x$id%08x, not 0x${Registers.IdValue}%08x (MOIR): not a moire board?")
     val v = c.read(Registers.Version)
-    if (v != 1) throw new StreamError(s"${c.link.name}: the board speaks stream format version $v; this host tool reads version 1")
+    if (v != StreamV1.Version)
+      throw new StreamError(s"${c.link.name}: the board speaks stream format version $v; this host tool reads version ${StreamV1.Version}")
     (id, v)
   }
 }

@@ -1,6 +1,7 @@
 package moire.stream
 
 import moire.harmonic.CoefficientFile
+import moire.protocol.{Registers, StreamV1}
 
 /** `moire board-reg`: read and write the board's registers by name, load harmonic coefficients. */
 object BoardReg {
@@ -49,12 +50,13 @@ object BoardReg {
   def line(addr: Int, v: Long): String = {
     val signed = if (v >= (1L << 31)) v - (1L << 32) else v
     val note = addr match {
-      case 0x00 => new String(Array(24, 16, 8, 0).map(s => ((v >> s) & 0xFF).toByte), "ISO-8859-1").filter(ch => ch >= ' ' && ch < 127)
-      case 0x02 => Seq(0 -> "overspeed", 1 -> "over_range", 2 -> "step_fault", 3 -> "fifo_overflow", 4 -> "otr_sin", 5 -> "otr_cos", 8 -> "present")
-        .collect { case (b, n) if ((v >> b) & 1) != 0 => n }.mkString(" ")
-      case 0x03 => if ((v & 1) != 0) "stream on" else "stream off"
-      case 0x07 | 0x0B | 0x0C => s"signed $signed"
-      case 0x0D => v match { case 0 => "offset-binary"; case 1 => "twos-complement"; case _ => "unknown" }
+      case Registers.Id.addr => new String(Array(24, 16, 8, 0).map(s => ((v >> s) & 0xFF).toByte), "ISO-8859-1").filter(ch => ch >= ' ' && ch < 127)
+      case Registers.Status.addr => Registers.StatusBit.named.collect { case (b, n) if ((v >> b) & 1) != 0 => n }.mkString(" ")
+      case Registers.Control.addr => if (((v >> Registers.ControlBit.Enable) & 1) != 0) "stream on" else "stream off"
+      case Registers.Position.addr | Registers.EncoderCount.addr | Registers.EncoderZCount.addr => s"signed $signed"
+      case Registers.AdcFormat.addr => v match {
+        case Registers.AdcOffsetBinary => "offset-binary"; case Registers.AdcTwosComplement => "twos-complement"; case _ => "unknown"
+      }
       case _ => ""
     }
     f"0x$addr%02x ${Registers.name(addr)}%-18s $v%10d  0x$v%08x  $note".trim
@@ -68,7 +70,7 @@ object BoardReg {
     val text = try os.read(path) catch { case e: java.io.IOException => throw new StreamError(s"$path: cannot read (${e.getMessage})") }
     def place(where: String, a: Long, d: Long): (Int, Long) = {
       if (a < 0 || Registers.HarmonicBase + a > 0xFF) throw new StreamError(s"$where: window address $a is outside 0..${0xFF - Registers.HarmonicBase}")
-      if (d < 0 || d > Wire.MaxU32) throw new StreamError(s"$where: data $d is not a u32")
+      if (d < 0 || d > StreamV1.MaxU32) throw new StreamError(s"$where: data $d is not a u32")
       (Registers.HarmonicBase + a.toInt) -> d
     }
     def hex(where: String, s: String): Long = scala.util.Try(java.lang.Long.parseLong(s.trim.stripPrefix("0x").stripPrefix("0X"), 16))

@@ -1,5 +1,8 @@
 package moire.stream
 
+import moire.protocol.{Crc16, Registers}
+import moire.protocol.StreamV1._
+
 /** Running totals of a [[Decoder]]. Every byte that is not part of a good frame is accounted for.
   *
   * @param skippedBytes  bytes outside good frames (garbage, corrupted or truncated frames)
@@ -12,14 +15,17 @@ package moire.stream
   * @param indexGaps     places where the sample index did not go up by D; `indexMissing` records missing
   *                      in total (counted where the step is a forward multiple of D)
   * @param dropped       sum of the frames' `dropped` fields (records lost on the board)
+  * @param burstGaps     burst sample frames whose offset did not follow the previous one (0 starts a burst);
+  *                      `burstMissing` samples missing in total
   */
 final case class StreamStats(
   bytes: Long = 0, frames: Long = 0, recordFrames: Long = 0, replies: Long = 0, records: Long = 0,
   skippedBytes: Long = 0, leadingBytes: Long = 0, crcErrors: Long = 0, badHeaders: Long = 0, truncated: Long = 0, truncatedBytes: Long = 0,
-  seqGaps: Long = 0, seqMissing: Long = 0, indexGaps: Long = 0, indexMissing: Long = 0, dropped: Long = 0
+  seqGaps: Long = 0, seqMissing: Long = 0, indexGaps: Long = 0, indexMissing: Long = 0, dropped: Long = 0,
+  burstInfos: Long = 0, burstFrames: Long = 0, burstSamples: Long = 0, burstGaps: Long = 0, burstMissing: Long = 0
 ) {
   /** Anything lost or damaged (garbage before the first frame alone does not count). */
-  def lost: Boolean = crcErrors + badHeaders + truncated + seqGaps + indexGaps + dropped > 0
+  def lost: Boolean = crcErrors + badHeaders + truncated + seqGaps + indexGaps + dropped + burstGaps > 0
 }
 
 /** Incremental decoder of board -> host frames: feed bytes in any chunking, get the good frames in order.
@@ -30,7 +36,7 @@ final case class StreamStats(
   * seq is checked across all frames, the sample index (step `decimation`) across all records.
   */
 final class Decoder(val decimation: Long) {
-  require(decimation >= 1 && decimation <= (1L << 24), s"decimation must be in 1..${1L << 24}, got $decimation")
+  require(decimation >= 1 && decimation <= Registers.MaxDecimation, s"decimation must be in 1..${Registers.MaxDecimation}, got $decimation")
   private var buf = new Array[Byte](1 << 12)
   private var start = 0
   private var end = 0
@@ -39,7 +45,8 @@ final class Decoder(val decimation: Long) {
   private var pendingTrunc = -1L // finishing: offset of an incomplete frame, truncated unless a good frame follows
   private var lastSeq = -1
   private var lastIndex = -1L
-  private var frameLen = Wire.ReplyBytes // length of the last good record frame: the span assumed for a bad header
+  private var nextOffset = 0L // the burst offset the next burst sample frame should have
+  private var frameLen = ReplyBytes // length of the last good record frame: the span assumed for a bad header
   private var finished = false
   private var s = StreamStats()
 
@@ -65,7 +72,7 @@ final class Decoder(val decimation: Long) {
     if (finished) return Vector.empty
     val out = parse(finishing = true)
     if (end - start == 1) { // a lone trailing byte
-      if (buf(start) == Wire.Sync0.toByte && base >= suspectUntil && pendingTrunc < 0) pendingTrunc = base
+      if (buf(start) == Sync0.toByte && base >= suspectUntil && pendingTrunc < 0) pendingTrunc = base
       skip(1)
     }
     if (pendingTrunc >= 0) s = s.copy(truncated = s.truncated + 1, truncatedBytes = s.truncatedBytes + (base - pendingTrunc))
@@ -105,15 +112,17 @@ final class Decoder(val decimation: Long) {
     var go = true
     while (go) {
       val avail = end - start
-      if (avail < 2) go = false
-      else if (u8(0) != Wire.Sync0 || u8(1) != Wire.Sync1) skip(1)
+      if (avail < AtType) go = false
+      else if (u8(0) != Sync0 || u8(1) != Sync1) skip(1)
       else {
         // -1: need more bytes, 0: bad header, else the frame length
         val len =
-          if (avail < 3) -1
-          else u8(2) match {
-            case Wire.TypeRecords => if (avail < 6) -1 else if (u8(5) == 0) 0 else Wire.recordFrameBytes(u8(5))
-            case Wire.TypeReply => Wire.ReplyBytes
+          if (avail <= AtType) -1
+          else u8(AtType) match {
+            case TypeRecords => if (avail <= AtCount) -1 else if (u8(AtCount) == 0) 0 else recordFrameBytes(u8(AtCount))
+            case TypeReply => ReplyBytes
+            case TypeBurstInfo => BurstInfoBytes
+            case TypeBurstSamples => if (avail <= AtBurstCount) -1 else if (u8(AtBurstCount) == 0) 0 else burstFrameBytes(u8(AtBurstCount))
             case _ => 0
           }
         if (len == 0) {
@@ -126,7 +135,7 @@ final class Decoder(val decimation: Long) {
             suspectUntil = math.max(suspectUntil, base + end - start)
             skip(1)
           }
-        } else if (Crc16.of(buf, start + 2, len - 4) != u16(len - 2)) {
+        } else if (Crc16.of(buf, start + CrcFrom, len - CrcFrom - CrcBytes) != u16(len - CrcBytes)) {
           if (fresh(len)) s = s.copy(crcErrors = s.crcErrors + 1)
           skip(1)
         } else {
@@ -143,14 +152,21 @@ final class Decoder(val decimation: Long) {
   }
 
   private def decode(len: Int): Frame = {
-    val seq = u16(3)
-    if (u8(2) == Wire.TypeReply) RegisterReply(seq, u8(5), u32(6))
+    val seq = u16(AtSeq)
+    def anchor(at: Int) = moire.io.Anchor(u32(at), u32(at + 4).toInt, u32(at + 8).toInt)
+    if (u8(AtType) == TypeReply) RegisterReply(seq, u8(AtReplyAddr), u32(AtReplyValue))
+    else if (u8(AtType) == TypeBurstInfo)
+      BurstInfo(seq, math.max(u32(AtBurstLength), 1L), math.min(u32(AtBurstPre), math.max(u32(AtBurstLength), 1L) - 1),
+        anchor(AtBurstTrigger), anchor(AtBurstLast))
+    else if (u8(AtType) == TypeBurstSamples)
+      BurstSamples(seq, u32(AtBurstOffset), IndexedSeq.tabulate(u8(AtBurstCount))(k => u32(AtBurstWords + 4 * k)))
     else {
       frameLen = len
-      val n = u8(5)
-      RecordFrame(seq, u16(6), IndexedSeq.tabulate(n) { k =>
-        val at = 8 + Wire.RecordBytes * k
-        Record(u32(at), u32(at + 4), u32(at + 8).toInt)
+      val n = u8(AtCount)
+      RecordFrame(seq, u16(AtDropped), IndexedSeq.tabulate(n) { k =>
+        val at = AtRecords + RecordLayout.bytes * k
+        def field(f: moire.protocol.Field) = u32(at + RecordLayout.at(f))
+        Record(field(RecordLayout.Index), field(RecordLayout.Word), field(RecordLayout.Position).toInt)
       })
     }
   }
@@ -162,11 +178,17 @@ final class Decoder(val decimation: Long) {
     lastSeq = f.seq
     f match {
       case r: RegisterReply => t = t.copy(replies = t.replies + 1)
+      case b: BurstInfo => t = t.copy(burstInfos = t.burstInfos + 1)
+      case b: BurstSamples =>
+        if (b.offset != 0 && b.offset != nextOffset)
+          t = t.copy(burstGaps = t.burstGaps + 1, burstMissing = t.burstMissing + math.max(0L, b.offset - nextOffset))
+        nextOffset = b.offset + b.words.size
+        t = t.copy(burstFrames = t.burstFrames + 1, burstSamples = t.burstSamples + b.words.size)
       case r: RecordFrame =>
         var gaps = 0L; var missing = 0L
         r.records.foreach { x =>
           if (lastIndex >= 0) {
-            val d = (x.index - lastIndex) & Wire.MaxU32
+            val d = (x.index - lastIndex) & MaxU32
             if (d != decimation) {
               gaps += 1
               if (d % decimation == 0 && d > 0 && d < (1L << 31)) missing += d / decimation - 1
@@ -195,14 +217,15 @@ final class CommandDecoder {
     bytes.foreach { b =>
       pending += b
       val n = pending.length
-      if (n == 1 && (b & 0xFF) != Wire.Sync0) pending.clear()
-      else if (n == 2 && (b & 0xFF) != Wire.Sync1) { pending.clear(); if ((b & 0xFF) == Wire.Sync0) pending += b }
-      else if (n == Wire.CommandBytes) {
+      if (n == 1 && (b & 0xFF) != Sync0) pending.clear()
+      else if (n == 2 && (b & 0xFF) != Sync1) { pending.clear(); if ((b & 0xFF) == Sync0) pending += b }
+      else if (n == CommandBytes) {
         val a = pending.toArray; pending.clear()
         def u(i: Int) = a(i) & 0xFF
-        val crcOk = Crc16.of(a, 2, 6) == (u(8) | (u(9) << 8))
-        if (!crcOk || (u(2) != Wire.OpRead && u(2) != Wire.OpWrite)) errs += 1
-        else out += Command(u(2) == Wire.OpWrite, u(3), u(4).toLong | (u(5).toLong << 8) | (u(6).toLong << 16) | (u(7).toLong << 24))
+        val crcOk = Crc16.of(a, CrcFrom, CommandBytes - CrcFrom - CrcBytes) == (u(CommandBytes - CrcBytes) | (u(CommandBytes - 1) << 8))
+        val op = u(AtOp)
+        if (!crcOk || (op != OpRead && op != OpWrite)) errs += 1
+        else out += Command(op == OpWrite, u(AtCmdAddr), (0 until 4).map(i => u(AtCmdValue + i).toLong << (8 * i)).sum)
       }
     }
     out.result()

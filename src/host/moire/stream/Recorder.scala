@@ -1,5 +1,6 @@
 package moire.stream
 
+import moire.protocol.{Registers, StreamV1}
 import moire.recording.Recording
 import moire.signal.{Adc, AdcFormat}
 import scala.collection.mutable.ArrayBuffer
@@ -37,15 +38,15 @@ final case class RecordResult(file: os.Path, rows: Int, stats: StreamStats, setu
   */
 object Recorder {
   /** Records per second the link carries at `baud` with n records per frame (10 bits per byte on the wire). */
-  def linkRecordsPerSecond(baud: Int, n: Long): Double = baud / 10.0 / Wire.recordFrameBytes(n.toInt) * n
+  def linkRecordsPerSecond(baud: Int, n: Long): Double = baud / 10.0 / StreamV1.recordFrameBytes(n.toInt) * n
 
   def validate(o: RecordOptions): Unit = {
     if (!(o.seconds > 0) || o.seconds > 86400) throw new StreamError(s"--seconds must be in (0, 86400], got ${o.seconds}")
     if (o.baud < 300 || o.baud > 12000000) throw new StreamError(s"--baud must be in 300..12000000, got ${o.baud}")
-    o.decimation.foreach(d => if (d < 1 || d > (1L << 24)) throw new StreamError(s"--decimation must be in 1..${1L << 24}, got $d"))
+    o.decimation.foreach(d => if (d < 1 || d > Registers.MaxDecimation) throw new StreamError(s"--decimation must be in 1..${Registers.MaxDecimation}, got $d"))
     o.adcClockHz.foreach(f => if (!(f > 0) || f.isInfinite) throw new StreamError(s"--adc-clock-hz must be a positive number, got $f"))
     o.adcFormat.foreach(f => AdcFormat.parse(f).left.foreach(e => throw new StreamError(s"--adc-format: $e")))
-    o.countsPerPeriod.foreach(m => if (m < 1 || m > Wire.MaxU32) throw new StreamError(s"--counts-per-period must be a positive u32, got $m"))
+    o.countsPerPeriod.foreach(m => if (m < 1 || m > StreamV1.MaxU32) throw new StreamError(s"--counts-per-period must be a positive u32, got $m"))
     if (o.timeoutMs < 10 || o.timeoutMs > 60000) throw new StreamError(s"--timeout-ms must be in 10..60000, got ${o.timeoutMs}")
     if (o.listenOnly) {
       val missing = Seq("--decimation" -> o.decimation, "--adc-clock-hz" -> o.adcClockHz, "--adc-format" -> o.adcFormat,
@@ -68,7 +69,7 @@ object Recorder {
     BoardClient.check(c, o.baud, handHint)
     def ask[T](f: => T): T = try f catch { case e: NoAnswer => throw new StreamError(e.getMessage + handHint) }
     val ctl = ask(c.read(Registers.Control))
-    if ((ctl & 1) == 0)
+    if (((ctl >> Registers.ControlBit.Enable) & 1) == 0)
       throw new StreamError(s"${o.port}: streaming is off on the board (control = $ctl); switch it on with: moire board-reg --port ${o.port} --write control=1")
     val d = o.decimation match {
       case Some(want) =>
@@ -81,17 +82,18 @@ object Recorder {
     val clk = o.adcClockHz.getOrElse(ask(c.read(Registers.AdcClockHz)).toDouble)
     if (!(clk > 0)) throw new StreamError(s"${o.port}: the board reports adc_clock_hz 0; give --adc-clock-hz")
     val fmt = o.adcFormat.map(s => AdcFormat.parse(s).toOption.get).getOrElse(ask(c.read(Registers.AdcFormat)) match {
-      case 0 => AdcFormat.OffsetBinary
-      case 1 => AdcFormat.TwosComplement
+      case Registers.AdcOffsetBinary => AdcFormat.OffsetBinary
+      case Registers.AdcTwosComplement => AdcFormat.TwosComplement
       case v => throw new StreamError(s"${o.port}: the board reports adc_format $v (0 or 1 expected); give --adc-format")
     })
     val m = o.countsPerPeriod.getOrElse(ask(c.read(Registers.CountsPerPeriod)))
     val n = ask(c.read(Registers.FrameRecords))
-    BoardSetup(d, clk, fmt, m, Some(n).filter(v => v >= 1 && v <= 255), fromBoard = true)
+    BoardSetup(d, clk, fmt, m, Some(n).filter(v => v >= 1 && v <= StreamV1.MaxFrameRecords), fromBoard = true)
   }
 
   def record(link: ByteLink, o: RecordOptions, say: String => Unit, warn: String => Unit): RecordResult = {
     validate(o)
+    moire.files.SafeWrite.checkFile(os.Path(o.out, os.pwd))   // before the capture, not after it
     val client = new BoardClient(link, o.timeoutMs)
     val s = if (o.listenOnly) BoardSetup(o.decimation.get, o.adcClockHz.get, AdcFormat.parse(o.adcFormat.get).toOption.get,
       o.countsPerPeriod.get, None, fromBoard = false) else setup(client, o)
@@ -135,7 +137,7 @@ object Recorder {
   }
 
   private def metadata(o: RecordOptions, s: BoardSetup, st: StreamStats, elapsed: Double): Map[String, String] = Map(
-    "source" -> "de2-115", "decimation" -> s.decimation.toString, "adc_clock_hz" -> num(s.adcClockHz),
+    "source" -> "de2-115", "adc" -> "AD9226", "decimation" -> s.decimation.toString, "adc_clock_hz" -> num(s.adcClockHz),
     "counts_per_period" -> s.countsPerPeriod.toString, "frames" -> st.frames.toString, "records" -> st.records.toString,
     "crc_errors" -> st.crcErrors.toString, "bad_headers" -> st.badHeaders.toString, "gaps" -> st.indexGaps.toString,
     "missing_records" -> st.indexMissing.toString, "dropped_records" -> st.dropped.toString, "seq_gaps" -> st.seqGaps.toString,
@@ -170,9 +172,9 @@ object Recorder {
           dec.feed(buf, i, 1).foreach {
             case f: RecordFrame =>
               val idx = f.records.map(_.index)
-              val firstOk = last >= 0 && f.seq == ((lastSeq + 1) & 0xFFFF) && ((idx.head - last) & Wire.MaxU32) == s.decimation
-              val inner = idx.sliding(2).forall(p => p.size < 2 || ((p(1) - p(0)) & Wire.MaxU32) == s.decimation)
-              idx.sliding(2).foreach(p => if (p.size == 2 && steps.size < 5) steps += ((p(1) - p(0)) & Wire.MaxU32))
+              val firstOk = last >= 0 && f.seq == ((lastSeq + 1) & 0xFFFF) && ((idx.head - last) & StreamV1.MaxU32) == s.decimation
+              val inner = idx.sliding(2).forall(p => p.size < 2 || ((p(1) - p(0)) & StreamV1.MaxU32) == s.decimation)
+              idx.sliding(2).foreach(p => if (p.size == 2 && steps.size < 5) steps += ((p(1) - p(0)) & StreamV1.MaxU32))
               if (inner && (idx.size >= 2 || firstOk)) return java.util.Arrays.copyOfRange(buf, i + 1, n)
               last = idx.last; lastSeq = f.seq
             case r: RegisterReply => lastSeq = r.seq
@@ -198,7 +200,7 @@ object Recorder {
     def rows: Int = sin.length
     def add(r: Record): Unit = {
       if (lastRaw < 0) unwrapped = r.index
-      else { val d = (r.index - lastRaw) & Wire.MaxU32; unwrapped += (if (d >= (1L << 31)) d - (1L << 32) else d) }
+      else { val d = (r.index - lastRaw) & StreamV1.MaxU32; unwrapped += (if (d >= (1L << 31)) d - (1L << 32) else d) }
       lastRaw = r.index
       sin += r.sin; cos += r.cos
       RecordColumns.values(r, unwrapped).foreach { case (k, v) => extra(k) += v }

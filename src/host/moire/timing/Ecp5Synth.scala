@@ -12,11 +12,13 @@ final case class Ecp5Cells(byType: Map[String, Long]) {
 
 /** Synthesis for the LFE5U-85F: `synth_ecp5` of the Verilog into the netlist nextpnr reads. */
 object Ecp5Synth {
-  /** `files` are names in the work folder: YoWASP's tools see the work folder, not /tmp. */
-  def script(top: String, files: Seq[String]): String =
+  /** `files` are names in the work folder: YoWASP's tools see the work folder, not /tmp. `upTo` stops
+    * `synth_ecp5` before that label (then no netlist is written).
+    */
+  def script(top: String, files: Seq[String], upTo: Option[String] = None): String =
     Seq(s"read_verilog -sv ${files.map(f => "\"" + f + "\"").mkString(" ")}",
       s"hierarchy -check -top $top",
-      s"synth_ecp5 -top $top -json synth.json",
+      upTo.fold(s"synth_ecp5 -top $top -json synth.json")(label => s"synth_ecp5 -top $top -run begin:$label"),
       "tee -q -o stat.json stat -json").mkString("\n") + "\n"
 
   /** Runs yosys in `work` (writes synth.ys, yosys.log, synth.json, stat.json); returns the seconds taken. */

@@ -104,13 +104,16 @@ object Timing {
     } finally os.remove.all(work)
   }
 
-  /** Synthesis only: the cells `synth_ecp5` maps (multipliers are known here, before place and route). */
-  def synthCells(tools: Ecp5Tools, gen: () => RawModule, o: TimingOptions, progress: String => Unit): Ecp5Cells = {
+  /** The multiplier blocks `synth_ecp5` maps: its coarse step (`-run begin:map_ram`) already maps every
+    * product to MULT18X18D, so this takes seconds where the whole synthesis takes minutes.
+    */
+  def multipliers(tools: Ecp5Tools, gen: () => RawModule, o: TimingOptions, progress: String => Unit): Long = {
     val work = os.temp.dir(prefix = "moire-timing-")
     try {
-      val (top, files) = emit(gen, work / "rtl")
-      val (dir, _) = synth(tools, top, files, o, progress)
-      Ecp5Synth.cells(os.read(dir / "stat.json"), top)
+      val (top, files) = emit(gen, work)
+      os.write.over(work / "synth.ys", Ecp5Synth.script(top, files.map(_.last), upTo = Some("map_ram")))
+      ToolRun.run(s"synth_ecp5 $top (coarse)", Seq(tools.yosys, "-q", "-s", "synth.ys"), work, work / "yosys.log", o.timeoutSeconds, progress)
+      Ecp5Synth.cells(os.read(work / "stat.json"), top).multipliers
     } finally os.remove.all(work)
   }
 }

@@ -1,49 +1,37 @@
 package moire.stream
 
-/** The UART stream format v1 (docs/recording.md): constants shared by the encoder, the decoders and the board. */
-object Wire {
-  val Sync0: Int = 0xA5
-  val Sync1: Int = 0x5A
-  val TypeRecords: Int = 0x01
-  val TypeReply: Int = 0x02
-  val OpRead: Int = 0x52
-  val OpWrite: Int = 0x57
-  /** Bytes of one record. */
-  val RecordBytes: Int = 12
-  /** Bytes of a record frame with n records: sync, type, seq, n, dropped, records, CRC. */
-  def recordFrameBytes(n: Int): Int = 8 + RecordBytes * n + 2
-  val ReplyBytes: Int = 12
-  val CommandBytes: Int = 10
-  val MaxU32: Long = 0xFFFFFFFFL
-}
+import moire.protocol.{Field, StreamV1}
+import moire.protocol.StreamV1.{WordLayout => W}
 
 /** One record: the ADC sample index (u32), the flag/code word (u32) and the datapath position (s32). */
 final case class Record(index: Long, word: Long, position: Int) {
-  require(index >= 0 && index <= Wire.MaxU32, s"record index must be a u32, got $index")
-  require(word >= 0 && word <= Wire.MaxU32, s"record word must be a u32, got $word")
-  private def bit(i: Int): Boolean = ((word >> i) & 1) != 0
-  /** sin code as on the ADC pins (bits 0-11). */
-  def sin: Int = (word & 0xFFF).toInt
-  /** cos code as on the ADC pins (bits 12-23). */
-  def cos: Int = ((word >> 12) & 0xFFF).toInt
-  def otrSin: Boolean = bit(24)
-  def otrCos: Boolean = bit(25)
-  def present: Boolean = bit(26)
-  def overRange: Boolean = bit(27)
-  def stepFault: Boolean = bit(28)
+  require(index >= 0 && index <= StreamV1.MaxU32, s"record index must be a u32, got $index")
+  require(word >= 0 && word <= StreamV1.MaxU32, s"record word must be a u32, got $word")
+  private def bit(f: Field): Boolean = f.get(word) != 0
+  /** sin code as on the ADC pins. */
+  def sin: Int = W.Sin.get(word).toInt
+  /** cos code as on the ADC pins. */
+  def cos: Int = W.Cos.get(word).toInt
+  def otrSin: Boolean = bit(W.OtrSin)
+  def otrCos: Boolean = bit(W.OtrCos)
+  def present: Boolean = bit(W.Present)
+  def overRange: Boolean = bit(W.OverRange)
+  def stepFault: Boolean = bit(W.StepFault)
   /** true = counting up. */
-  def direction: Boolean = bit(29)
+  def direction: Boolean = bit(W.Direction)
 }
 
 object Record {
   /** A record from its fields; codes are 12-bit pin patterns. */
   def of(index: Long, sin: Int, cos: Int, position: Int, otrSin: Boolean = false, otrCos: Boolean = false,
          present: Boolean = true, overRange: Boolean = false, stepFault: Boolean = false, direction: Boolean = true): Record = {
-    require(sin >= 0 && sin < 4096, s"sin code must be in 0..4095, got $sin")
-    require(cos >= 0 && cos < 4096, s"cos code must be in 0..4095, got $cos")
-    def b(f: Boolean, i: Int) = if (f) 1L << i else 0L
-    Record(index, sin.toLong | (cos.toLong << 12) | b(otrSin, 24) | b(otrCos, 25) | b(present, 26) |
-      b(overRange, 27) | b(stepFault, 28) | b(direction, 29), position)
+    def code(f: Field, v: Int) = {
+      require(v >= 0 && v <= f.maxValue, s"${f.name} code must be in 0..${f.maxValue}, got $v")
+      f.put(v)
+    }
+    def b(flag: Boolean, f: Field) = if (flag) f.put(1) else 0L
+    Record(index, code(W.Sin, sin) | code(W.Cos, cos) | b(otrSin, W.OtrSin) | b(otrCos, W.OtrCos) | b(present, W.Present) |
+      b(overRange, W.OverRange) | b(stepFault, W.StepFault) | b(direction, W.Direction), position)
   }
 }
 
@@ -54,20 +42,33 @@ sealed trait Frame { def seq: Int }
 final case class RecordFrame(seq: Int, dropped: Int, records: IndexedSeq[Record]) extends Frame {
   require(seq >= 0 && seq <= 0xFFFF, s"seq must be a u16, got $seq")
   require(dropped >= 0 && dropped <= 0xFFFF, s"dropped must be a u16, got $dropped")
-  require(records.nonEmpty && records.size <= 255, s"a record frame holds 1..255 records, got ${records.size}")
+  require(records.nonEmpty && records.size <= StreamV1.MaxFrameRecords, s"a record frame holds 1..${StreamV1.MaxFrameRecords} records, got ${records.size}")
 }
 
 /** Type 0x02: the answer to a command, the register's value after it. */
 final case class RegisterReply(seq: Int, addr: Int, value: Long) extends Frame {
   require(seq >= 0 && seq <= 0xFFFF, s"seq must be a u16, got $seq")
   require(addr >= 0 && addr <= 0xFF, s"addr must be a byte, got $addr")
-  require(value >= 0 && value <= Wire.MaxU32, s"value must be a u32, got $value")
+  require(value >= 0 && value <= StreamV1.MaxU32, s"value must be a u32, got $value")
+}
+
+/** Type 0x03: a finished burst's length, pre-trigger count and anchors (trigger sample = burst sample `pre`). */
+final case class BurstInfo(seq: Int, length: Long, pre: Long, trigger: moire.io.Anchor, last: moire.io.Anchor) extends Frame {
+  require(seq >= 0 && seq <= 0xFFFF, s"seq must be a u16, got $seq")
+  require(length >= 1 && length <= StreamV1.MaxU32 && pre >= 0 && pre < length, s"burst length $length, pre $pre: need 0 <= pre < length <= u32")
+}
+
+/** Type 0x04: 1..255 burst sample words ([[moire.protocol.BurstLayout]]) from sample `offset` of the burst on. */
+final case class BurstSamples(seq: Int, offset: Long, words: IndexedSeq[Long]) extends Frame {
+  require(seq >= 0 && seq <= 0xFFFF, s"seq must be a u16, got $seq")
+  require(offset >= 0 && offset <= StreamV1.MaxU32, s"burst offset must be a u32, got $offset")
+  require(words.nonEmpty && words.size <= StreamV1.MaxBurstWords, s"a burst frame holds 1..${StreamV1.MaxBurstWords} words, got ${words.size}")
 }
 
 /** A host -> board command: read (value ignored, sent as 0) or write one register. */
 final case class Command(write: Boolean, addr: Int, value: Long = 0) {
   require(addr >= 0 && addr <= 0xFF, s"addr must be a byte, got $addr")
-  require(value >= 0 && value <= Wire.MaxU32, s"value must be a u32, got $value")
+  require(value >= 0 && value <= StreamV1.MaxU32, s"value must be a u32, got $value")
 }
 object Command {
   def read(addr: Int): Command = Command(write = false, addr, 0)
