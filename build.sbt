@@ -35,7 +35,9 @@ lazy val hw = layer("hw", "src/hw").settings(
 
 /** Board harnesses, pin tables, vendor project writers. */
 lazy val boards = layer("boards", "boards").dependsOn(hw).settings(
-  libraryDependencies += "com.lihaoyi" %% "mainargs" % "0.7.6"
+  libraryDependencies += "com.lihaoyi" %% "mainargs" % "0.7.6",
+  // ecp5-tools.sh also as a resource: the ULX3S project folder gets a copy for its build.sh
+  Compile / unmanagedResourceDirectories += baseDirectory.value / "tools"
 )
 
 /** Host tools: recording, stream codec and recorder, replay, explain, cost, the papers' tables, calibration. */
