@@ -77,4 +77,17 @@ class ExplainCliSpec extends AnyFlatSpec with Matchers {
     val (c3, _, err3) = run("simulate", "--out", (dir / "x.csv").toString, "--effect", "wobble:x=1")
     c3 shouldBe 2; err3 should include("'wobble' is not an effect")
   }
+
+  it should "give every file of a batch its report or its one-line error, and exit 2 after trying all" in {
+    val dir = os.temp.dir()
+    os.write(dir / "bad.csv", "# moire-recording v1\n# sample_rate_hz: 1e6\n# adc_bits: 12\nsin,cos\n1,2\n3\n")
+    val (c1, _, e1) = run("simulate", "--out", (dir / "good.csv").toString, "--samples", "20000")
+    withClue(e1) { c1 shouldBe 0 }
+    val (c, _, err) = run("explain", (dir / "bad.csv").toString, (dir / "good.csv").toString, "--json-dir", (dir / "json").toString, "--quiet")
+    c shouldBe 2
+    os.exists(dir / "json" / "good.json") shouldBe true
+    os.exists(dir / "json" / "bad.json") shouldBe false
+    err should include("bad.csv:6: 1 cells, the header has 2")
+    err should include("1 of 2 files failed")
+  }
 }

@@ -27,23 +27,18 @@ class RecordingSpec extends AnyFlatSpec with Matchers {
     }
   }
 
-  it should "read adc as free text, adc_format as the code format, and old files that named the format under adc" in {
-    def fmt(extra: String*) = Recording.parse("f.csv", good.take(3) ++ extra ++ good.drop(3))
-    val free = fmt("# adc: AD9226")
-    free.adc.format shouldBe AdcFormat.OffsetBinary; free.meta("adc") shouldBe "AD9226"; free.meta("operator") shouldBe "bench A"
-    fmt("# adc: AD9226", "# adc_format: twos-complement").adc.format shouldBe AdcFormat.TwosComplement
-    fmt("# adc: twos-complement").adc.format shouldBe AdcFormat.TwosComplement   // an old file
-    fmt("# adc: offset-binary").adc.format shouldBe AdcFormat.OffsetBinary
-    fmt("# scope: Rigol DS1054Z, 8 bit", "# adc: scope").meta("scope") shouldBe "Rigol DS1054Z, 8 bit"
-    val e = intercept[MoireError](fmt("# adc_format: gray"))
-    e.getMessage should (include("adc_format") and include("'gray'") and include("twos-complement"))
-    // writing: adc_format from the recording, free-text adc kept, an old format-only adc dropped
-    val p = os.temp(suffix = ".csv")
-    Recording.write(p, free.copy(adc = Adc(12, AdcFormat.TwosComplement)))
+  it should "take adc as free text and the code format from adc_format, and still read files that put the format under adc" in {
+    def fmt(meta: String*): AdcFormat = Recording.parse("f.csv", good.take(3) ++ meta ++ good.drop(3)).adc.format
+    fmt("# adc: AD9226") shouldBe AdcFormat.OffsetBinary
+    fmt("# adc: AD9226", "# adc_format: twos-complement") shouldBe AdcFormat.TwosComplement
+    fmt("# adc: twos-complement") shouldBe AdcFormat.TwosComplement
+    Recording.parse("f.csv", good.take(3) ++ Seq("# adc: AD9226 (12 bit, 65 MS/s)") ++ good.drop(3)).meta("adc") shouldBe "AD9226 (12 bit, 65 MS/s)"
+    val e = intercept[MoireError](Recording.parse("f.csv", good.take(3) ++ Seq("# adc_format: gray") ++ good.drop(3)))
+    e.getMessage should (startWith("f.csv:") and include("adc_format") and include("gray"))
+    val r = Recording(1e6, Adc(12, AdcFormat.TwosComplement), Array(1), Array(2), Map("adc" -> "AD9226"))
+    val p = os.temp(suffix = ".csv"); Recording.write(p, r)
     val text = os.read.lines(p)
-    text should contain("# adc_format: twos-complement"); text should contain("# adc: AD9226")
-    Recording.write(p, fmt("# adc: twos-complement"))
-    os.read.lines(p).count(_.startsWith("# adc")) shouldBe 2   // adc_bits and adc_format only
+    text should contain allOf ("# adc_format: twos-complement", "# adc: AD9226")
     Recording.read(p).adc.format shouldBe AdcFormat.TwosComplement
   }
 
@@ -63,7 +58,7 @@ class RecordingSpec extends AnyFlatSpec with Matchers {
     bad(good.updated(7, "0,4096,1.5"), "f.csv:8: cos code 4096 is outside the 12-bit ADC range 0..4095")
     bad(good.updated(7, "0,-1,1.5"), "outside the 12-bit ADC range")
     bad(good.updated(6, "2048,4095"), "f.csv:7: 2 cells, the header has 3")
-    bad(good.updated(6, "2048,4095,NaN"), "f.csv:7: ref_deg 'NaN' is not a number")
+    bad(good.updated(6, "2048,4095,NaN"), "f.csv:7: ref_deg 'NaN' is not a finite number")
     bad(good.take(6), "no data rows")
     bad(good.updated(5, "a,b"), "header must name columns sin and cos")
     bad(good.updated(4, "# operator bench A"), "f.csv:5: metadata line must be")

@@ -97,7 +97,7 @@ class RecorderSpec extends AnyFlatSpec with Matchers {
     board.commands shouldBe empty
     r.stats.lost shouldBe false
     val rec = Recording.read(out)
-    rec.meta("adc_format") shouldBe "twos-complement"; rec.adc.format shouldBe moire.signal.AdcFormat.TwosComplement; rec.meta("crc_errors") shouldBe "0"; rec.meta("gaps") shouldBe "0"
+    rec.meta("adc_format") shouldBe "twos-complement"; rec.adc.format.name shouldBe "twos-complement"; rec.meta("crc_errors") shouldBe "0"; rec.meta("gaps") shouldBe "0"
     val idx = rec.extra("sample_index")
     idx.sliding(2).forall(p => p(1) - p(0) == d.toDouble) shouldBe true // unwrapped past 2^32
     idx.last should be > 4294967295.0

@@ -18,7 +18,7 @@ object CostCmd {
     print(r.text)
     json.foreach { f =>
       val path = os.Path(f, os.pwd)
-      os.write.over(path, ujson.write(r.json, indent = 2), createFolders = true)
+      moire.files.SafeWrite.text(path, ujson.write(r.json, indent = 2))
       println(s"wrote $path")
     }
   }
@@ -46,7 +46,7 @@ object CostCmd {
     for (f <- SweepRun.write(rows, dir)) println(s"wrote $f")
     json.foreach { f =>
       val path = os.Path(f, os.pwd)
-      os.write.over(path, ujson.write(ujson.Arr(rows.map(_.json): _*), indent = 2), createFolders = true)
+      moire.files.SafeWrite.text(path, ujson.write(ujson.Arr(rows.map(_.json): _*), indent = 2))
       println(s"wrote $path")
     }
   }

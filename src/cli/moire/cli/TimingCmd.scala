@@ -33,13 +33,13 @@ object TimingCmd {
     json.foreach { f =>
       val path = os.Path(f, os.pwd)
       val v = if (results.size == 1) results.head.json else ujson.Arr(results.map(_.json): _*)
-      os.write.over(path, ujson.write(v, indent = 2), createFolders = true)
+      moire.files.SafeWrite.text(path, ujson.write(v, indent = 2))
       println(s"wrote $path")
     }
     markdown.foreach { f =>
       val path = os.Path(f, os.pwd)
       val cmd = "./sbt \"run timing " + (if (all) "--all" else s"--design ${design.get}") + s" --speeds ${ss.mkString(",")}\""
-      os.write.over(path, TimingTable.markdown(results, cmd), createFolders = true)
+      moire.files.SafeWrite.text(path, TimingTable.markdown(results, cmd))
       println(s"wrote $path")
     }
     val missed = results.filterNot(_.meets)

@@ -31,6 +31,6 @@ object ParetoPlot {
       a.setMarker(SeriesMarkers.DIAMOND)
     }
     os.makeDir.all(path / os.up)
-    BitmapEncoder.saveBitmap(chart, path.toString, BitmapEncoder.BitmapFormat.PNG)
+    moire.files.SafeWrite(path)(t => { val o = new java.io.FileOutputStream(t.toIO); try BitmapEncoder.saveBitmap(chart, o, BitmapEncoder.BitmapFormat.PNG) finally o.close() })
   }
 }

@@ -41,8 +41,7 @@ object SweepRun {
 
   def run(grid: SweepGrid, out: os.Path, timeoutSeconds: Int, measure: Boolean, log: String => Unit): Seq[SweepRow] = {
     val pts = grid.points
-    val pb = new me.tongfei.progressbar.ProgressBarBuilder().setTaskName("cost sweep").setInitialMax(pts.size.toLong)
-      .setConsumer(new me.tongfei.progressbar.ConsoleProgressBarConsumer(System.err)).build()
+    val pb = new moire.progress.Bar("cost sweep", pts.size.toLong)
     val rows = try pts.map { case (v, p) =>
       pb.setExtraMessage(s" ${v.name} n=${p.iterations} b=${p.width}")
       val (s, _) = synth(p, out / "cache", timeoutSeconds, m => log(m))
@@ -58,9 +57,9 @@ object SweepRun {
   def write(rows: Seq[SweepRow], out: os.Path): Seq[os.Path] = {
     os.makeDir.all(out)
     val csv = out / "sweep.csv"
-    os.write.over(csv, (SweepRow.csvHeader +: rows.map(SweepRow.csv)).mkString("", "\n", "\n"))
+    moire.files.SafeWrite.text(csv, (SweepRow.csvHeader +: rows.map(SweepRow.csv)).mkString("", "\n", "\n"))
     val json = out / "sweep.json"
-    os.write.over(json, ujson.write(ujson.Arr(rows.map(_.json): _*), indent = 2))
+    moire.files.SafeWrite.text(json, ujson.write(ujson.Arr(rows.map(_.json): _*), indent = 2))
     val pngs = rows.map(_.function).distinct.map { f =>
       val png = out / s"pareto-$f.png"
       ParetoPlot.write(png, f, rows.filter(_.function == f))

@@ -11,6 +11,15 @@ object ExplainCmd {
                               effects: Seq[String], model: Option[String])
 
   def model(o: SimOptions): PhysicsModel = {
+    for ((name, v) <- Seq("--sample-rate-hz" -> o.sampleRateHz, "--amplitude" -> o.amplitude, "--offset-sin" -> o.offsetSin,
+      "--offset-cos" -> o.offsetCos, "--gain-sin" -> o.gainSin, "--gain-cos" -> o.gainCos, "--phase-error-deg" -> o.phaseErrorDeg,
+      "--noise" -> o.noise) ++ o.linesPerRev.map("--lines-per-rev" -> _))
+      if (v.isNaN || v.isInfinite) throw new ExplainError(s"$name must be a finite number, got $v")
+    if (!(o.sampleRateHz > 0 && o.sampleRateHz <= Recording.MaxSampleRateHz))
+      throw new ExplainError(s"--sample-rate-hz must be above 0 and at most 1e11 Hz, got ${o.sampleRateHz}")
+    if (o.noise < 0) throw new ExplainError(s"--noise must be 0 or more (full-scale rms), got ${o.noise}")
+    if (o.samples < 1) throw new ExplainError(s"--samples must be at least 1, got ${o.samples}")
+    if (!(o.amplitude > 0)) throw new ExplainError(s"--amplitude must be above 0, got ${o.amplitude}")
     val fmt = AdcFormat.parse(o.adc).fold(e => throw new ExplainError(s"--adc: $e"), identity)
     val d = try PhysicsModel(SignalParams(o.amplitude, o.offsetSin, o.offsetCos, o.gainSin, o.gainCos, o.phaseErrorDeg, Nil, o.noise, o.seed),
       PhysicsModel.parseMotion(o.motion), o.sampleRateHz, o.samples, Adc(o.adcBits, fmt), o.linesPerRev, o.effects.map(EffectSpec.parse))
@@ -32,36 +41,33 @@ object ExplainCmd {
     s"wrote $path (${rec.length} samples, ${m.effects.map(_.effect).mkString(", ") match { case "" => "default model only"; case s => s }})"
   }
 
-  /** Explains each file; writes `<stem>.json` into jsonDir and PNGs into plotDir. Returns the text reports.
-    * Every file is tried: a file that fails prints its one-line error (stderr) and the others still get
-    * their reports; afterwards one ExplainError says how many failed.
-    */
+  /** Explains each file; writes `<stem>.json` into jsonDir and PNGs into plotDir. Returns the text reports. */
   def explain(files: Seq[String], jsonDir: Option[String], plotDir: Option[String], modelFile: Option[String], quiet: Boolean,
               rtl: Option[Seq[String]] = Some(Nil)): Seq[Report] = {
-    val all = explainEach(files, jsonDir, plotDir, modelFile, quiet, rtl)
-    val failed = all.collect { case Left(e) => e }
-    if (failed.nonEmpty)
-      throw new ExplainError(if (all.length == 1) failed.head else s"explain: ${failed.length} of ${all.length} files failed (each named above)")
-    all.collect { case Right(r) => r }
-  }
-
-  /** Each file's report, or its one-line error; a bad file does not stop the others. */
-  def explainEach(files: Seq[String], jsonDir: Option[String], plotDir: Option[String], modelFile: Option[String], quiet: Boolean,
-                  rtl: Option[Seq[String]] = Some(Nil)): Seq[Either[String, Report]] = {
     if (files.isEmpty) throw new ExplainError("explain: name at least one recording file")
     val givenEffects = modelFile.map { f =>
       val text = readText(f)
       val v = try ujson.read(text) catch { case e: Exception => throw new ExplainError(s"$f: not valid JSON") }
       v.obj.get("effects").map(_.arr.toSeq.map(EffectSpec.fromJson(_, f))).getOrElse(Nil)
     }.getOrElse(Nil)
-    files.map { f =>
-      try Right(explainOne(os.Path(f, os.pwd), givenEffects, jsonDir, plotDir, quiet, rtl))
-      catch {
-        case e: moire.MoireError =>
-          if (files.length > 1) System.err.println(s"moire: ${e.getMessage}")
-          Left(e.getMessage)
-      }
+    val paths = files.map(f => os.Path(f, os.pwd))
+    // Outputs are checked before the long work: writable folders, no two reports under one name.
+    val outDirs = (jsonDir ++ plotDir).map(d => os.Path(d, os.pwd))
+    outDirs.foreach(moire.files.SafeWrite.checkFolder)
+    if (outDirs.nonEmpty) paths.groupBy(_.last.stripSuffix(".csv")).collectFirst { case (stem, ps) if ps.distinct.size > 1 =>
+      throw new ExplainError(s"${ps.distinct.mkString(" and ")} share the name $stem: their reports would overwrite each other; rename one")
     }
+    // Every file gets its report or its one-line error; the command fails after all were tried.
+    val results = paths.map { p =>
+      try Right(explainOne(p, givenEffects, jsonDir, plotDir, quiet, rtl))
+      catch { case e: moire.MoireError => if (paths.size > 1) System.err.println(s"moire: ${e.getMessage}"); Left(e) }
+    }
+    val failed = results.collect { case Left(e) => e }
+    if (failed.nonEmpty) {
+      if (paths.size == 1) throw failed.head
+      throw new ExplainError(s"${failed.size} of ${paths.size} files failed (their errors are above); the other reports are complete")
+    }
+    results.collect { case Right(r) => r }
   }
 
   private def explainOne(p: os.Path, givenEffects: Seq[EffectSpec], jsonDir: Option[String], plotDir: Option[String],
@@ -76,6 +82,7 @@ object ExplainCmd {
         r.report
       } else {
         val rec = Recording.read(p)
+        checkSignals(p, rec)
         val r = SignalExplain.run(p.toString, rec, givenEffects, progress)
         progress.close()
         plotDir.foreach(d => Plots.signals(r, os.Path(d, os.pwd), stem))
@@ -86,9 +93,20 @@ object ExplainCmd {
         }.getOrElse(r.report)
       }
     } finally progress.close()
-    jsonDir.foreach(d => os.write.over(os.Path(d, os.pwd) / s"$stem.json", ujson.write(report.json, indent = 2), createFolders = true))
+    jsonDir.foreach(d => moire.files.SafeWrite.text(os.Path(d, os.pwd) / s"$stem.json", ujson.write(report.json, indent = 2)))
     if (!quiet) print(report.text)
     report
+  }
+
+  /** Fewest samples explain fits (a one-period recording of 1000 samples is fine; ten rows are not). */
+  val MinSamples = 64
+
+  /** What no fit can use: too few samples, a channel that never changes (dead or unconnected). */
+  def checkSignals(p: os.Path, rec: Recording): Unit = {
+    if (rec.length < MinSamples)
+      throw new ExplainError(s"$p: ${rec.length} samples; explain needs at least $MinSamples (and a few fringe periods)")
+    for ((name, c) <- Seq("sin" -> rec.sin, "cos" -> rec.cos) if c.forall(_ == c(0)))
+      throw new ExplainError(s"$p: $name channel constant at code ${c(0)} over all ${rec.length} samples: a dead or unconnected channel, nothing to fit")
   }
 
   /** Options may also follow the file names (mainargs puts everything after the first file into `rest`). */

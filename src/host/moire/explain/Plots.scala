@@ -22,8 +22,7 @@ object Plots {
     if (ok.nonEmpty) c.addSeries(name, ok.map(xs).toArray, ok.map(ys).toArray).setMarker(SeriesMarkers.NONE)
   }
   def save(c: XYChart, path: os.Path): os.Path = {
-    os.makeDir.all(path / os.up)
-    BitmapEncoder.saveBitmap(c, path.toString.stripSuffix(".png"), BitmapFormat.PNG)
+    moire.files.SafeWrite(path)(t => { val o = new java.io.FileOutputStream(t.toIO); try BitmapEncoder.saveBitmap(c, o, BitmapFormat.PNG) finally o.close() })
     path
   }
 

@@ -78,13 +78,19 @@ object SignalExplain {
         case Some(c) if dbic(c) > Threshold =>
           val snapB = Snapshot(s"before ${c.effect}", e.resS.clone(), e.resC.clone())
           val rmsB = e.rms
+          val prev = e.spec
           e.spec = c.spec; e.converge(); settle(e)
           val c1 = demote(e, c)
           lap("refit")
-          val snapA = Snapshot(s"after ${c.effect}", e.resS.clone(), e.resC.clone())
-          val f = Finding(c1.effect, c1.channel, "", c1.params, c1.unc, bic0 - e.bic, rmsB, e.rms, c1.where)
-          steps += ((f, snapB, snapA))
-          round += 1
+          if (!(bic0 - e.bic > 0)) {
+            // The joint refit did not lower the criterion: no finding; back to the model before it.
+            e.spec = prev; e.converge(); settle(e); done = true
+          } else {
+            val snapA = Snapshot(s"after ${c.effect}", e.resS.clone(), e.resC.clone())
+            val f = Finding(c1.effect, c1.channel, "", c1.params, c1.unc, bic0 - e.bic, rmsB, e.rms, c1.where)
+            steps += ((f, snapB, snapA))
+            round += 1
+          }
         case _ => done = true
       }
     }

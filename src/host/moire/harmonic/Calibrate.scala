@@ -46,8 +46,8 @@ object Calibrate {
     val curves = if (byDir.nonEmpty) byDir.map { case (d, f) => CalibrationPlot.Curve(d, data.of(d), f) }
       else Seq(CalibrationPlot.Curve("", data.points, fit))
     try {
-      os.write.over(jf, ujson.write(json, indent = 2) + "\n", createFolders = true)
-      os.write.over(rf, listing, createFolders = true)
+      moire.files.SafeWrite.text(jf, ujson.write(json, indent = 2) + "\n")
+      moire.files.SafeWrite.text(rf, listing)
       CalibrationPlot.write(pf, s"${data.file}: ${p.harmonics} largest harmonics up to order $maxOrder", curves)
     } catch { case e: java.io.IOException => throw new CalibrationError(s"cannot write into $out ($e)") }
     Result(data, maxOrder, fit, byDir, reversal, Seq(jf, rf, pf))

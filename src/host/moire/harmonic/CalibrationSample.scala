@@ -30,6 +30,6 @@ object CalibrationSample {
 
   def main(args: Array[String]): Unit = {
     val dir = os.Path(args.headOption.getOrElse("docs"), os.pwd)
-    for ((name, text) <- files) { os.write.over(dir / name, text, createFolders = true); println(s"wrote ${dir / name}") }
+    for ((name, text) <- files) { moire.files.SafeWrite.text(dir / name, text); println(s"wrote ${dir / name}") }
   }
 }

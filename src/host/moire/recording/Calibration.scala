@@ -29,7 +29,7 @@ object Calibration {
       if (c.hasDirection) sb.append(',').append(if (c.direction(i) > 0) "cw" else "ccw")
       sb.append('\n')
     }
-    os.write.over(path, sb.toString, createFolders = true)
+    moire.files.SafeWrite.text(path, sb.toString)
   }
 
   /** Parsed and checked by the one reader, [[moire.harmonic.CalibrationData]]; errors become one-line usage errors. */

@@ -3,7 +3,7 @@ package moire.recording
 import moire.signal.{Adc, AdcFormat}
 
 /** A `moire-recording v1` file: ADC pin codes of the sin and cos channels, with metadata.
-  * Codes are as the ADC drives its pins (`adc` format); `extra` holds any further numeric columns.
+  * Codes are as the ADC drives its pins (`adc_format`); `extra` holds any further numeric columns.
   */
 final case class Recording(
   sampleRateHz: Double,
@@ -27,17 +27,18 @@ final case class Recording(
 
 object Recording {
   val Magic = "# moire-recording v1"
+  /** The fastest sample rate a file may state (100 GS/s, beyond any ADC a read head is sampled with). */
+  val MaxSampleRateHz = 1e11
 
-  /** Writes the file; metadata keys `sample_rate_hz`, `adc_bits`, `adc_format`, `samples` are set from the recording.
-    * Other metadata is written as it is, except an old-style `adc` that only named the code format.
+  /** Writes the file; metadata keys `sample_rate_hz`, `adc_bits`, `adc_format`, `samples` are set from the
+    * recording; every other key (`adc`, free text naming the converter, among them) is kept as it is.
     */
   def write(path: os.Path, r: Recording): Unit = {
     val sb = new java.lang.StringBuilder(r.length * 12 + 256)
     sb.append(Magic).append('\n')
     val fixed = Seq("sample_rate_hz" -> fmt(r.sampleRateHz), "adc_bits" -> r.adc.bits.toString,
       "adc_format" -> r.adc.format.name, "samples" -> r.length.toString)
-    val rest = r.meta.filter { case (k, v) => !fixed.exists(_._1 == k) && !(k == "adc" && AdcFormat.parse(v).isRight) }
-      .toSeq.sortBy(_._1)
+    val rest = r.meta.filter { case (k, _) => !fixed.exists(_._1 == k) }.toSeq.sortBy(_._1)
     for ((k, v) <- fixed ++ rest) sb.append("# ").append(k).append(": ").append(v).append('\n')
     val cols = r.extra.keys.toSeq.sorted
     sb.append((Seq("sin", "cos") ++ cols).mkString(",")).append('\n')
@@ -47,7 +48,7 @@ object Recording {
       cols.foreach(c => sb.append(',').append(fmt(r.extra(c)(i))))
       sb.append('\n'); i += 1
     }
-    os.write.over(path, sb.toString, createFolders = true)
+    moire.files.SafeWrite.text(path, sb.toString)
   }
 
   private def fmt(d: Double): String = if (d == math.rint(d) && math.abs(d) < 1e15) d.toLong.toString else d.toString
@@ -59,33 +60,38 @@ object Recording {
     parse(path.toString, lines)
   }
 
-  /** The code format: metadata `adc_format`; else an old-style `adc` naming a format; else offset binary.
-    * `adc` is free text (the converter's name, say) and never an error.
+  /** The code format: `adc_format` (offset-binary or twos-complement); files written before it held the
+    * format under `adc`, which is free text now (`AD9226`): a format name there still counts, anything
+    * else is a converter's name, and the codes are offset binary.
     */
-  def codeFormat(meta: Map[String, String]): Either[String, AdcFormat] = meta.get("adc_format") match {
-    case Some(v) => AdcFormat.parse(v).left.map(e => s"metadata adc_format: $e")
-    case None => Right(meta.get("adc").flatMap(AdcFormat.parse(_).toOption).getOrElse(AdcFormat.OffsetBinary))
+  def format(meta: Map[String, String]): Either[String, AdcFormat] = meta.get("adc_format") match {
+    case Some(f) => AdcFormat.parse(f).left.map(e => s"metadata adc_format: $e")
+    case None => Right(meta.get("adc").flatMap(a => AdcFormat.parse(a).toOption).getOrElse(AdcFormat.OffsetBinary))
   }
 
   def parse(name: String, lines: IndexedSeq[String]): Recording = {
     def bad(line: Int, msg: String) = throw new RecordingError(s"$name:$line: $msg")
     if (lines.isEmpty || lines.forall(_.trim.isEmpty)) bad(1, "empty file, expected '# moire-recording v1'")
-    if (lines.head.trim != Magic) bad(1, s"first line must be '$Magic', got '${lines.head.take(40)}'")
+    if (lines.head.stripPrefix("\uFEFF").trim != Magic) bad(1, s"first line must be '$Magic', got '${lines.head.take(40)}'")
     val (meta, headerAt) = CsvText.metadata(name, lines)
     def need(k: String) = meta.getOrElse(k, bad(headerAt + 1, s"metadata '$k' is missing (a line '# $k: value' before the header)"))
-    val fs = need("sample_rate_hz").toDoubleOption.filter(v => v > 0 && !v.isInfinite)
-      .getOrElse(bad(headerAt + 1, s"metadata sample_rate_hz '${meta("sample_rate_hz")}' is not a positive number"))
+    val fs = need("sample_rate_hz").toDoubleOption.filter(v => v > 0 && v <= MaxSampleRateHz)
+      .getOrElse(bad(headerAt + 1, s"metadata sample_rate_hz '${meta("sample_rate_hz")}' is not a sample rate (a number above 0 and at most 1e11 Hz)"))
     val bits = need("adc_bits").toIntOption.filter(b => b >= 4 && b <= 24)
       .getOrElse(bad(headerAt + 1, s"metadata adc_bits '${meta("adc_bits")}' is not an integer in 4..24"))
-    val format = codeFormat(meta).fold(e => bad(headerAt + 1, e), identity)
-    val adc = Adc(bits, format)
+    val adc = Adc(bits, format(meta).fold(e => bad(headerAt + 1, e), identity))
     if (headerAt >= lines.length) bad(lines.length, "the header row 'sin,cos' is missing")
     val header = lines(headerAt).split(",", -1).map(_.trim)
+    header.groupBy(identity).collectFirst { case (c, cs) if cs.length > 1 => bad(headerAt + 1, s"column '$c' appears ${cs.length} times in the header") }
     val si = header.indexOf("sin"); val ci = header.indexOf("cos")
     if (si < 0 || ci < 0) bad(headerAt + 1, s"header must name columns sin and cos, got '${lines(headerAt).take(60)}'")
     val rows = (headerAt + 1 until lines.length).filter(i => lines(i).trim.nonEmpty)
     if (rows.isEmpty) bad(headerAt + 1, "no data rows after the header")
     val n = rows.length
+    meta.get("samples").foreach { s =>
+      if (!s.toLongOption.contains(n.toLong))
+        bad(lines.length, s"metadata samples says '$s' but the file has $n data rows: a truncated or edited file")
+    }
     val sin = new Array[Int](n); val cos = new Array[Int](n)
     val extraIdx = header.indices.filter(i => i != si && i != ci)
     val extra = extraIdx.map(_ => new Array[Double](n))
@@ -104,8 +110,8 @@ object Recording {
       var e = 0
       while (e < extraIdx.length) {
         val c = extraIdx(e)
-        extra(e)(r) = cells(c).trim.toDoubleOption.filter(!_.isNaN)
-          .getOrElse(bad(ln, s"${header(c)} '${cells(c).trim}' is not a number"))
+        extra(e)(r) = cells(c).trim.toDoubleOption.filter(v => !v.isNaN && !v.isInfinite)
+          .getOrElse(bad(ln, s"${header(c)} '${cells(c).trim}' is not a finite number"))
         e += 1
       }
       r += 1
@@ -117,8 +123,8 @@ object Recording {
 /** Shared text helpers of the two CSV formats. */
 object CsvText {
   def lines(path: os.Path): IndexedSeq[String] = {
-    val text = try os.read(path) catch { case e: java.io.IOException => throw new RecordingError(s"$path: cannot read (${e.getMessage})") }
-    text.split("\r?\n", -1).toIndexedSeq match { case s if s.nonEmpty && s.last.isEmpty => s.init; case s => s }
+    val text = try os.read(path) catch { case e: java.io.IOException => throw new RecordingError(s"$path: cannot read (${moire.files.SafeWrite.reason(e)})") }
+    text.stripPrefix("\uFEFF").split("\r?\n", -1).toIndexedSeq match { case s if s.nonEmpty && s.last.isEmpty => s.init; case s => s }
   }
 
   /** `# key: value` lines after the first; returns the map and the index of the first other line. */
@@ -129,7 +135,9 @@ object CsvText {
       if (body.nonEmpty) {
         val at = body.indexOf(':')
         if (at <= 0) throw new RecordingError(s"$name:${i + 1}: metadata line must be '# key: value', got '${lines(i).take(60)}'")
-        m(body.substring(0, at).trim) = body.substring(at + 1).trim
+        val key = body.substring(0, at).trim
+        if (m.contains(key)) throw new RecordingError(s"$name:${i + 1}: metadata key '$key' appears twice")
+        m(key) = body.substring(at + 1).trim
       }
       i += 1
     }

@@ -20,7 +20,7 @@ object ReplayCmd {
   /** Options of the subdivider: the recording's metadata first, then what the user gave (which wins). */
   def config(opts: Seq[String], meta: Map[String, String]): SubdivConfig = {
     def userGave(o: String) = opts.contains(o)
-    val fromMeta = Seq("--input-bits" -> meta.get("adc_bits"), "--adc-format" -> moire.recording.Recording.codeFormat(meta).toOption.map(_.name), "--counts" -> meta.get("counts_per_period"))
+    val fromMeta = Seq("--input-bits" -> meta.get("adc_bits"), "--adc-format" -> Recording.format(meta).toOption.map(_.name), "--counts" -> meta.get("counts_per_period"))
       .collect { case (o, Some(v)) if !userGave(o) => Seq(o, v) }.flatten
     subdivParser.constructEither(fromMeta ++ opts, allowPositional = false) match {
       case Right(c) => c
@@ -71,8 +71,7 @@ object ReplayCmd {
   def replay(d: ReplayDesign, p: PinStream, quiet: Boolean, log: String => Unit, head: Int = 100000, windows: Int = 20): (ReplayOutput, CheckResult) = {
     val h = build(d, log)
     val bar = if (quiet || p.length < 2000000) None
-      else Some(new me.tongfei.progressbar.ProgressBarBuilder().setTaskName("replay").setInitialMax(p.length.toLong)
-        .setConsumer(new me.tongfei.progressbar.ConsoleProgressBarConsumer(System.err)).build())
+      else Some(new moire.progress.Bar("replay", p.length.toLong))
     val t0 = System.nanoTime()
     val out = try Replay.run(h, d, p, k => bar.foreach(_.stepTo(k))) finally bar.foreach(_.close())
     val t1 = System.nanoTime()
@@ -104,6 +103,10 @@ object ReplayCmd {
     }
     val f = file.getOrElse(throw new ReplayError("replay: name a recording file (see --help)"))
     val path = os.Path(f, os.pwd)
+    // The output is checked before the long work: never one of the inputs, always writable.
+    val dest = os.Path(out.getOrElse(path.last.stripSuffix(".csv") + "-replay.csv"), os.pwd)
+    moire.files.SafeWrite.refuseInputs(dest, Seq(path))
+    moire.files.SafeWrite.checkFile(dest)
     var t = System.nanoTime()
     def lap(): Double = { val now = System.nanoTime(); val s = (now - t) / 1e9; t = now; s }
     val rec = Recording.read(path)
@@ -115,7 +118,6 @@ object ReplayCmd {
     log(s"${d.describe}, latency ${d.latency} clocks, ${p.length} samples")
     val (o, check) = replay(d, p, quiet, log, head, windows)
     val replayS = lap()
-    val dest = os.Path(out.getOrElse(path.last.stripSuffix(".csv") + "-replay.csv"), os.pwd)
     OutputCsv.write(dest, f, d, o, rec.extra.get("sample_index"))
     val writeS = lap()
     log(f"read CSV $readS%.1f s, emit + build + replay + check $replayS%.1f s, write CSV $writeS%.1f s")
@@ -129,8 +131,11 @@ object ReplayCmd {
 object OutputCsv {
   val Magic = "# moire-replay v1"
   def write(dest: os.Path, input: String, d: ReplayDesign, o: ReplayOutput, sampleIndex: Option[Array[Double]]): Unit = {
-    os.makeDir.all(dest / os.up)
-    val w = new java.io.BufferedWriter(new java.io.OutputStreamWriter(new java.io.FileOutputStream(dest.toIO), "US-ASCII"), 1 << 20)
+    moire.files.SafeWrite(dest)(tmp => write(tmp.toIO, input, d, o, sampleIndex))
+  }
+
+  private def write(dest: java.io.File, input: String, d: ReplayDesign, o: ReplayOutput, sampleIndex: Option[Array[Double]]): Unit = {
+    val w = new java.io.BufferedWriter(new java.io.OutputStreamWriter(new java.io.FileOutputStream(dest), "US-ASCII"), 1 << 20)
     try {
       w.write(s"$Magic\n# input: $input\n# design: ${d.describe}\n# latency: ${d.latency}\n" +
         s"# alignment: row i = the outputs for input sample i, taken ${d.latency} clocks after the sample entered\n" +

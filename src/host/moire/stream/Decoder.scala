@@ -15,14 +15,17 @@ import moire.protocol.StreamV1._
   * @param indexGaps     places where the sample index did not go up by D; `indexMissing` records missing
   *                      in total (counted where the step is a forward multiple of D)
   * @param dropped       sum of the frames' `dropped` fields (records lost on the board)
+  * @param burstGaps     burst sample frames whose offset did not follow the previous one (0 starts a burst);
+  *                      `burstMissing` samples missing in total
   */
 final case class StreamStats(
   bytes: Long = 0, frames: Long = 0, recordFrames: Long = 0, replies: Long = 0, records: Long = 0,
   skippedBytes: Long = 0, leadingBytes: Long = 0, crcErrors: Long = 0, badHeaders: Long = 0, truncated: Long = 0, truncatedBytes: Long = 0,
-  seqGaps: Long = 0, seqMissing: Long = 0, indexGaps: Long = 0, indexMissing: Long = 0, dropped: Long = 0
+  seqGaps: Long = 0, seqMissing: Long = 0, indexGaps: Long = 0, indexMissing: Long = 0, dropped: Long = 0,
+  burstInfos: Long = 0, burstFrames: Long = 0, burstSamples: Long = 0, burstGaps: Long = 0, burstMissing: Long = 0
 ) {
   /** Anything lost or damaged (garbage before the first frame alone does not count). */
-  def lost: Boolean = crcErrors + badHeaders + truncated + seqGaps + indexGaps + dropped > 0
+  def lost: Boolean = crcErrors + badHeaders + truncated + seqGaps + indexGaps + dropped + burstGaps > 0
 }
 
 /** Incremental decoder of board -> host frames: feed bytes in any chunking, get the good frames in order.
@@ -42,6 +45,7 @@ final class Decoder(val decimation: Long) {
   private var pendingTrunc = -1L // finishing: offset of an incomplete frame, truncated unless a good frame follows
   private var lastSeq = -1
   private var lastIndex = -1L
+  private var nextOffset = 0L // the burst offset the next burst sample frame should have
   private var frameLen = ReplyBytes // length of the last good record frame: the span assumed for a bad header
   private var finished = false
   private var s = StreamStats()
@@ -117,6 +121,8 @@ final class Decoder(val decimation: Long) {
           else u8(AtType) match {
             case TypeRecords => if (avail <= AtCount) -1 else if (u8(AtCount) == 0) 0 else recordFrameBytes(u8(AtCount))
             case TypeReply => ReplyBytes
+            case TypeBurstInfo => BurstInfoBytes
+            case TypeBurstSamples => if (avail <= AtBurstCount) -1 else if (u8(AtBurstCount) == 0) 0 else burstFrameBytes(u8(AtBurstCount))
             case _ => 0
           }
         if (len == 0) {
@@ -147,7 +153,13 @@ final class Decoder(val decimation: Long) {
 
   private def decode(len: Int): Frame = {
     val seq = u16(AtSeq)
+    def anchor(at: Int) = moire.io.Anchor(u32(at), u32(at + 4).toInt, u32(at + 8).toInt)
     if (u8(AtType) == TypeReply) RegisterReply(seq, u8(AtReplyAddr), u32(AtReplyValue))
+    else if (u8(AtType) == TypeBurstInfo)
+      BurstInfo(seq, math.max(u32(AtBurstLength), 1L), math.min(u32(AtBurstPre), math.max(u32(AtBurstLength), 1L) - 1),
+        anchor(AtBurstTrigger), anchor(AtBurstLast))
+    else if (u8(AtType) == TypeBurstSamples)
+      BurstSamples(seq, u32(AtBurstOffset), IndexedSeq.tabulate(u8(AtBurstCount))(k => u32(AtBurstWords + 4 * k)))
     else {
       frameLen = len
       val n = u8(AtCount)
@@ -166,6 +178,12 @@ final class Decoder(val decimation: Long) {
     lastSeq = f.seq
     f match {
       case r: RegisterReply => t = t.copy(replies = t.replies + 1)
+      case b: BurstInfo => t = t.copy(burstInfos = t.burstInfos + 1)
+      case b: BurstSamples =>
+        if (b.offset != 0 && b.offset != nextOffset)
+          t = t.copy(burstGaps = t.burstGaps + 1, burstMissing = t.burstMissing + math.max(0L, b.offset - nextOffset))
+        nextOffset = b.offset + b.words.size
+        t = t.copy(burstFrames = t.burstFrames + 1, burstSamples = t.burstSamples + b.words.size)
       case r: RecordFrame =>
         var gaps = 0L; var missing = 0L
         r.records.foreach { x =>

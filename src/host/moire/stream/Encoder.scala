@@ -29,6 +29,18 @@ object Encoder {
         o.u32(at + RecordLayout.at(RecordLayout.Position), x.position.toLong & MaxU32)
       }
       o.crc()
+    case b: BurstInfo =>
+      val o = new Out(BurstInfoBytes)
+      o.u8(AtType, TypeBurstInfo); o.u16(AtSeq, b.seq); o.u32(AtBurstLength, b.length); o.u32(AtBurstPre, b.pre)
+      for ((a, at) <- Seq(b.trigger -> AtBurstTrigger, b.last -> AtBurstLast)) {
+        o.u32(at, a.index); o.u32(at + 4, a.position.toLong & MaxU32); o.u32(at + 8, a.ref.toLong & MaxU32)
+      }
+      o.crc()
+    case b: BurstSamples =>
+      val o = new Out(burstFrameBytes(b.words.size))
+      o.u8(AtType, TypeBurstSamples); o.u16(AtSeq, b.seq); o.u32(AtBurstOffset, b.offset); o.u8(AtBurstCount, b.words.size)
+      for ((w, k) <- b.words.zipWithIndex) o.u32(AtBurstWords + 4 * k, w)
+      o.crc()
     case r: RegisterReply =>
       val o = new Out(ReplyBytes)
       o.u8(AtType, TypeReply); o.u16(AtSeq, r.seq); o.u8(AtReplyAddr, r.addr); o.u32(AtReplyValue, r.value)

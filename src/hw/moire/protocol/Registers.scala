@@ -40,30 +40,41 @@ object Registers {
   val all: Seq[Reg] = Seq(Id, Version, Status, Control, Decimation, DroppedTotal, CmdErrors, Position, AdcClockHz,
     FrameRecords, CountsPerPeriod, EncoderCount, EncoderZCount, AdcFormat)
 
+  /** Burst capture (moire.io.BurstCapture), above the harmonic slots in use. */
+  val BurstControl: Reg = Reg(0xE0, "burst_control", true, "write bit0 arm (latches the burst registers), bit1 send the finished burst")
+  val BurstTrigger: Reg = Reg(0xE1, "burst_trigger", true, "0 now, 1 |speed| rises to burst_threshold, 2 reference Z edge, 3 position crosses burst_target")
+  val BurstLength: Reg = Reg(0xE2, "burst_length", true, "N, samples per burst, 1..burst depth")
+  val BurstPre: Reg = Reg(0xE3, "burst_pre", true, "samples before the trigger sample, 0..N-1")
+  val BurstThreshold: Reg = Reg(0xE4, "burst_threshold", true, "speed threshold, counts per speed window")
+  val BurstTarget: Reg = Reg(0xE5, "burst_target", true, "trigger position, counts, two's complement")
+  val BurstState: Reg = Reg(0xE6, "burst_state", false, "0 idle, 1 waiting for the trigger, 2 capturing, 3 done; bit2 sending")
+  val burst: Seq[Reg] = Seq(BurstControl, BurstTrigger, BurstLength, BurstPre, BurstThreshold, BurstTarget, BurstState)
+  private def known: Seq[Reg] = all ++ burst
+
   /** First address of the harmonic-coefficient window: 0x10 + slot*4 + {0 order, 1 c_k, 2 phi_k}. */
   val HarmonicBase: Int = 0x10
   val HarmonicFields: Seq[String] = Seq("order", "c", "phi")
   private val harmName = """h(\d+)_(order|c|phi)""".r
 
   /** Name of an address: a table name, `h<slot>_<order|c|phi>` in the harmonic window, else hex. */
-  def name(addr: Int): String = all.find(_.addr == addr).map(_.name).getOrElse {
+  def name(addr: Int): String = known.find(_.addr == addr).map(_.name).getOrElse {
     val w = addr - HarmonicBase
     if (w >= 0 && (w & 3) < 3) s"h${w >> 2}_${HarmonicFields(w & 3)}" else f"0x$addr%02x"
   }
 
-  def writable(addr: Int): Boolean = all.find(_.addr == addr).fold(addr >= HarmonicBase)(_.writable)
+  def writable(addr: Int): Boolean = known.find(_.addr == addr).fold(addr >= HarmonicBase)(_.writable)
 
   /** A register named by table name, `h<slot>_<field>`, or an address (0x.. hex or decimal), 0..255. */
   def parse(s: String): Either[String, Int] = {
     val t = s.trim
     def inRange(v: Long) = if (v >= 0 && v <= 0xFF) Right(v.toInt) else Left(s"register address $t is outside 0x00..0xff")
-    all.find(_.name == t).map(r => Right(r.addr)).getOrElse(t match {
+    known.find(_.name == t).map(r => Right(r.addr)).getOrElse(t match {
       case harmName(slot, f) if slot.length <= 2 => inRange(HarmonicBase + slot.toLong * 4 + HarmonicFields.indexOf(f))
       case _ if t.startsWith("0x") || t.startsWith("0X") =>
         scala.util.Try(java.lang.Long.parseLong(t.drop(2), 16)).toOption.map(inRange)
           .getOrElse(Left(s"register '$t' is not a hex address"))
       case _ => t.toLongOption.map(inRange).getOrElse(Left(
-        s"register '$t' is unknown; names: ${all.map(_.name).mkString(", ")}, h<slot>_<order|c|phi>, or an address like 0x04"))
+        s"register '$t' is unknown; names: ${known.map(_.name).mkString(", ")}, h<slot>_<order|c|phi>, or an address like 0x04"))
     })
   }
 

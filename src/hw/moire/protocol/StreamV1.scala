@@ -10,6 +10,9 @@ object StreamV1 {
   val Sync1: Int = 0x5A
   val TypeRecords: Int = 0x01
   val TypeReply: Int = 0x02
+  /** Burst info: length, pre-trigger and the two anchors of a finished burst; then its samples. */
+  val TypeBurstInfo: Int = 0x03
+  val TypeBurstSamples: Int = 0x04
   val OpRead: Int = 0x52  // 'R'
   val OpWrite: Int = 0x57 // 'W'
   val MaxU32: Long = 0xFFFFFFFFL
@@ -33,6 +36,21 @@ object StreamV1 {
   val AtReplyAddr: Int = HeaderBytes
   val AtReplyValue: Int = AtReplyAddr + 1
   val ReplyBytes: Int = AtReplyValue + 4 + CrcBytes
+
+  /** Burst info: length (u32), pre (u32), anchors of the trigger and the last sample: index (u32),
+    * position (s32), reference count (s32) each.
+    */
+  val AtBurstLength: Int = HeaderBytes
+  val AtBurstPre: Int = AtBurstLength + 4
+  val AtBurstTrigger: Int = AtBurstPre + 4
+  val AtBurstLast: Int = AtBurstTrigger + 12
+  val BurstInfoBytes: Int = AtBurstLast + 12 + CrcBytes
+  /** Burst samples: offset of the first within the burst (u32), n (u8), n words (u32, [[BurstLayout]]). */
+  val AtBurstOffset: Int = HeaderBytes
+  val AtBurstCount: Int = AtBurstOffset + 4
+  val AtBurstWords: Int = AtBurstCount + 1
+  val MaxBurstWords: Int = 255
+  def burstFrameBytes(n: Int): Int = AtBurstWords + 4 * n + CrcBytes
 
   // ---- host -> board commands: sync, op, addr (u8), value (u32), CRC ----
   val AtOp: Int = 2

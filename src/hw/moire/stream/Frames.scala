@@ -52,6 +52,19 @@ final case class RegisterReply(seq: Int, addr: Int, value: Long) extends Frame {
   require(value >= 0 && value <= StreamV1.MaxU32, s"value must be a u32, got $value")
 }
 
+/** Type 0x03: a finished burst's length, pre-trigger count and anchors (trigger sample = burst sample `pre`). */
+final case class BurstInfo(seq: Int, length: Long, pre: Long, trigger: moire.io.Anchor, last: moire.io.Anchor) extends Frame {
+  require(seq >= 0 && seq <= 0xFFFF, s"seq must be a u16, got $seq")
+  require(length >= 1 && length <= StreamV1.MaxU32 && pre >= 0 && pre < length, s"burst length $length, pre $pre: need 0 <= pre < length <= u32")
+}
+
+/** Type 0x04: 1..255 burst sample words ([[moire.protocol.BurstLayout]]) from sample `offset` of the burst on. */
+final case class BurstSamples(seq: Int, offset: Long, words: IndexedSeq[Long]) extends Frame {
+  require(seq >= 0 && seq <= 0xFFFF, s"seq must be a u16, got $seq")
+  require(offset >= 0 && offset <= StreamV1.MaxU32, s"burst offset must be a u32, got $offset")
+  require(words.nonEmpty && words.size <= StreamV1.MaxBurstWords, s"a burst frame holds 1..${StreamV1.MaxBurstWords} words, got ${words.size}")
+}
+
 /** A host -> board command: read (value ignored, sent as 0) or write one register. */
 final case class Command(write: Boolean, addr: Int, value: Long = 0) {
   require(addr >= 0 && addr <= 0xFF, s"addr must be a byte, got $addr")

@@ -1,0 +1,168 @@
+package moire.io
+
+import chisel3._
+import chisel3.util._
+import moire.protocol.BurstLayout
+
+/** Parameters of the burst capture.
+  * @param samples block-RAM depth: the longest burst (65,536 x 29 bits = 1.9 Mbit: 116 DP16KD after yosys synth_ecp5,
+  *                232 M9K by arithmetic at 8K x 1 each)
+  */
+case class BurstParams(samples: Int = 65536) {
+  require(samples >= 2 && samples <= (1 << 20), s"burst samples must be in 2..${1 << 20}, got $samples")
+  val addrBits: Int = log2Ceil(samples)
+  /** Bits of a length or pre-trigger count (0..samples). */
+  val countBits: Int = log2Ceil(samples + 1)
+  /** Clocks from a sample at `in` to its write into the RAM (one input register). */
+  val latency: Int = 1
+  def moduleName: String = s"BurstCapture_n$samples"
+  /** A requested length (a register's u32) as used: 1..samples. */
+  def length(requested: Long): Int = math.min(math.max(requested, 1L), samples.toLong).toInt
+  /** A requested pre-trigger count as used: 0..length-1. */
+  def pre(requested: Long, length: Int): Int = math.min(math.max(requested, 0L), length - 1L).toInt
+}
+
+/** One full-rate sample offered to the capture: the packed [[BurstLayout]] word, and what the trigger
+  * and the anchors read (datapath position, reference count, speed, sample index).
+  */
+class BurstSample extends Bundle {
+  val word = UInt(BurstLayout.width.W)
+  val position = SInt(32.W)
+  val refCount = SInt(32.W)
+  val speed = SInt(32.W)
+  val index = UInt(32.W)
+}
+
+/** Burst settings as the registers hold them (u32 each); latched at `arm`. */
+class BurstConfig extends Bundle {
+  val mode = UInt(BurstLayout.Trigger.bits.W)
+  val length = UInt(32.W)
+  val pre = UInt(32.W)
+  val threshold = UInt(32.W)
+  val target = SInt(32.W)
+}
+
+/** Sample index, position and reference count of one captured sample. */
+class BurstAnchor extends Bundle {
+  val index = UInt(32.W)
+  val position = SInt(32.W)
+  val refCount = SInt(32.W)
+}
+
+/** States of [[BurstCapture]] (output `state`). */
+object BurstState {
+  val Idle = 0; val Waiting = 1; val Capturing = 2; val Done = 3
+}
+
+/** Burst capture: `length` consecutive samples into block RAM (a ring buffer), `pre` of them before the
+  * trigger sample. `arm` latches the config, forgets the old burst and starts filling; once `pre`
+  * samples are held, the first sample that meets the trigger (immediately; |speed| rising to `threshold`
+  * or above; a rising edge of Z; the position crossing `target`; edges need two samples seen since arm)
+  * is the trigger sample; `length - pre` samples from it on end the burst (state Done). The anchors hold
+  * index, position and reference count of the trigger sample (burst sample `pre`) and the last one.
+  * `read` (in Done) sends the `length` words, oldest first, on `out`; `arm` is ignored while sending.
+  * Latency `p.latency` clock from `in` to the RAM. [[BurstModel]] is the bit-accurate model.
+  */
+class BurstCapture(val p: BurstParams) extends Module {
+  override def desiredName: String = p.moduleName
+  val io = IO(new Bundle {
+    val in = Flipped(Valid(new BurstSample))
+    val config = Input(new BurstConfig)
+    val arm = Input(Bool())
+    val read = Input(Bool())
+    val out = Decoupled(UInt(BurstLayout.width.W))
+    val state = Output(UInt(2.W))
+    val sending = Output(Bool())
+    val length = Output(UInt(p.countBits.W))
+    val pre = Output(UInt(p.countBits.W))
+    val trigger = Output(new BurstAnchor)
+    val last = Output(new BurstAnchor)
+  })
+  val latency: Int = p.latency
+  import BurstLayout.Trigger
+
+  private val s = RegNext(io.in, 0.U.asTypeOf(io.in))
+  private val mem = SyncReadMem(p.samples, UInt(BurstLayout.width.W))
+
+  private val state = RegInit(BurstState.Idle.U(2.W))
+  private val mode = RegInit(0.U(Trigger.bits.W))
+  private val len = RegInit(1.U(p.countBits.W))
+  private val pre = RegInit(0.U(p.countBits.W))
+  private val threshold = RegInit(0.U(32.W))
+  private val target = RegInit(0.S(32.W))
+  private val wptr = RegInit(0.U(p.addrBits.W))
+  private val held = RegInit(0.U(p.countBits.W))
+  private val post = RegInit(0.U(p.countBits.W))
+  private val trig = RegInit(0.U.asTypeOf(new BurstAnchor))
+  private val last = RegInit(0.U.asTypeOf(new BurstAnchor))
+  private val prevValid = RegInit(false.B)
+  private val prevAbove = RegInit(false.B)
+  private val prevBelow = RegInit(false.B)
+  private val prevZ = RegInit(false.B)
+  private val sending = RegInit(false.B)
+
+  // ---- trigger conditions on the registered sample, with the latched config ----
+  private val speedAbs = Mux(s.bits.speed < 0.S, (-s.bits.speed.pad(33)).asUInt, s.bits.speed.pad(33).asUInt)
+  private val above = speedAbs >= threshold
+  private val below = s.bits.position < target
+  private val z = s.bits.word(BurstLayout.RefZ.lsb)
+  private val fired = MuxLookup(mode, true.B)(Seq(
+    Trigger.Speed.U -> (prevValid && above && !prevAbove),
+    Trigger.RefZ.U -> (prevValid && z && !prevZ),
+    Trigger.Position.U -> (prevValid && below =/= prevBelow)))
+  private def anchor: BurstAnchor = {
+    val a = Wire(new BurstAnchor)
+    a.index := s.bits.index; a.position := s.bits.position; a.refCount := s.bits.refCount
+    a
+  }
+
+  private val capturing = state === BurstState.Waiting.U || state === BurstState.Capturing.U
+  private val arm = io.arm && !sending
+  when(arm) {
+    val l = Mux(io.config.length === 0.U, 1.U, Mux(io.config.length > p.samples.U, p.samples.U, io.config.length))
+    len := l
+    pre := Mux(io.config.pre >= l, l - 1.U, io.config.pre)
+    mode := io.config.mode; threshold := io.config.threshold; target := io.config.target
+    wptr := 0.U; held := 0.U; post := 0.U; prevValid := false.B
+    state := BurstState.Waiting.U
+  }.elsewhen(s.valid) {
+    prevValid := true.B; prevAbove := above; prevBelow := below; prevZ := z
+    when(capturing) {
+      mem.write(wptr, s.bits.word)
+      wptr := Mux(wptr === len - 1.U, 0.U, wptr + 1.U)
+      held := Mux(held === len, held, held + 1.U)
+      val start = state === BurstState.Waiting.U && held >= pre && fired
+      when(start) { trig := anchor }
+      when(start || state === BurstState.Capturing.U) {
+        post := post + 1.U
+        when(post + 1.U === len - pre) {
+          last := anchor; state := BurstState.Done.U
+        }.otherwise { state := BurstState.Capturing.U }
+      }
+    }
+  }
+
+  // ---- read-out: oldest first (the ring is full when Done, so the oldest is at wptr) ----
+  private val q = Module(new Queue(UInt(BurstLayout.width.W), 2))
+  private val raddr = RegInit(0.U(p.addrBits.W))
+  private val issued = RegInit(0.U(p.countBits.W))
+  private val inflight = RegInit(false.B)
+  private val issue = sending && issued =/= len && (q.io.count +& inflight.asUInt) < 2.U
+  inflight := issue
+  q.io.enq.valid := inflight
+  q.io.enq.bits := mem.read(raddr, issue)
+  io.out <> q.io.deq
+  when(io.read && state === BurstState.Done.U && !sending) {
+    sending := true.B; raddr := wptr; issued := 0.U
+  }.elsewhen(sending) {
+    when(issue) { raddr := Mux(raddr === len - 1.U, 0.U, raddr + 1.U); issued := issued + 1.U }
+    when(issued === len && !inflight && q.io.count === 0.U) { sending := false.B }
+  }
+
+  io.state := state
+  io.sending := sending
+  io.length := len
+  io.pre := pre
+  io.trigger := trig
+  io.last := last
+}
