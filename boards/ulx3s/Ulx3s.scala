@@ -37,7 +37,7 @@ object Ulx3s {
       dir / s"$projectName.lpf" -> Ulx3sProject.lpf(p),
       buildScript(dir) -> Ulx3sProject.build(p, verilog.map(_.relativeTo(dir).toString)),
       dir / "ecp5-tools.sh" -> Ulx3sProject.toolsScript)
-    for ((f, text) <- files) os.write.over(f, text, createFolders = true)
+    for ((f, text) <- files) moire.files.SafeWrite.text(f, text)
     Seq(buildScript(dir), dir / "ecp5-tools.sh").foreach(os.perms.set(_, "rwxr-xr-x"))
     verilog ++ files.map(_._1)
   }
