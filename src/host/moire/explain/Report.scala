@@ -56,15 +56,14 @@ trait Progress {
 }
 object Progress {
   val none: Progress = new Progress { def phase(name: String, steps: Int): Unit = (); def step(k: Int): Unit = () }
-  /** me.tongfei progress bar on stderr. */
+  /** A bar per phase on stderr (plain lines when stderr is no terminal). */
   def bar(task: String): Progress = new Progress {
-    private var pb: me.tongfei.progressbar.ProgressBar = _
+    private var pb: moire.progress.Bar = _
     def phase(name: String, steps: Int): Unit = {
       if (pb != null) pb.close()
-      pb = new me.tongfei.progressbar.ProgressBarBuilder().setTaskName(s"$task: $name").setInitialMax(steps.toLong)
-        .setConsumer(new me.tongfei.progressbar.ConsoleProgressBarConsumer(System.err)).build()
+      pb = new moire.progress.Bar(s"$task: $name", steps.toLong)
     }
-    def step(k: Int): Unit = if (pb != null) pb.stepBy(k.toLong)
+    def step(k: Int): Unit = if (pb != null) pb.stepTo(pb.position + k)
     override def close(): Unit = if (pb != null) { pb.close(); pb = null }
   }
 }
