@@ -35,7 +35,9 @@ lazy val hw = layer("hw", "src/hw").settings(
 
 /** Board harnesses, pin tables, vendor project writers. */
 lazy val boards = layer("boards", "boards").dependsOn(hw).settings(
-  libraryDependencies += "com.lihaoyi" %% "mainargs" % "0.7.6"
+  libraryDependencies += "com.lihaoyi" %% "mainargs" % "0.7.6",
+  // ecp5-tools.sh also as a resource: the ULX3S project folder gets a copy for its build.sh
+  Compile / unmanagedResourceDirectories += baseDirectory.value / "tools"
 )
 
 /** Host tools: recording, stream codec and recorder, replay, explain, cost, the papers' tables, calibration. */
@@ -81,13 +83,13 @@ lazy val root = (project in file("."))
     Test / fork := true,
     Test / javaOptions ++= Seq("-Xss8m", "-Xmx6g"),
     Test / testOptions += Tests.Argument(TestFrameworks.ScalaTest, "-oD"),
-    // Two forked JVMs side by side (2 cores): the CORDIC and cost suites, then the rest (about 7 min each).
-    // A package stays in one JVM: its suites share caches (replay's Verilator builds, the timing cache).
+    // Two forked JVMs side by side (2 cores): the CORDIC suites and the ULX3S bitstream build, then the rest.
+    // A package's suites that share caches (replay's Verilator builds, the timing cache) stay in one JVM.
     Test / testGrouping := {
-      val first = Seq("moire.cordic.", "moire.cost.")
+      val first = Seq("moire.cordic.", "moire.board.Ulx3sBuildSpec")
       val (a, b) = (Test / definedTests).value.partition(t => first.exists(t.name.startsWith))
       val fork = ForkOptions().withRunJVMOptions((Test / javaOptions).value.toVector).withWorkingDirectory(baseDirectory.value)
-      Seq(Tests.Group("cordic-cost", a, Tests.SubProcess(fork)), Tests.Group("rest", b, Tests.SubProcess(fork))).filter(_.tests.nonEmpty)
+      Seq(Tests.Group("cordic-ulx3s", a, Tests.SubProcess(fork)), Tests.Group("rest", b, Tests.SubProcess(fork))).filter(_.tests.nonEmpty)
     },
     Test / parallelExecution := true,
     // sbt's default restrictions allow one forked group at a time; replace them.

@@ -1,9 +1,10 @@
 package moire.board.de2115
 
 import chisel3._
+import moire.board.AdcEncoderPins
 
 /** The DE2-115 top-level ports other than CLOCK_50; names are those of [[De2115Pins]]. */
-class De2115Ports extends Bundle {
+class De2115Ports extends AdcEncoderPins {
   val KEY = Input(UInt(4.W))
   val LEDR = Output(UInt(18.W))
   val LEDG = Output(UInt(9.W))
@@ -17,18 +18,6 @@ class De2115Ports extends Bundle {
   val HEX7 = Output(UInt(7.W))
   val UART_TXD = Output(Bool())
   val UART_RXD = Input(Bool())
-  val SIN_D = Input(UInt(12.W))
-  val SIN_OTR = Input(Bool())
-  val SIN_CLK = Output(Bool())
-  val COS_D = Input(UInt(12.W))
-  val COS_OTR = Input(Bool())
-  val COS_CLK = Output(Bool())
-  val ENC_A_IN = Input(Bool())
-  val ENC_B_IN = Input(Bool())
-  val ENC_Z_IN = Input(Bool())
-  val ENC_A_OUT = Output(Bool())
-  val ENC_B_OUT = Output(Bool())
-  val ENC_Z_OUT = Output(Bool())
   def hex: Seq[UInt] = Seq(HEX0, HEX1, HEX2, HEX3, HEX4, HEX5, HEX6, HEX7)
 }
 

@@ -2,7 +2,7 @@ package moire.board
 
 import chisel3._
 import chiseltest._
-import moire.board.de2115.{BoardParams, De2115Ports, De2115Top, SevenSeg}
+import moire.board.de2115.{De2115Ports, De2115Top, SevenSeg}
 import moire.io.Quadrature
 import moire.stream.{Command, Decoder, Encoder, Frame, RecordFrame, RegisterReply}
 import scala.collection.mutable

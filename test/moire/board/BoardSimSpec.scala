@@ -1,7 +1,6 @@
 package moire.board
 
 import chiseltest._
-import moire.board.de2115.{BoardParams, ClockSource}
 import moire.cordic.SimSupport
 import moire.protocol.Registers
 import moire.signal.{AdcFormat, Motion, SignalParams}

@@ -1,7 +1,6 @@
 package moire.board
 
 import chiseltest._
-import moire.board.de2115.{BoardDesign, BoardParams, ClockSource}
 import moire.chain.{AdcPinCodes, CorrectedSubdivModel}
 import moire.cordic.SimSupport
 import moire.protocol.Registers

@@ -1,6 +1,6 @@
 package moire.board
 
-import moire.board.de2115.{BoardParams, ClockSource, De2115, De2115Pins}
+import moire.board.de2115.{De2115, De2115Pins}
 import moire.cordic.SimSupport
 import org.scalatest.flatspec.AnyFlatSpec
 import scala.sys.process._
@@ -73,8 +73,8 @@ class QuartusProjectSpec extends AnyFlatSpec {
       assert(stds.get(port).contains(r.std), s"$port standard ${stds.get(port)}, the sheet says ${r.std}")
     }
     // every port bit of the top level has a pin
-    val top = os.read(dir / "rtl" / s"${BoardParams().topName}.sv")
-    val body = top.substring(top.indexOf(s"module ${BoardParams().topName}("))
+    val top = os.read(dir / "rtl" / s"${De2115.topName(BoardParams())}.sv")
+    val body = top.substring(top.indexOf(s"module ${De2115.topName(BoardParams())}("))
     // "input [11:0] SIN_D," or a continuation "HEX1," that shares the previous declaration's range
     val header = body.substring(body.indexOf('(') + 1, body.indexOf(");")).replaceAll("//[^\n]*", "")
     val decl = """(?:(?:input|output)\s+)?(?:\[(\d+):0\]\s+)?(\w+)""".r
@@ -92,8 +92,8 @@ class QuartusProjectSpec extends AnyFlatSpec {
   it should "carry the reference's global settings, the top entity, the SDC and every Verilog file" in {
     for (g <- Seq("FAMILY \"Cyclone IV E\"", "DEVICE EP4CE115F29C7", "DEVICE_FILTER_PIN_COUNT 780",
       "STRATIX_DEVICE_IO_STANDARD \"3.3-V LVTTL\"", "CYCLONEII_RESERVE_NCEO_AFTER_CONFIGURATION \"USE AS REGULAR IO\"",
-      s"TOP_LEVEL_ENTITY ${BoardParams().topName}", "SDC_FILE moire_de2_115.sdc", "VERILOG_MACRO \"SYNTHESIS=1\"",
-      s"SYSTEMVERILOG_FILE rtl/${BoardParams().topName}.sv", "VERILOG_FILE rtl/De2115Pll.v"))
+      s"TOP_LEVEL_ENTITY ${De2115.topName(BoardParams())}", "SDC_FILE moire_de2_115.sdc", "VERILOG_MACRO \"SYNTHESIS=1\"",
+      s"SYSTEMVERILOG_FILE rtl/${De2115.topName(BoardParams())}.sv", "VERILOG_FILE rtl/De2115Pll.v"))
       assert(qsf.contains(s"set_global_assignment -name $g"), g)
     val sdc = os.read(dir / "moire_de2_115.sdc")
     for (s <- Seq("create_clock -name CLOCK_50 -period 20.000", "derive_pll_clocks", "derive_clock_uncertainty",
@@ -119,11 +119,11 @@ class QuartusProjectSpec extends AnyFlatSpec {
     val p = BoardParams(clockSource = ClockSource.Logic, adcClockHz = 25000000)
     val files = De2115.emitVerilog(p, d).map(_.toString)
     val log = new StringBuilder
-    val code = (Seq("verilator", "--lint-only", "-Wno-fatal", "-Wno-WIDTH", "-Wno-DECLFILENAME", "-Wno-UNUSED", "--top-module", p.topName) ++ files)
+    val code = (Seq("verilator", "--lint-only", "-Wno-fatal", "-Wno-WIDTH", "-Wno-DECLFILENAME", "-Wno-UNUSED", "--top-module", De2115.topName(p)) ++ files)
       .!(ProcessLogger(l => log.append(l).append('\n'), l => log.append(l).append('\n')))
     assert(code == 0, log.toString)
     if (SimSupport.hasYosys) {
-      val y = Seq("yosys", "-q", "-p", s"read_verilog -sv ${files.mkString(" ")}; hierarchy -check -top ${p.topName}").!(ProcessLogger(_ => (), l => log.append(l)))
+      val y = Seq("yosys", "-q", "-p", s"read_verilog -sv ${files.mkString(" ")}; hierarchy -check -top ${De2115.topName(p)}").!(ProcessLogger(_ => (), l => log.append(l)))
       assert(y == 0, log.toString)
     }
   }

@@ -63,6 +63,17 @@ class ExplainCliSpec extends AnyFlatSpec with Matchers {
     lines.head should include("bad.csv:6: 1 cells, the header has 2")
     val (c2, _, err2) = run("explain", (dir / "none.csv").toString)
     c2 shouldBe 2; err2 should include("no such file")
+    // several files: the good one gets its report, the bad ones their line each, exit 2 after all were tried
+    val (c4, _, _) = run("simulate", "--out", (dir / "good.csv").toString, "--samples", "20000")
+    c4 shouldBe 0
+    os.write.over(dir / "good.csv", os.read(dir / "good.csv").replace("# adc_format:", "# adc: AD9226\n# adc_format:"))
+    val (c5, out5, err5) = run("explain", (dir / "bad.csv").toString, (dir / "good.csv").toString, (dir / "none.csv").toString,
+      "--json-dir", (dir / "j").toString)
+    c5 shouldBe 2
+    out5 should include("good.csv")
+    os.exists(dir / "j" / "good.json") shouldBe true
+    err5 should (include("bad.csv:6:") and include("none.csv: no such file") and include("2 of 3 files failed"))
+    println(s"explain on bad, good, missing file: exit $c5; stderr:\n$err5")
     val (c3, _, err3) = run("simulate", "--out", (dir / "x.csv").toString, "--effect", "wobble:x=1")
     c3 shouldBe 2; err3 should include("'wobble' is not an effect")
   }

@@ -185,11 +185,12 @@ object Main {
                    @arg(doc = "folder for the recording, JSON and plots (default: a temporary folder)") out: Option[String] = None): Unit =
     println(moire.explain.ExplainCmd.bench(samples, out))
 
-  @main(doc = "Write a Quartus project for a board (de2-115): SystemVerilog, .qsf, .sdc, .qpf and flash.sh.")
-  def board(@arg(doc = "board name: de2-115 (also accepted as the first word after board)") name: String,
-            @arg(doc = "output folder (default generated/de2-115)") out: String = "generated/de2-115",
+  @main(doc = "Write a board project: de2-115 (SystemVerilog, .qsf, .sdc, .qpf, flash.sh for Quartus) or ulx3s (Verilog, .lpf, build.sh for the open ECP5 flow).")
+  def board(@arg(doc = "board name: de2-115 | ulx3s (also accepted as the first word after board)") name: String,
+            @arg(doc = "output folder (default generated/NAME)") out: Option[String] = None,
             @arg(doc = "subdiv | corrected") design: String = "subdiv",
-            @arg(doc = "AD9226 clock in Hz, 50 MHz / k (default 50000000)") adcClockHz: Int = 50000000,
+            @arg(doc = "system clock in Hz: de2-115 50000000 only; ulx3s what its PLL makes exactly from 25 MHz, e.g. 65000000 (default 50000000)") clockHz: Int = 50000000,
+            @arg(doc = "AD9226 clock in Hz, clock-hz / k (default 50000000)") adcClockHz: Int = 50000000,
             @arg(doc = "ADC strap: offset-binary | twos-complement") adcFormat: String = "offset-binary",
             @arg(doc = "default decimation D, 1..16777216 (default 62500)") decimation: Int = 62500,
             @arg(doc = "UART baud rate (default 115200)") baud: Int = 115200,
@@ -197,10 +198,10 @@ object Main {
             @arg(doc = "record FIFO depth (default 256)") fifoDepth: Int = 256,
             @arg(doc = "encoder inputs: clocks stable before a level is taken (default 16)") glitchFilter: Int = 16,
             @arg(doc = "M, counts per grating period (default 1024)") counts: Int = 1024,
-            @arg(doc = "pll | logic (no PLL, for simulation)") clockSource: String = "pll"): Unit = {
-    import moire.board.de2115.BoardCmd
+            @arg(doc = "pll | logic (no PLL, for simulation; ulx3s: clock-hz 25000000)") clockSource: String = "pll"): Unit = {
+    import moire.board.BoardCmd
     try BoardCmd.run(name, BoardCmd.params(design, adcClockHz, adcFormat, decimation, baud, frameRecords, fifoDepth,
-      glitchFilter, counts, clockSource), out).foreach(println)
+      glitchFilter, counts, clockSource, clockHz), out.getOrElse(s"generated/$name")).foreach(println)
     catch { case e: BoardCmd.BadOption => throw new UsageError(e.getMessage) }
   }
 

@@ -1,7 +1,8 @@
 package moire.cost
 
 import chisel3.RawModule
-import moire.board.de2115.{BoardDesign, BoardParams, De2115}
+import moire.board.{BoardDesign, BoardParams}
+import moire.board.de2115.De2115
 import moire.adapt.{AdaptParams, AdaptiveCorrector}
 import moire.chain.{CorrectedSubdivParams, CorrectedSubdivider}
 import moire.cordic.{Cordic, CordicParams}

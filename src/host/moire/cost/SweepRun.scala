@@ -41,8 +41,7 @@ object SweepRun {
 
   def run(grid: SweepGrid, out: os.Path, timeoutSeconds: Int, measure: Boolean, log: String => Unit): Seq[SweepRow] = {
     val pts = grid.points
-    val pb = new me.tongfei.progressbar.ProgressBarBuilder().setTaskName("cost sweep").setInitialMax(pts.size.toLong)
-      .setConsumer(new me.tongfei.progressbar.ConsoleProgressBarConsumer(System.err)).build()
+    val pb = new moire.progress.Bar("cost sweep", pts.size.toLong)
     val rows = try pts.map { case (v, p) =>
       pb.setExtraMessage(s" ${v.name} n=${p.iterations} b=${p.width}")
       val (s, _) = synth(p, out / "cache", timeoutSeconds, m => log(m))

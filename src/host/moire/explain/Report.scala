@@ -8,7 +8,7 @@ final case class Located(where: String, summary: String, params: Map[String, Dou
 /** The JSON report of one file. Information criterion: BIC = -2 ln L + k ln n (n = observations). */
 final case class Report(file: String, kind: String, baselineRms: Double, baselineBic: Double, baseline: Map[String, Double],
                         located: Seq[Located], findings: Seq[Finding], unexplained: Seq[Located], finalRms: Double, finalBic: Double,
-                        samples: Int, seconds: Double, notes: Seq[String] = Nil) {
+                        samples: Int, seconds: Double, notes: Seq[String] = Nil, untested: Seq[String] = Nil) {
   def json: ujson.Obj = ujson.Obj(
     "file" -> file, "kind" -> kind, "criterion" -> s"BIC = -2 ln L + k ln n; an effect is accepted when it lowers BIC by more than ${SignalExplain.Threshold}",
     "samples" -> samples,
@@ -18,6 +18,7 @@ final case class Report(file: String, kind: String, baselineRms: Double, baselin
     "unexplained" -> ujson.Arr(unexplained.map(_.json): _*),
     "final" -> ujson.Obj("rms" -> finalRms, "bic" -> finalBic),
     "notes" -> ujson.Arr(notes.map(ujson.Str(_)): _*),
+    "not_tested" -> ujson.Arr(untested.map(ujson.Str(_)): _*),
     "seconds" -> seconds)
 
   /** Short text for the terminal. */
@@ -33,6 +34,7 @@ final case class Report(file: String, kind: String, baselineRms: Double, baselin
     }
     unexplained.foreach(u => sb ++= s"  unexplained: ${u.where}: ${u.summary}\n")
     notes.foreach(n => sb ++= s"  note: $n\n")
+    untested.foreach(n => sb ++= s"  not tested: $n\n")
     sb ++= f"  final rms $finalRms%.4g, BIC $finalBic%.6g ($seconds%.1f s)\n"
     sb.toString
   }
@@ -56,15 +58,14 @@ trait Progress {
 }
 object Progress {
   val none: Progress = new Progress { def phase(name: String, steps: Int): Unit = (); def step(k: Int): Unit = () }
-  /** me.tongfei progress bar on stderr. */
+  /** A bar per phase on stderr (plain lines when stderr is no terminal). */
   def bar(task: String): Progress = new Progress {
-    private var pb: me.tongfei.progressbar.ProgressBar = _
+    private var pb: moire.progress.Bar = _
     def phase(name: String, steps: Int): Unit = {
       if (pb != null) pb.close()
-      pb = new me.tongfei.progressbar.ProgressBarBuilder().setTaskName(s"$task: $name").setInitialMax(steps.toLong)
-        .setConsumer(new me.tongfei.progressbar.ConsoleProgressBarConsumer(System.err)).build()
+      pb = new moire.progress.Bar(s"$task: $name", steps.toLong)
     }
-    def step(k: Int): Unit = if (pb != null) pb.stepBy(k.toLong)
+    def step(k: Int): Unit = if (pb != null) pb.stepTo(pb.position + k)
     override def close(): Unit = if (pb != null) { pb.close(); pb = null }
   }
 }

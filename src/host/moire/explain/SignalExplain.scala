@@ -56,6 +56,7 @@ object SignalExplain {
     lap("locate")
     val steps = Seq.newBuilder[(Finding, Snapshot, Snapshot)]
     var done = false; var round = 0
+    val rejected = scala.collection.mutable.ArrayBuffer.empty[Located]
     while (!done && round < maxFindings) {
       val cands = new Candidates(e)
       progress.phase(s"effects, round ${round + 1}", cands.steps)
@@ -63,7 +64,15 @@ object SignalExplain {
       lap("candidates")
       val bic0 = e.bic
       def dbic(c: Cand) = bic0 - (c.m2ll + (e.params + c.extraK) * e.lnN)
-      val best = all.filter(c => !dbic(c).isNaN).sortBy(c => -dbic(c)).headOption
+      // Candidates whose parameters the recording cannot support are not findings; what still fits that way after
+      // the last accepted effect is unexplained structure (earlier rounds' rejects may be another effect's shadow).
+      rejected.clear()
+      val (ok, impossible) = all.filter(c => !dbic(c).isNaN).partition(c => Plausible.why(c, e.fs, e.n).isEmpty)
+      impossible.filter(c => dbic(c) > Threshold && !rejected.exists(_.where.startsWith(c.effect + " "))).foreach { c =>
+        rejected += Located(s"${c.effect} (${c.channel})", s"structure of this shape lowers BIC by ${"%.0f".format(dbic(c))}, but not physically: " +
+          Plausible.why(c, e.fs, e.n).get, c.params, significant = true)
+      }
+      val best = ok.sortBy(c => -dbic(c)).headOption
       if (SignalEngine.debug) all.sortBy(c => -dbic(c)).take(6).foreach(c => System.err.println(f"  candidate ${c.effect}%s ${c.channel}%s ${c.params}%s dBIC ${dbic(c)}%.1f"))
       best match {
         case Some(c) if dbic(c) > Threshold =>
@@ -90,9 +99,9 @@ object SignalExplain {
       val g = refresh(f, e)
       (g.copy(summary = Describe.summary(Cand(g.effect, g.channel, e.spec, 0, 0, g.params, g.unc, g.where), cands.fMin, cands.fMax)), b, a)
     }
-    val unexplained = Locate.all(e).filter(_.significant)
+    val unexplained = Locate.all(e).filter(_.significant) ++ rejected
     val report = Report(file, "signals", baseRms, baseBic, baseParams, located, fin.map(_._1), unexplained, e.rms, e.bic,
-      rec.length, (System.nanoTime() - t0) / 1e9, notes(e))
+      rec.length, (System.nanoTime() - t0) / 1e9, notes(e), Coverage.untested(e, cands.fMin, cands.fMax))
     Result(report, e, before, fin)
   }
 

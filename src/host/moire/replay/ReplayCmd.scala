@@ -71,8 +71,7 @@ object ReplayCmd {
   def replay(d: ReplayDesign, p: PinStream, quiet: Boolean, log: String => Unit, head: Int = 100000, windows: Int = 20): (ReplayOutput, CheckResult) = {
     val h = build(d, log)
     val bar = if (quiet || p.length < 2000000) None
-      else Some(new me.tongfei.progressbar.ProgressBarBuilder().setTaskName("replay").setInitialMax(p.length.toLong)
-        .setConsumer(new me.tongfei.progressbar.ConsoleProgressBarConsumer(System.err)).build())
+      else Some(new moire.progress.Bar("replay", p.length.toLong))
     val t0 = System.nanoTime()
     val out = try Replay.run(h, d, p, k => bar.foreach(_.stepTo(k))) finally bar.foreach(_.close())
     val t1 = System.nanoTime()

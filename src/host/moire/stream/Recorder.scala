@@ -217,9 +217,7 @@ object Recorder {
     val buf = new Array[Byte](4096)
     val t0 = System.nanoTime()
     val deadline = t0 + (o.seconds * 1e9).toLong
-    val bar = if (o.quiet) None else Some(new me.tongfei.progressbar.ProgressBarBuilder().setTaskName("record")
-      .setInitialMax(math.ceil(o.seconds * 10).toLong).setUnit(" s", 10).setConsumer(
-        new me.tongfei.progressbar.ConsoleProgressBarConsumer(System.err)).build())
+    val bar = if (o.quiet) None else Some(new moire.progress.Bar("record", math.ceil(o.seconds * 10).toLong, " s", 10))
     try {
       take(dec.feed(first))
       while (System.nanoTime() < deadline) {

@@ -1,7 +1,8 @@
 package moire.timing
 
 import chisel3.RawModule
-import moire.board.de2115.{ClockSource, De2115}
+import moire.board.ClockSource
+import moire.board.de2115.De2115
 import moire.cordic.CordicParams
 import moire.cost.{CostDesign, CostDesigns}
 

@@ -1,4 +1,4 @@
-package moire.board.de2115
+package moire.board
 
 import chisel3._
 import chisel3.util._
@@ -10,35 +10,36 @@ import moire.protocol.{RegReply, Registers, StreamRecord, StreamV1}
 import moire.protocol.Registers.{ControlBit, StatusBit}
 import moire.subdiv.{AdcPins, SubdivAdc, SubdivOut, SubdivStatus}
 
-/** Everything of the board on the system clock: AD9226 capture, datapath, record stream over the
-  * UART, register interface, encoder input counter, LEDs and seven-segment digits.
+/** Everything of a board on the system clock, shared by the DE2-115 and the ULX3S harnesses:
+  * AD9226 capture, datapath, record stream over the UART, register interface, encoder input counter
+  * and the status the harness shows on its LEDs.
   *
   * AD9226 capture: the ADC clock rises on the clock edge where the divider phase `ph` becomes 0; the
   * ADC drives its new word tOD = 3.5..7 ns (plus the FPGA clock-to-pin delay) after that edge, and
-  * the word is registered on the NEXT rising edge of the 50 MHz clock, 20 ns later: 13 ns of setup
-  * margin at 7 ns tOD, and the old word is held for tOD(min) after that edge. The word of sample i
+  * the word is registered on the NEXT rising edge of the system clock, one period later (at 50 MHz
+  * 20 ns: 13 ns of setup margin at 7 ns tOD), and the old word is held for tOD(min) after that edge. The word of sample i
   * appears after ADC edge i + 7 (AD9226 pipeline), so record index = captured words - 7.
   */
 class BoardCore(val p: BoardParams) extends Module {
   override def desiredName: String = s"BoardCore_${p.design.name}"
-  val io = IO(new De2115Ports)
+  val io = IO(new CoreIO)
   private val sp = p.datapathSubdiv
   private val k = p.adcDivide
 
-  // ---- ADC clock divider (used for k > 1; for k = 1 the top forwards the 50 MHz clock) ----
+  // ---- ADC clock divider (used for k > 1; for k = 1 the top forwards the system clock) ----
   private val ph = RegInit(0.U(log2Ceil(k + 1).W))
   private val phNext = Mux(ph === (k - 1).U, 0.U, ph + 1.U)
   ph := phNext
   private val adcClk = RegInit(false.B)
   adcClk := phNext < ((k + 1) / 2).U
-  io.SIN_CLK := adcClk
-  io.COS_CLK := adcClk
+  io.pins.SIN_CLK := adcClk
+  io.pins.COS_CLK := adcClk
 
   // ---- capture: every clock into input registers; valid one clock after the ADC edge ----
-  private val sinD = RegNext(io.SIN_D).suggestName("sin_capture")
-  private val cosD = RegNext(io.COS_D).suggestName("cos_capture")
-  private val otrS = RegNext(io.SIN_OTR).suggestName("otr_sin_capture")
-  private val otrC = RegNext(io.COS_OTR).suggestName("otr_cos_capture")
+  private val sinD = RegNext(io.pins.SIN_D).suggestName("sin_capture")
+  private val cosD = RegNext(io.pins.COS_D).suggestName("cos_capture")
+  private val otrS = RegNext(io.pins.SIN_OTR).suggestName("otr_sin_capture")
+  private val otrC = RegNext(io.pins.COS_OTR).suggestName("otr_cos_capture")
   // The word launched by the ADC edge at clock edge e is valid in the capture registers after edge e + 1.
   private val adcRose = if (k == 1) true.B else adcClk && !RegNext(adcClk, false.B)
   private val capValid = RegNext(adcRose, false.B)
@@ -125,12 +126,12 @@ class BoardCore(val p: BoardParams) extends Module {
   framer.io.recordCount := fifo.io.count
   framer.io.dropped := fifo.io.dropped
   tx.io.in <> framer.io.out
-  io.UART_TXD := tx.io.txd
-  rx.io.rxd := Synchronizer(io.UART_RXD, init = true, "uart_rxd")
+  io.txd := tx.io.txd
+  rx.io.rxd := Synchronizer(io.rxd, init = true, "uart_rxd")
   cmdRx.io.in := rx.io.out
 
   // ---- encoder inputs ----
-  private val encIn = Seq(io.ENC_A_IN, io.ENC_B_IN, io.ENC_Z_IN).zip(Seq("enc_a", "enc_b", "enc_z"))
+  private val encIn = Seq(io.pins.ENC_A_IN, io.pins.ENC_B_IN, io.pins.ENC_Z_IN).zip(Seq("enc_a", "enc_b", "enc_z"))
     .map { case (x, n) => GlitchFilter(x, p.glitchFilter, init = false, n) }
   private val qc = Module(new QuadratureCounter(QuadratureParams(countBits = 32)))
   qc.io.a := encIn(0); qc.io.b := encIn(1)
@@ -138,9 +139,9 @@ class BoardCore(val p: BoardParams) extends Module {
   private val zRise = zAligned && !RegNext(zAligned, false.B)
   private val zCount = RegInit(0.U(32.W))
   when(zRise) { zCount := qc.io.out.bits }
-  io.ENC_A_OUT := RegNext(encA, false.B)
-  io.ENC_B_OUT := RegNext(encB, false.B)
-  io.ENC_Z_OUT := RegNext(encZ, false.B)
+  io.pins.ENC_A_OUT := RegNext(encA, false.B)
+  io.pins.ENC_B_OUT := RegNext(encB, false.B)
+  io.pins.ENC_Z_OUT := RegNext(encZ, false.B)
 
   // ---- register file ----
   private val statusFlags = Seq(StatusBit.Overspeed -> status.overspeed, StatusBit.OverRange -> status.overRange,
@@ -173,10 +174,17 @@ class BoardCore(val p: BoardParams) extends Module {
   private val lostReply = replies.io.enq.valid && !replies.io.enq.ready
   when(cmdRx.io.error || lostReply) { cmdErrors := cmdErrors + 1.U }
 
-  // ---- LEDs and digits ----
+  // ---- status for the harness's LEDs and displays ----
   private val beat = RegInit(0.U(25.W))
   beat := beat + 1.U
-  io.LEDG := Cat(0.U(5.W), fifoOverflow, dirUp, status.overRange || otrSinSticky || otrCosSticky, present)
-  io.LEDR := Cat(beat(24), 0.U(13.W), cmdErrors =/= 0.U, enable, status.stepFault, status.overspeed)
-  for ((h, i) <- io.hex.zipWithIndex) h := RegNext(SevenSeg(livePos.asUInt(4 * i + 3, 4 * i)), "h7f".U(7.W))
+  io.status.present := present
+  io.status.overRange := status.overRange || otrSinSticky || otrCosSticky
+  io.status.dirUp := dirUp
+  io.status.fifoOverflow := fifoOverflow
+  io.status.overspeed := status.overspeed
+  io.status.stepFault := status.stepFault
+  io.status.enabled := enable
+  io.status.cmdError := cmdErrors =/= 0.U
+  io.status.heartbeat := beat(24)
+  io.status.position := livePos.asUInt
 }

@@ -1,4 +1,4 @@
-package moire.board.de2115
+package moire.board
 
 import moire.chain.CorrectedSubdivParams
 import moire.protocol.{Registers, StreamV1}
@@ -20,10 +20,10 @@ object BoardDesign {
 /** How the AD9226 clock is made. */
 sealed abstract class ClockSource(val name: String)
 object ClockSource {
-  /** altpll BlackBox (boards/resources/de2-115/De2115Pll.v): system and ADC clock from one PLL, same phase. */
+  /** The board's PLL (DE2-115 altpll, ULX3S EHXPLLL): system and ADC clock from one PLL, same phase. */
   case object Pll extends ClockSource("pll")
-  /** No PLL: the system clock is CLOCK_50; the ADC clock is CLOCK_50 forwarded (50 MHz) or a divider
-    * register (lower rates). Used for simulation; also builds in Quartus.
+  /** No PLL: the system clock is the board's oscillator pin; the ADC clock is that pin forwarded
+    * (k = 1) or a divider register (k > 1). Used for simulation; also builds.
     */
   case object Logic extends ClockSource("logic")
   val all: Seq[ClockSource] = Seq(Pll, Logic)
@@ -31,12 +31,12 @@ object ClockSource {
     all.find(_.name == s).toRight(s"--clock-source: '$s' is unknown; allowed: ${all.map(_.name).mkString(", ")}")
 }
 
-/** Parameters of the DE2-115 board wrapper ([[De2115Top]]).
+/** Parameters of a board: the core ([[BoardCore]]) and its harness (DE2-115 or ULX3S top).
   *
   * @param design        datapath: subdiv or corrected
   * @param subdiv        subdivider parameters (design subdiv; its inputBits must be 12, the AD9226)
   * @param corrected     corrector chain parameters (design corrected; its format is replaced by `adcFormat`)
-  * @param adcClockHz    AD9226 sample clock: 50 MHz / k, k in 1..1000 (default 50 MHz)
+  * @param adcClockHz    AD9226 sample clock: clockHz / k, k in 1..1000 (default 50 MHz)
   * @param adcFormat     how the ADC modules are strapped (offset binary on the common modules)
   * @param decimation    default of register 0x04: one record every D samples, 1..2^24
   * @param baud          UART rate, 8N1 (default 115200)
@@ -44,6 +44,8 @@ object ClockSource {
   * @param fifoDepth     record FIFO entries, at least n
   * @param glitchFilter  encoder inputs: clocks an input must be stable to be taken, 1..65536
   * @param clockSource   pll (hardware) or logic (simulation fallback)
+  * @param clockHz       system clock (DE2-115: 50 MHz only; ULX3S: what its PLL makes from 25 MHz,
+  *                      or 25 MHz with clock source logic)
   */
 final case class BoardParams(
   design: BoardDesign = BoardDesign.Subdiv,
@@ -56,12 +58,12 @@ final case class BoardParams(
   frameRecords: Int = 8,
   fifoDepth: Int = 256,
   glitchFilter: Int = 16,
-  clockSource: ClockSource = ClockSource.Pll
+  clockSource: ClockSource = ClockSource.Pll,
+  clockHz: Int = 50000000
 ) {
-  /** The system clock: CLOCK_50. */
-  val clockHz: Int = 50000000
+  require(clockHz >= 1000000 && clockHz <= 200000000, s"clock-hz must be in 1000000..200000000, got $clockHz")
   require(adcClockHz > 0 && clockHz % adcClockHz == 0 && clockHz / adcClockHz <= 1000,
-    s"adc-clock-hz must be 50 MHz divided by an integer 1..1000, got $adcClockHz")
+    s"adc-clock-hz must be ${Mhz(clockHz)} MHz divided by an integer 1..1000, got $adcClockHz")
   /** System clocks per ADC clock. */
   val adcDivide: Int = clockHz / adcClockHz
   require(decimation >= 1 && decimation <= Registers.MaxDecimation, s"decimation must be in 1..${Registers.MaxDecimation}, got $decimation")
@@ -86,6 +88,13 @@ final case class BoardParams(
   /** Largest record rate the UART carries: (8 + 12 n + 2) bytes of 10 bits per n records. */
   def uartRecordRate: Double = baud / 10.0 * frameRecords / (10 + 12 * frameRecords)
 
-  def projectName: String = "moire_de2_115"
-  def topName: String = s"De2115_${design.name}_${if (adcFormat == AdcFormat.OffsetBinary) "ob" else "tc"}_adc${adcClockHz / 1000}k_${clockSource.name}"
+  /** Names the configuration in a top's name: design, ADC format, clocks, clock source. */
+  def tag: String = s"${design.name}_${if (adcFormat == AdcFormat.OffsetBinary) "ob" else "tc"}" +
+    (if (clockHz != 50000000) s"_clk${clockHz / 1000}k" else "") + s"_adc${adcClockHz / 1000}k_${clockSource.name}"
+  def formatName: String = if (adcFormat == AdcFormat.OffsetBinary) "offset binary" else "two's complement"
+}
+
+/** A frequency in MHz as few digits as it needs: 50, 12.5. */
+object Mhz {
+  def apply(hz: Double): String = BigDecimal(hz / 1e6).bigDecimal.stripTrailingZeros.toPlainString
 }

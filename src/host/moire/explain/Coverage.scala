@@ -1,0 +1,28 @@
+package moire.explain
+
+/** What a signal recording could not test (issue 12, Build 5): a clean report then means "looked and found
+  * nothing" only for the effects not listed here.
+  */
+object Coverage {
+  /** The reference columns a recording may carry. */
+  val ReferenceColumns: Seq[String] = Seq("ref_deg", "ref_turns", "ref_counts", "ref_um", "position")
+
+  def untested(e: SignalEngine, fMin: Double, fMax: Double): Seq[String] = {
+    val seconds = e.n / e.fs
+    val rec = e.rec
+    val refs = ReferenceColumns.filter(rec.extra.contains)
+    Seq(
+      Some(f"interference below ${Plausible.MinCycles / seconds}%.4g Hz: the ${seconds}%.4g s record holds fewer than ${Plausible.MinCycles}%.0f cycles of it"),
+      if (fMax <= 0 || fMax - fMin < 0.05 * fMax)
+        Some(f"channel skew and bandwidth: the fringe frequency spans only ${fMin}%.4g .. ${fMax}%.4g Hz; a skew there is a phase error")
+      else None,
+      if (rec.linesPerRev.isEmpty && !refs.exists(_ != "position"))
+        Some("amplitude modulation and eccentricity with the mechanical angle: no lines_per_rev and no reference column")
+      else None,
+      if (refs.isEmpty)
+        Some(s"effects confounded with non-uniform motion (a harmonic of the mechanical angle, eccentricity): not identifiable " +
+          s"without a reference column (${ReferenceColumns.mkString(", ")}); the motion is fitted from the signals")
+      else Some(s"reference column ${refs.mkString(", ")} present but not used by this version: the motion is fitted from the signals")
+    ).flatten
+  }
+}
