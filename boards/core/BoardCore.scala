@@ -6,7 +6,7 @@ import moire.chain.CorrectedSubdivider
 import moire.io.{QuadratureCounter, QuadratureParams}
 import moire.io._
 import moire.signal.AdcFormat
-import moire.protocol.{RegReply, Registers, StreamRecord, StreamV1}
+import moire.protocol.{BurstLayout, RegReply, Registers, StreamRecord, StreamV1}
 import moire.protocol.Registers.{ControlBit, StatusBit}
 import moire.subdiv.{AdcPins, SubdivAdc, SubdivOut, SubdivStatus}
 
@@ -75,6 +75,21 @@ class BoardCore(val p: BoardParams) extends Module {
   private val sideValid = ShiftRegister(sampleValid, latency, false.B, true.B)
   assert(out.valid === sideValid, "datapath output not aligned with its sample")
 
+  // ---- encoder inputs ----
+  private val encIn = Seq(io.pins.ENC_A_IN, io.pins.ENC_B_IN, io.pins.ENC_Z_IN).zip(Seq("enc_a", "enc_b", "enc_z"))
+    .map { case (x, n) => GlitchFilter(x, p.glitchFilter, init = false, n) }
+  private val qc = Module(new QuadratureCounter(QuadratureParams(countBits = 32)))
+  qc.io.a := encIn(0); qc.io.b := encIn(1)
+  private val zAligned = ShiftRegister(encIn(2), qc.latency)
+  private val zRise = zAligned && !RegNext(zAligned, false.B)
+  private val zCount = RegInit(0.U(32.W))
+  when(zRise) { zCount := qc.io.out.bits }
+  // The reference encoder's pins delayed by the counter's latency: count and pins of one clock belong together;
+  // both are then aligned with the datapath output like the ADC word (they lag the ADC sample instant by the
+  // synchronizer and glitch filter, 2 + glitchFilter clocks, against the ADC's 7 + 1: explain fits the lag).
+  private val refPins = ShiftRegister(Cat(encIn(2), encIn(1), encIn(0)), qc.latency + latency)
+  private val sRef = ShiftRegister(qc.io.out.bits.asSInt, latency)
+
   private val livePos = RegInit(0.S(32.W))
   private val present = RegInit(false.B)
   private val dirUp = RegInit(true.B)
@@ -97,7 +112,8 @@ class BoardCore(val p: BoardParams) extends Module {
   }
 
   // ---- decimation and record FIFO ----
-  private val take = out.valid && decCnt === 0.U && enable
+  private val burstBusy = Wire(Bool()) // a burst is being sent: continuous records pause
+  private val take = out.valid && decCnt === 0.U && enable && !burstBusy
   when(out.valid) { decCnt := Mux(decCnt === 0.U, decim - 1.U, decCnt - 1.U) }
   private val record = Wire(new StreamRecord)
   record.index := sIndex
@@ -107,13 +123,39 @@ class BoardCore(val p: BoardParams) extends Module {
   record.word.present := out.bits.present; record.word.overRange := out.bits.overRange
   record.word.stepFault := out.bits.stepFault; record.word.up := dirNow
   record.word.reserved := 0.U
-  private val fifo = Module(new OverflowFifo(StreamV1.RecordLayout.width, p.fifoDepth))
+  record.refCount := sRef
+  private val fifo = Module(new OverflowFifo(StreamV1.RecordLayout.refWidth, p.fifoDepth))
   fifo.io.in.valid := take
   fifo.io.in.bits := record.asUInt
   when(fifo.io.dropped && droppedTotal =/= "hffffffff".U) { droppedTotal := droppedTotal + 1.U }
   private val fifoOverflow = sticky(fifo.io.dropped)
   private val otrSinSticky = sticky(sampleValid && otrS)
   private val otrCosSticky = sticky(sampleValid && otrC)
+
+  // ---- burst capture: full-rate samples (ADC words, OTR, reference pins) into block RAM ----
+  private val burst = Module(new BurstCapture(p.burst))
+  private val lastSpeedPos = RegInit(0.S(32.W))
+  private val speed = RegInit(0.S(32.W))
+  private val speedCnt = RegInit(0.U(log2Ceil(Registers.SpeedWindow).W))
+  when(out.valid) {
+    speedCnt := speedCnt + 1.U
+    when(speedCnt === (Registers.SpeedWindow - 1).U) { speed := pos32 - lastSpeedPos; lastSpeedPos := pos32 }
+  }
+  burst.io.in.valid := out.valid
+  burst.io.in.bits.word := Cat(refPins, sPins.otrCos, sPins.otrSin, sPins.cos, sPins.sin)
+  burst.io.in.bits.position := pos32
+  burst.io.in.bits.refCount := sRef
+  burst.io.in.bits.speed := speed
+  burst.io.in.bits.index := sIndex
+  private val burstCfg = RegInit(0.U.asTypeOf(new BurstConfig))
+  private val burstArm = WireDefault(false.B)
+  private val burstRead = WireDefault(false.B)
+  burst.io.config := burstCfg
+  burst.io.arm := burstArm
+  burst.io.read := burstRead
+  private val infoPending = RegInit(false.B)
+  burstBusy := burst.io.sending || infoPending
+  when(burstRead && burst.io.state === BurstState.Done.U && !burst.io.sending) { infoPending := true.B }
 
   // ---- UART ----
   private val tx = Module(new UartTx(p.baudDivisor))
@@ -125,20 +167,18 @@ class BoardCore(val p: BoardParams) extends Module {
   fifo.io.out.ready := framer.io.records.ready
   framer.io.recordCount := fifo.io.count
   framer.io.dropped := fifo.io.dropped
+  framer.io.burstInfo.valid := infoPending
+  framer.io.burstInfo.bits.length := burst.io.length
+  framer.io.burstInfo.bits.pre := burst.io.pre
+  framer.io.burstInfo.bits.trigger := burst.io.trigger
+  framer.io.burstInfo.bits.last := burst.io.last
+  when(framer.io.burstInfo.fire) { infoPending := false.B }
+  framer.io.burstWords <> burst.io.out
   tx.io.in <> framer.io.out
   io.txd := tx.io.txd
   rx.io.rxd := Synchronizer(io.rxd, init = true, "uart_rxd")
   cmdRx.io.in := rx.io.out
 
-  // ---- encoder inputs ----
-  private val encIn = Seq(io.pins.ENC_A_IN, io.pins.ENC_B_IN, io.pins.ENC_Z_IN).zip(Seq("enc_a", "enc_b", "enc_z"))
-    .map { case (x, n) => GlitchFilter(x, p.glitchFilter, init = false, n) }
-  private val qc = Module(new QuadratureCounter(QuadratureParams(countBits = 32)))
-  qc.io.a := encIn(0); qc.io.b := encIn(1)
-  private val zAligned = ShiftRegister(encIn(2), qc.latency)
-  private val zRise = zAligned && !RegNext(zAligned, false.B)
-  private val zCount = RegInit(0.U(32.W))
-  when(zRise) { zCount := qc.io.out.bits }
   io.pins.ENC_A_OUT := RegNext(encA, false.B)
   io.pins.ENC_B_OUT := RegNext(encB, false.B)
   io.pins.ENC_Z_OUT := RegNext(encZ, false.B)
@@ -154,7 +194,10 @@ class BoardCore(val p: BoardParams) extends Module {
     Registers.Control -> enable.asUInt, Registers.Decimation -> decim, Registers.DroppedTotal -> droppedTotal,
     Registers.CmdErrors -> cmdErrors, Registers.Position -> livePos.asUInt, Registers.AdcClockHz -> p.adcClockHz.U,
     Registers.FrameRecords -> p.frameRecords.U, Registers.CountsPerPeriod -> sp.counts.U,
-    Registers.EncoderCount -> qc.io.out.bits, Registers.EncoderZCount -> zCount, Registers.AdcFormat -> adcFormatValue.U
+    Registers.EncoderCount -> qc.io.out.bits, Registers.EncoderZCount -> zCount, Registers.AdcFormat -> adcFormatValue.U,
+    Registers.BurstTrigger -> burstCfg.mode, Registers.BurstLength -> burstCfg.length, Registers.BurstPre -> burstCfg.pre,
+    Registers.BurstThreshold -> burstCfg.threshold, Registers.BurstTarget -> burstCfg.target.asUInt,
+    Registers.BurstState -> Cat(burst.io.sending || infoPending, burst.io.state), Registers.BurstDepth -> p.burst.samples.U
   ).map { case (r, v) => r.addr.U(8.W) -> Cat(0.U(32.W), v)(31, 0) })
   private val cmd = cmdRx.io.cmd
   private val isWrite = cmd.valid && cmd.bits.write
@@ -164,6 +207,14 @@ class BoardCore(val p: BoardParams) extends Module {
     cmd.bits.value <= Registers.MaxDecimation.U) {
     decim := cmd.bits.value; decCnt := 0.U
   }
+  private def written(r: moire.protocol.Reg): Bool = isWrite && cmd.bits.addr === r.addr.U
+  when(written(Registers.BurstTrigger)) { burstCfg.mode := cmd.bits.value(BurstLayout.Trigger.bits - 1, 0) }
+  when(written(Registers.BurstLength)) { burstCfg.length := cmd.bits.value }
+  when(written(Registers.BurstPre)) { burstCfg.pre := cmd.bits.value }
+  when(written(Registers.BurstThreshold)) { burstCfg.threshold := cmd.bits.value }
+  when(written(Registers.BurstTarget)) { burstCfg.target := cmd.bits.value.asSInt }
+  burstArm := written(Registers.BurstControl) && cmd.bits.value(Registers.BurstControlBit.Arm)
+  burstRead := written(Registers.BurstControl) && cmd.bits.value(Registers.BurstControlBit.Send)
   // The reply reads the register one clock later, so a write answers with the new value.
   private val replies = Module(new Queue(new RegReply, 4))
   private val replyAddr = RegNext(cmd.bits.addr)

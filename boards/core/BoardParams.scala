@@ -43,6 +43,7 @@ object ClockSource {
   * @param frameRecords  n, records per frame, 1..255 (default 8)
   * @param fifoDepth     record FIFO entries, at least n
   * @param glitchFilter  encoder inputs: clocks an input must be stable to be taken, 1..65536
+  * @param burstSamples  burst capture depth N (block RAM: 29 bits per sample; 65,536 = 116 DP16KD or 232 M9K)
   * @param clockSource   pll (hardware) or logic (simulation fallback)
   * @param clockHz       system clock (DE2-115: 50 MHz only; ULX3S: what its PLL makes from 25 MHz,
   *                      or 25 MHz with clock source logic)
@@ -53,13 +54,14 @@ final case class BoardParams(
   corrected: CorrectedSubdivParams = CorrectedSubdivParams(),
   adcClockHz: Int = 50000000,
   adcFormat: AdcFormat = AdcFormat.OffsetBinary,
-  decimation: Int = 62500,
+  decimation: Int = 100000,
   baud: Int = 115200,
   frameRecords: Int = 8,
   fifoDepth: Int = 256,
   glitchFilter: Int = 16,
   clockSource: ClockSource = ClockSource.Pll,
-  clockHz: Int = 50000000
+  clockHz: Int = 50000000,
+  burstSamples: Int = 65536
 ) {
   require(clockHz >= 1000000 && clockHz <= 200000000, s"clock-hz must be in 1000000..200000000, got $clockHz")
   require(adcClockHz > 0 && clockHz % adcClockHz == 0 && clockHz / adcClockHz <= 1000,
@@ -71,6 +73,8 @@ final case class BoardParams(
     s"frame-records must be in 1..${StreamV1.MaxFrameRecords}, got $frameRecords")
   require(fifoDepth >= frameRecords && fifoDepth <= 65536, s"fifo-depth must be in $frameRecords..65536 (at least frame-records), got $fifoDepth")
   require(glitchFilter >= 1 && glitchFilter <= 65536, s"glitch-filter must be in 1..65536, got $glitchFilter")
+  /** The burst capture's parameters (checks the depth). */
+  val burst: moire.io.BurstParams = moire.io.BurstParams(burstSamples)
   /** Clocks per UART bit (checks the rate error). */
   val baudDivisor: Int = moire.io.UartDivisor(clockHz, baud)
   require(subdiv.inputBits == 12, s"the AD9226 has 12 bits: subdiv input-bits must be 12, got ${subdiv.inputBits}")
@@ -85,8 +89,8 @@ final case class BoardParams(
   val adcPipeline: Int = 7
   /** Records per second at the default decimation. */
   def recordRate: Double = adcClockHz.toDouble / decimation
-  /** Largest record rate the UART carries: (8 + 12 n + 2) bytes of 10 bits per n records. */
-  def uartRecordRate: Double = baud / 10.0 * frameRecords / (10 + 12 * frameRecords)
+  /** Largest record rate the UART carries: (8 + 16 n + 2) bytes of 10 bits per n records (frame type 0x05). */
+  def uartRecordRate: Double = baud / 10.0 * frameRecords / StreamV1.refRecordFrameBytes(frameRecords)
 
   /** Names the configuration in a top's name: design, ADC format, clocks, clock source. */
   def tag: String = s"${design.name}_${if (adcFormat == AdcFormat.OffsetBinary) "ob" else "tc"}" +

@@ -23,7 +23,7 @@ class BoardSimSpec extends AnyFlatSpec with ChiselScalatestTester {
   val clockHz = 50e6
   /** 25 MHz ADC (divider register drives SIN_CLK), n = 4, FIFO 8, decimation 1024. */
   val p = BoardParams(adcClockHz = 25000000, baud = 6250000, frameRecords = 4, fifoDepth = 8, glitchFilter = 8,
-    decimation = 1024, clockSource = ClockSource.Logic)
+    decimation = 1024, clockSource = ClockSource.Logic, burstSamples = 2048)
   val M: Int = p.subdiv.counts
   // Peaks at 1.02 full scale: OTR at the peaks; a reversing ramp: both directions.
   val signal = SignalParams(amplitude = 1.02)
@@ -78,7 +78,8 @@ class BoardSimSpec extends AnyFlatSpec with ChiselScalatestTester {
 
       // ---- constant registers ----
       assert(b.read(Registers.Id.addr) == Registers.IdValue)
-      assert(b.read(Registers.Version.addr) == 1)
+      assert(b.read(Registers.Version.addr) == moire.protocol.StreamV1.Version)
+      assert(b.read(Registers.BurstDepth.addr) == p.burstSamples)
       assert(b.read(Registers.AdcClockHz.addr) == p.adcClockHz)
       assert(b.read(Registers.FrameRecords.addr) == p.frameRecords)
       assert(b.read(Registers.CountsPerPeriod.addr) == M)
@@ -123,6 +124,7 @@ class BoardSimSpec extends AnyFlatSpec with ChiselScalatestTester {
       assert(recs1.exists(r => r.otrSin) && recs1.exists(!_.direction) && recs1.exists(_.direction),
         "the run should show OTR and both directions")
       checkRecords(adc, recs1)
+      assert(recs1.last.ref.contains(25), s"records carry the encoder count (25): ${recs1.last.ref}")
       val seqs = b.frames.map(_.seq)
       assert(seqs.zip(seqs.drop(1)).forall { case (x, y) => y == ((x + 1) & 0xFFFF) }, s"seq: $seqs")
 
@@ -148,10 +150,42 @@ class BoardSimSpec extends AnyFlatSpec with ChiselScalatestTester {
       assert(b.replies.size == nReplies, "a command with a bad CRC is not answered")
       assert(b.read(Registers.CmdErrors.addr) == errs0 + 1)
 
-      // ---- forced FIFO overflow: decimation 1 ----
-      streamBytes = b.txBytes.toArray
-      val before = b.recordFrames.size
+      streamBytes = b.txBytes.toArray // for the recorder test below: the stream before the burst
       streamFrames = b.recordFrames
+
+      // ---- burst: 600 consecutive samples, 100 before the trigger, records paused while it is sent ----
+      import moire.stream.{BurstAssembler, BurstInfo, BurstSamples}
+      for ((r, v) <- Seq(Registers.BurstLength -> 600L, Registers.BurstPre -> 100L, Registers.BurstTrigger -> 0L))
+        assert(b.write(r.addr, v) == v, s"${r.name} write")
+      b.write(Registers.BurstControl.addr, 1)
+      var polls = 0
+      while (b.read(Registers.BurstState.addr) != 3) { polls += 1; assert(polls < 50, "burst not done"); b.run(2000) }
+      val f0 = b.frames.size
+      b.write(Registers.BurstControl.addr, 2)
+      b.runUntil(400000, "the burst's frames")(b.frames.drop(f0).collect { case s: BurstSamples => s.words.size }.sum >= 600)
+      val got = b.frames.drop(f0)
+      val bi = got.collectFirst { case i: BurstInfo => i }.getOrElse(fail("no burst bi frame"))
+      val bursts = got.collect { case s: BurstSamples => s }.toSeq
+      val (burstRec, check) = BurstAssembler.recording(bi, bursts, p.adcClockHz, AdcFormat.OffsetBinary)
+      val first = bi.trigger.index - bi.pre
+      assert(bi.length == 600 && bi.pre == 100 && bi.last.index - first == 599, s"burst bi $bi")
+      for (k <- 0 until 600) {
+        val s = adc.sample((first + k).toInt)
+        assert(burstRec.sin(k) == s.sin && burstRec.cos(k) == s.cos && burstRec.extra("otr_sin")(k) == (if (s.otrSin) 1.0 else 0.0),
+          s"burst sample $k (index ${first + k}): ${burstRec.sin(k)}/${burstRec.cos(k)} vs $s")
+      }
+      val (pos, _) = expected(adc, (bi.last.index + 1).toInt)
+      assert(bi.trigger.position == pos(bi.trigger.index.toInt) && bi.last.position == pos(bi.last.index.toInt), "anchor positions")
+      assert(burstRec.extra("ref_counts").forall(_ == 25.0) && check.triggerError.contains(0L) && check.refSkips == 0,
+        s"reference count in the burst: $check")
+      // no record frame between the bi frame and the last sample frame
+      val span = got.slice(got.indexOf(bi), got.indexOf(bursts.last))
+      assert(!span.exists(_.isInstanceOf[RecordFrame]), "records must pause while the burst is sent")
+      assert(burstRec.extra("sample_index").sliding(2).forall(w => w(1) - w(0) == 1.0))
+      info(s"burst of 600 samples: ${bursts.size} sample frames, trigger at index ${bi.trigger.index}, records paused meanwhile")
+
+      // ---- forced FIFO overflow: decimation 1 ----
+      val before = b.recordFrames.size
       assert(b.write(Registers.Decimation.addr, 1) == 1)
       b.runUntil(200000, "overflow frames")(b.recordFrames.size >= before + 6)
       assert(b.write(Registers.Control.addr, 0) == 0)
@@ -198,6 +232,7 @@ class BoardSimSpec extends AnyFlatSpec with ChiselScalatestTester {
       assert(rec.sin.toSeq == expected.map(_.sin) && rec.cos.toSeq == expected.map(_.cos))
       assert(rec.extra("sample_index").toSeq == expected.map(_.index.toDouble))
       assert(rec.extra("position").toSeq == expected.map(_.position.toDouble))
+      assert(rec.extra("ref_counts").toSeq == expected.map(_.ref.get.toDouble))
       assert(rec.extra("direction").toSeq == expected.map(x => if (x.direction) 1.0 else 0.0))
       assert(rec.extra("otr_sin").toSeq == expected.map(x => if (x.otrSin) 1.0 else 0.0))
       assert(rec.sampleRateHz == p.adcClockHz.toDouble / p.decimation)

@@ -35,7 +35,7 @@ class ProtocolSpec extends AnyFlatSpec with ChiselScalatestTester with Matchers 
   }
 
   private val wordLeaves = WordLayout.fields.map(f => Seq(element(f)))
-  private val recordLeaves = Seq(Seq("index"), Seq("position")) ++ wordLeaves.map("word" +: _)
+  private val recordLeaves = Seq(Seq("index"), Seq("position"), Seq("refCount")) ++ wordLeaves.map("word" +: _)
 
   "RecordWord" should "have one element per StreamV1.WordLayout field, in its place" in {
     (new RecordWord).elements.keySet shouldBe wordLeaves.map(_.head).toSet
@@ -45,10 +45,10 @@ class ProtocolSpec extends AnyFlatSpec with ChiselScalatestTester with Matchers 
     }
   }
 
-  "StreamRecord" should "put index, word and position where StreamV1.RecordLayout says" in {
-    (new StreamRecord).getWidth shouldBe RecordLayout.width
-    for (f <- Seq(RecordLayout.Index, RecordLayout.Position)) withClue(f.name) {
-      onesAt(new StreamRecord, recordLeaves, Seq(f.name)) shouldBe f.mask
+  "StreamRecord" should "put index, word, position and reference count where StreamV1.RecordLayout says" in {
+    (new StreamRecord).getWidth shouldBe RecordLayout.refWidth
+    for ((f, e) <- Seq(RecordLayout.Index -> "index", RecordLayout.Position -> "position", RecordLayout.RefCount -> "refCount")) withClue(f.name) {
+      onesAt(new StreamRecord, recordLeaves, Seq(e)) shouldBe f.mask
     }
     for (f <- WordLayout.fields) withClue(f.name) {
       onesAt(new StreamRecord, recordLeaves, Seq("word", element(f))) shouldBe (f.mask << RecordLayout.Word.lsb)
@@ -60,6 +60,13 @@ class ProtocolSpec extends AnyFlatSpec with ChiselScalatestTester with Matchers 
     val b = Encoder.frame(RecordFrame(0, 0, IndexedSeq(r)))
     b.slice(StreamV1.AtRecords, StreamV1.AtRecords + RecordLayout.bytes).toSeq shouldBe (1 to 12).map(_.toByte)
     b.length shouldBe StreamV1.recordFrameBytes(1)
+    b(StreamV1.AtType) shouldBe StreamV1.TypeRecords.toByte
+    // with the reference count: type 0x05, 16 bytes per record
+    val rb = Encoder.frame(RecordFrame(0, 0, IndexedSeq(r.copy(ref = Some(0x100F0E0D)))))
+    rb(StreamV1.AtType) shouldBe StreamV1.TypeRefRecords.toByte
+    rb.slice(StreamV1.AtRecords, StreamV1.AtRecords + RecordLayout.refBytes).toSeq shouldBe (1 to 16).map(_.toByte)
+    rb.length shouldBe StreamV1.refRecordFrameBytes(1)
+    new moire.stream.Decoder(1).feed(rb) shouldBe Vector(RecordFrame(0, 0, IndexedSeq(r.copy(ref = Some(0x100F0E0D)))))
     // the word's fields as the host reads them
     val w = Record.of(0, sin = 0xABC, cos = 0x123, position = 0, otrSin = true, present = false, direction = false)
     WordLayout.Sin.get(w.word) shouldBe 0xABC

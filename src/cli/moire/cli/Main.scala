@@ -192,7 +192,7 @@ object Main {
             @arg(doc = "system clock in Hz: de2-115 50000000 only; ulx3s what its PLL makes exactly from 25 MHz, e.g. 65000000 (default 50000000)") clockHz: Int = 50000000,
             @arg(doc = "AD9226 clock in Hz, clock-hz / k (default 50000000)") adcClockHz: Int = 50000000,
             @arg(doc = "ADC strap: offset-binary | twos-complement") adcFormat: String = "offset-binary",
-            @arg(doc = "default decimation D, 1..16777216 (default 62500)") decimation: Int = 62500,
+            @arg(doc = "default decimation D, 1..16777216 (default 100000)") decimation: Int = 100000,
             @arg(doc = "UART baud rate (default 115200)") baud: Int = 115200,
             @arg(doc = "records per frame n, 1..255 (default 8)") frameRecords: Int = 8,
             @arg(doc = "record FIFO depth (default 256)") fifoDepth: Int = 256,

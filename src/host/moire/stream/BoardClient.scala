@@ -52,8 +52,8 @@ object BoardClient {
     if (id != Registers.IdValue)
       throw new StreamError(f"${c.link.name}: register id reads 0x$id%08x, not 0x${Registers.IdValue}%08x (MOIR): not a moire board?")
     val v = c.read(Registers.Version)
-    if (v != StreamV1.Version)
-      throw new StreamError(s"${c.link.name}: the board speaks stream format version $v; this host tool reads version ${StreamV1.Version}")
+    if (!StreamV1.ReadableVersions.contains(v.toInt) || v > Int.MaxValue)
+      throw new StreamError(s"${c.link.name}: the board speaks stream format version $v; this host tool reads versions ${StreamV1.ReadableVersions.mkString(", ")}")
     (id, v)
   }
 }

@@ -1,6 +1,6 @@
 package moire.stream
 
-import moire.io.{Quadrature, QuadratureParams}
+import moire.io.Quadrature
 import moire.protocol.BurstLayout
 import moire.recording.Recording
 import moire.signal.{Adc, AdcFormat}
@@ -14,11 +14,12 @@ final case class BurstCheck(refSkips: Int, triggerError: Option[Long])
 /** A full-rate recording (sample rate = ADC clock) from one burst: its [[BurstInfo]] and sample frames.
   * Columns: sin, cos, `otr_sin`, `otr_cos`, `ref_a`, `ref_b`, `ref_z`, `sample_index`, and `ref_counts`:
   * the reference encoder's quadrature count rebuilt from the A/B pin states, placed by the board's count
-  * at the last sample (the board's counter lags the pins by `counterLatency` clocks) and checked at the
-  * trigger. The anchors go into the metadata.
+  * at the last sample and checked at the trigger. The board delays the pins it stores by its counter's
+  * latency, so a sample's pins and count are of one instant (`counterLatency` samples apart: 0).
+  * The anchors go into the metadata.
   */
 object BurstAssembler {
-  val counterLatency: Int = QuadratureParams().latency
+  val counterLatency: Int = 0
 
   def recording(info: BurstInfo, frames: Seq[BurstSamples], adcClockHz: Double, adc: AdcFormat,
                 meta: Map[String, String] = Map.empty): (Recording, BurstCheck) = {

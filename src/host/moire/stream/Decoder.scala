@@ -120,6 +120,7 @@ final class Decoder(val decimation: Long) {
           if (avail <= AtType) -1
           else u8(AtType) match {
             case TypeRecords => if (avail <= AtCount) -1 else if (u8(AtCount) == 0) 0 else recordFrameBytes(u8(AtCount))
+            case TypeRefRecords => if (avail <= AtCount) -1 else if (u8(AtCount) == 0) 0 else refRecordFrameBytes(u8(AtCount))
             case TypeReply => ReplyBytes
             case TypeBurstInfo => BurstInfoBytes
             case TypeBurstSamples => if (avail <= AtBurstCount) -1 else if (u8(AtBurstCount) == 0) 0 else burstFrameBytes(u8(AtBurstCount))
@@ -163,10 +164,12 @@ final class Decoder(val decimation: Long) {
     else {
       frameLen = len
       val n = u8(AtCount)
+      val withRef = u8(AtType) == TypeRefRecords
       RecordFrame(seq, u16(AtDropped), IndexedSeq.tabulate(n) { k =>
-        val at = AtRecords + RecordLayout.bytes * k
+        val at = AtRecords + RecordLayout.bytesOf(u8(AtType)) * k
         def field(f: moire.protocol.Field) = u32(at + RecordLayout.at(f))
-        Record(field(RecordLayout.Index), field(RecordLayout.Word), field(RecordLayout.Position).toInt)
+        Record(field(RecordLayout.Index), field(RecordLayout.Word), field(RecordLayout.Position).toInt,
+          if (withRef) Some(field(RecordLayout.RefCount).toInt) else None)
       })
     }
   }

@@ -20,13 +20,16 @@ object Encoder {
 
   def frame(f: Frame): Array[Byte] = f match {
     case r: RecordFrame =>
-      val o = new Out(recordFrameBytes(r.records.size))
-      o.u8(AtType, TypeRecords); o.u16(AtSeq, r.seq); o.u8(AtCount, r.records.size); o.u16(AtDropped, r.dropped)
+      val t = r.frameType
+      val size = RecordLayout.bytesOf(t)
+      val o = new Out(AtRecords + size * r.records.size + CrcBytes)
+      o.u8(AtType, t); o.u16(AtSeq, r.seq); o.u8(AtCount, r.records.size); o.u16(AtDropped, r.dropped)
       for ((x, k) <- r.records.zipWithIndex) {
-        val at = AtRecords + RecordLayout.bytes * k
+        val at = AtRecords + size * k
         o.u32(at + RecordLayout.at(RecordLayout.Index), x.index)
         o.u32(at + RecordLayout.at(RecordLayout.Word), x.word)
         o.u32(at + RecordLayout.at(RecordLayout.Position), x.position.toLong & MaxU32)
+        x.ref.foreach(v => o.u32(at + RecordLayout.at(RecordLayout.RefCount), v.toLong & MaxU32))
       }
       o.crc()
     case b: BurstInfo =>

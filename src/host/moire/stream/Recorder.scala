@@ -195,7 +195,7 @@ object Recorder {
   /** Growing columns of the records received. */
   private final class Columns {
     val sin = ArrayBuffer.empty[Int]; val cos = ArrayBuffer.empty[Int]
-    val extra: Map[String, ArrayBuffer[Double]] = RecordColumns.extra.map(_ -> ArrayBuffer.empty[Double]).toMap
+    val extra: Map[String, ArrayBuffer[Double]] = (RecordColumns.extra :+ RecordColumns.ref).map(_ -> ArrayBuffer.empty[Double]).toMap
     private var lastRaw = -1L; private var unwrapped = 0L
     def rows: Int = sin.length
     def add(r: Record): Unit = {
@@ -204,9 +204,12 @@ object Recorder {
       lastRaw = r.index
       sin += r.sin; cos += r.cos
       RecordColumns.values(r, unwrapped).foreach { case (k, v) => extra(k) += v }
+      r.ref.foreach(v => extra(RecordColumns.ref) += v)
     }
+    /** The columns; the reference count only when every record carried it (boards of version 2). */
     def recording(s: BoardSetup, meta: Map[String, String]): Recording =
-      Recording(s.sampleRateHz, Adc(12, s.adc), sin.toArray, cos.toArray, meta, extra.map { case (k, v) => k -> v.toArray })
+      Recording(s.sampleRateHz, Adc(12, s.adc), sin.toArray, cos.toArray, meta,
+        extra.collect { case (k, v) if k != RecordColumns.ref || v.length == rows => k -> v.toArray })
   }
 
   /** Reads for `seconds`, then to the end of the frame in progress (at most 1 s more). */
@@ -245,6 +248,8 @@ object Recorder {
 /** The extra columns of a board recording, in one place (names fixed by stream format v1). */
 object RecordColumns {
   val extra: Seq[String] = Seq("sample_index", "position", "otr_sin", "otr_cos", "present", "over_range", "step_fault", "direction")
+  /** The reference encoder's count (records of frame type 0x05): the reference trajectory for explain. */
+  val ref: String = "ref_counts"
   private def b(f: Boolean): Double = if (f) 1.0 else 0.0
   /** Values of the extra columns; `index` is the sample index unwrapped past 2^32. */
   def values(r: Record, index: Long): Seq[(String, Double)] = Seq("sample_index" -> index.toDouble, "position" -> r.position.toDouble,

@@ -2,13 +2,23 @@ package moire.io
 
 import chisel3._
 import chisel3.util._
-import moire.protocol.{Crc16, RegCommand, RegReply, StreamRecord}
+import moire.protocol.{BurstLayout, Crc16, RegCommand, RegReply, StreamRecord}
 import moire.protocol.StreamV1._
 
-/** Frame sender, stream v1 (moire.protocol.StreamV1): register replies have priority; a record frame
-  * starts when the FIFO holds at least `n` records and takes exactly n. `dropped` pulses (FIFO
-  * overflow) are counted, saturating at 65535, and the count since the previous record frame goes
-  * into the next one. seq counts frames of both types. Bytes out one at a time (to a [[UartTx]]).
+/** What a finished burst's info frame (type 0x03) carries. */
+class BurstInfoBits extends Bundle {
+  val length = UInt(32.W)
+  val pre = UInt(32.W)
+  val trigger = new BurstAnchor
+  val last = new BurstAnchor
+}
+
+/** Frame sender, stream v1 (moire.protocol.StreamV1), version 2: register replies first, then a burst
+  * (its info frame, then its words in sample frames of up to [[BurstFrameWords]]), then records: a
+  * record frame (type 0x05, with the reference count) starts when the FIFO holds at least `n` records and
+  * takes exactly n; no record frame starts while a burst is being sent. `dropped` pulses (FIFO overflow)
+  * are counted, saturating at 65535, and the count since the previous record frame goes into the next one.
+  * seq counts frames of all types. Bytes out one at a time (to a [[UartTx]]).
   */
 class FrameTx(val n: Int, val countWidth: Int) extends Module {
   require(n >= 1 && n <= MaxFrameRecords, s"frame-records n must be in 1..$MaxFrameRecords, got $n")
@@ -18,59 +28,99 @@ class FrameTx(val n: Int, val countWidth: Int) extends Module {
     val recordCount = Input(UInt(countWidth.W))
     val dropped = Input(Bool())
     val reply = Flipped(Decoupled(new RegReply))
+    /** A finished burst to send: taken once; then `info.length` words from `burstWords`. */
+    val burstInfo = Flipped(Decoupled(new BurstInfoBits))
+    val burstWords = Flipped(Decoupled(UInt(BurstLayout.width.W)))
+    /** A burst is being sent (from its info frame to its last word). */
+    val bursting = Output(Bool())
     val out = Decoupled(UInt(8.W))
   })
-  private val recordBytes = RecordLayout.bytes
+  private object Kind { val Records = 0; val Reply = 1; val Info = 2; val Samples = 3 }
+  private val recordBytes = RecordLayout.refBytes
   private val seq = RegInit(0.U(16.W))
   private val droppedCnt = RegInit(0.U(16.W))
   private val busy = RegInit(false.B)
-  private val isReply = Reg(Bool())
+  private val kind = RegInit(0.U(2.W))
   private val pos = RegInit(0.U(16.W))     // byte position in the frame
-  private val recByte = RegInit(0.U(log2Ceil(recordBytes).W))  // byte within the current record
+  private val recByte = RegInit(0.U(log2Ceil(recordBytes).W))  // byte within the current record or word
   private val crc = Reg(UInt(16.W))
   private val frameDropped = Reg(UInt(16.W))
   private val reply = Reg(new RegReply)
+  private val info = Reg(new BurstInfoBits)
+  private val total = RegInit(0.U(32.W))   // words of the burst being sent
+  private val sent = RegInit(0.U(32.W))    // of these, words sent
+  private val offset = Reg(UInt(32.W))     // first word of the current sample frame
+  private val words = Reg(UInt(8.W))       // words in the current sample frame
 
-  private val bodyEnd = Mux(isReply, (ReplyBytes - CrcBytes).U, (recordFrameBytes(n) - CrcBytes).U) // first CRC byte
-  private val startRec = !busy && !io.reply.valid && io.recordCount >= n.U
+  private val bursting = sent =/= total
+  private val left = total - sent
+  private val nextWords = Mux(left > BurstFrameWords.U, BurstFrameWords.U, left)(7, 0)
   private val startReply = !busy && io.reply.valid
+  private val startInfo = !busy && !io.reply.valid && !bursting && io.burstInfo.valid
+  private val startSamples = !busy && !io.reply.valid && bursting
+  private val startRec = !busy && !io.reply.valid && !bursting && !io.burstInfo.valid && io.recordCount >= n.U
   io.reply.ready := !busy
+  io.burstInfo.ready := startInfo
+  io.bursting := bursting || busy && kind === Kind.Info.U
   private val dropNow = io.dropped && droppedCnt =/= MaxDropped.U
   droppedCnt := droppedCnt + dropNow.asUInt
   when(startRec) {
     frameDropped := droppedCnt
     droppedCnt := io.dropped.asUInt
   }
-  when(startRec || startReply) {
-    busy := true.B; isReply := startReply; pos := 0.U; recByte := 0.U; crc := Crc16.Init.U
+  when(startRec || startReply || startInfo || startSamples) {
+    busy := true.B; pos := 0.U; recByte := 0.U; crc := Crc16.Init.U
+    kind := Mux(startReply, Kind.Reply.U, Mux(startInfo, Kind.Info.U, Mux(startSamples, Kind.Samples.U, Kind.Records.U)))
   }
   when(startReply) { reply := io.reply.bits }
+  when(startInfo) { info := io.burstInfo.bits; total := io.burstInfo.bits.length; sent := 0.U }
+  when(startSamples) { offset := sent; words := nextWords }
 
   /** Little-endian bytes of `x`. */
-  private def le(x: UInt, bytes: Int): Seq[UInt] = Seq.tabulate(bytes)(i => x(8 * i + 7, 8 * i))
+  private def le(x: UInt, bytes: Int): Seq[UInt] = Seq.tabulate(bytes)(i => x.pad(8 * bytes)(8 * i + 7, 8 * i))
   /** `v(i)`, `i` cut to the index width. */
   private def pick(v: Vec[UInt], i: UInt): UInt = v(i(log2Ceil(v.size) - 1, 0))
+  private def anchorBytes(a: BurstAnchor): Seq[UInt] = le(a.index, 4) ++ le(a.position.asUInt, 4) ++ le(a.refCount.asUInt, 4)
   private val recBytes = VecInit(le(io.records.bits.asUInt, recordBytes))
+  private val wordBytes = VecInit(le(io.burstWords.bits, 4))
   private val replyBytes = VecInit(Seq(reply.addr) ++ le(reply.value, 4))
-  private val header = VecInit(Seq(Sync0.U(8.W), Sync1.U(8.W), Mux(isReply, TypeReply.U(8.W), TypeRecords.U(8.W))) ++ le(seq, 2))
-  require(header.size == HeaderBytes && replyBytes.size == ReplyBytes - CrcBytes - AtReplyAddr)
-  private val inRecords = !isReply && pos >= AtRecords.U && pos < bodyEnd
+  private val infoBytes = VecInit(le(info.length, 4) ++ le(info.pre, 4) ++ anchorBytes(info.trigger) ++ anchorBytes(info.last))
+  private val offsetBytes = VecInit(le(offset, 4))
+  private val frameType = VecInit(Seq(TypeRefRecords, TypeReply, TypeBurstInfo, TypeBurstSamples).map(_.U(8.W)))(kind)
+  private val header = VecInit(Seq(Sync0.U(8.W), Sync1.U(8.W), frameType) ++ le(seq, 2))
+  require(header.size == HeaderBytes && replyBytes.size == ReplyBytes - CrcBytes - AtReplyAddr &&
+    infoBytes.size == BurstInfoBytes - CrcBytes - AtBurstLength)
+  private val bodyEnd = VecInit(Seq(                     // first CRC byte, by kind
+    (refRecordFrameBytes(n) - CrcBytes).U(16.W), (ReplyBytes - CrcBytes).U(16.W), (BurstInfoBytes - CrcBytes).U(16.W),
+    (AtBurstWords.U(16.W) + (words << 2)).pad(16)))(kind)
+  private val isRecords = kind === Kind.Records.U
+  private val isSamples = kind === Kind.Samples.U
+  private val inRecords = isRecords && pos >= AtRecords.U && pos < bodyEnd
+  private val inWords = isSamples && pos >= AtBurstWords.U && pos < bodyEnd
   private val byte = WireDefault(0.U(8.W))
   when(pos < HeaderBytes.U) { byte := pick(header, pos) }
     .elsewhen(pos === bodyEnd) { byte := crc(7, 0) }
     .elsewhen(pos === bodyEnd + 1.U) { byte := crc(15, 8) }
-    .elsewhen(isReply) { byte := pick(replyBytes, pos - AtReplyAddr.U) }
+    .elsewhen(kind === Kind.Reply.U) { byte := pick(replyBytes, pos - AtReplyAddr.U) }
+    .elsewhen(kind === Kind.Info.U) { byte := pick(infoBytes, pos - AtBurstLength.U) }
+    .elsewhen(isSamples && pos < AtBurstCount.U) { byte := pick(offsetBytes, pos - AtBurstOffset.U) }
+    .elsewhen(isSamples && pos === AtBurstCount.U) { byte := words }
+    .elsewhen(isSamples) { byte := pick(wordBytes, recByte) }
     .elsewhen(pos === AtCount.U) { byte := n.U }
     .elsewhen(pos === AtDropped.U) { byte := frameDropped(7, 0) }
     .elsewhen(pos === (AtDropped + 1).U) { byte := frameDropped(15, 8) }
     .otherwise { byte := recBytes(recByte) }
-  io.out.valid := busy
+  // a sample frame waits for its next word (the burst RAM answers within a few clocks)
+  io.out.valid := busy && !(inWords && !io.burstWords.valid)
   io.out.bits := byte
   io.records.ready := busy && inRecords && io.out.ready && recByte === (recordBytes - 1).U
-  when(busy && io.out.ready) {
+  io.burstWords.ready := busy && inWords && io.out.ready && recByte === 3.U
+  when(io.burstWords.fire) { sent := sent + 1.U }
+  when(io.out.fire) {
     pos := pos + 1.U
     when(pos >= CrcFrom.U && pos < bodyEnd) { crc := Crc16.next(crc, byte) }
     when(inRecords) { recByte := Mux(recByte === (recordBytes - 1).U, 0.U, recByte + 1.U) }
+    when(inWords) { recByte := Mux(recByte === 3.U, 0.U, recByte + 1.U) }
     when(pos === bodyEnd + 1.U) { busy := false.B; seq := seq + 1.U }
   }
 }

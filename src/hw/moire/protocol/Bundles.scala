@@ -18,10 +18,11 @@ class RecordWord extends Bundle {
   val sin = UInt(W.Sin.width.W)
 }
 
-/** One stream v1 record in hardware (96 bits; asUInt bits 7..0 are the record's byte 0), laid out as
-  * [[StreamV1.RecordLayout]].
+/** One record in hardware as frames of type 0x05 carry it (128 bits; asUInt bits 7..0 are the record's
+  * byte 0), laid out as [[StreamV1.RecordLayout]] with the reference count.
   */
 class StreamRecord extends Bundle {
+  val refCount = SInt(R.RefCount.width.W)
   val position = SInt(R.Position.width.W)
   val word = new RecordWord
   val index = UInt(R.Index.width.W)

@@ -7,8 +7,10 @@ final case class Reg(addr: Int, name: String, writable: Boolean, doc: String)
   * the board's register file (moire.board.de2115.BoardCore) and `board-reg` both read it.
   */
 object Registers {
+  /** Samples per speed measurement for the speed trigger: speed = position change over this many samples. */
+  val SpeedWindow: Int = 1024
   val Id: Reg = Reg(0x00, "id", false, "0x4D4F4952 \"MOIR\"")
-  val Version: Reg = Reg(0x01, "version", false, "stream format version (1)")
+  val Version: Reg = Reg(0x01, "version", false, "stream format version (2: v1 frames + burst and reference-count records)")
   val Status: Reg = Reg(0x02, "status", false, "sticky flags: bit0 overspeed, 1 over_range, 2 step_fault, 3 fifo_overflow, 4 otr_sin, 5 otr_cos; bit8 present (live)")
   val Control: Reg = Reg(0x03, "control", true, "bit0 stream enable (default 1), bit1 clear sticky status")
   val Decimation: Reg = Reg(0x04, "decimation", true, "D, one record every D ADC samples, 1..2^24")
@@ -45,10 +47,16 @@ object Registers {
   val BurstTrigger: Reg = Reg(0xE1, "burst_trigger", true, "0 now, 1 |speed| rises to burst_threshold, 2 reference Z edge, 3 position crosses burst_target")
   val BurstLength: Reg = Reg(0xE2, "burst_length", true, "N, samples per burst, 1..burst depth")
   val BurstPre: Reg = Reg(0xE3, "burst_pre", true, "samples before the trigger sample, 0..N-1")
-  val BurstThreshold: Reg = Reg(0xE4, "burst_threshold", true, "speed threshold, counts per speed window")
+  val BurstThreshold: Reg = Reg(0xE4, "burst_threshold", true, s"speed threshold, counts per $SpeedWindow samples")
   val BurstTarget: Reg = Reg(0xE5, "burst_target", true, "trigger position, counts, two's complement")
   val BurstState: Reg = Reg(0xE6, "burst_state", false, "0 idle, 1 waiting for the trigger, 2 capturing, 3 done; bit2 sending")
-  val burst: Seq[Reg] = Seq(BurstControl, BurstTrigger, BurstLength, BurstPre, BurstThreshold, BurstTarget, BurstState)
+  val BurstDepth: Reg = Reg(0xE7, "burst_depth", false, "largest burst length N the board holds")
+  val burst: Seq[Reg] = Seq(BurstControl, BurstTrigger, BurstLength, BurstPre, BurstThreshold, BurstTarget, BurstState, BurstDepth)
+  /** Bits of `burst_control`. */
+  object BurstControlBit { val Arm = 0; val Send = 1 }
+  /** Bit of `burst_state` set while the burst is being sent. */
+  val BurstSendingBit: Int = 2
+
   private def known: Seq[Reg] = all ++ burst
 
   /** First address of the harmonic-coefficient window: 0x10 + slot*4 + {0 order, 1 c_k, 2 phi_k}. */

@@ -5,7 +5,11 @@ package moire.protocol
   * (moire.stream.Encoder, Decoder) share. All multi-byte numbers are little-endian.
   */
 object StreamV1 {
-  val Version: Int = 1
+  /** Register `version`: 2 = the v1 frames plus burst frames (0x03, 0x04) and records with the reference count
+    * (0x05). Hosts read boards of versions 1 and 2; the frame layout of v1 is unchanged.
+    */
+  val Version: Int = 2
+  val ReadableVersions: Seq[Int] = Seq(1, 2)
   val Sync0: Int = 0xA5
   val Sync1: Int = 0x5A
   val TypeRecords: Int = 0x01
@@ -13,6 +17,8 @@ object StreamV1 {
   /** Burst info: length, pre-trigger and the two anchors of a finished burst; then its samples. */
   val TypeBurstInfo: Int = 0x03
   val TypeBurstSamples: Int = 0x04
+  /** Record frame whose records also carry the reference encoder's count (boards of version 2 send only these). */
+  val TypeRefRecords: Int = 0x05
   val OpRead: Int = 0x52  // 'R'
   val OpWrite: Int = 0x57 // 'W'
   val MaxU32: Long = 0xFFFFFFFFL
@@ -50,6 +56,8 @@ object StreamV1 {
   val AtBurstCount: Int = AtBurstOffset + 4
   val AtBurstWords: Int = AtBurstCount + 1
   val MaxBurstWords: Int = 255
+  /** Words per burst sample frame the boards send (the last frame of a burst may hold fewer). */
+  val BurstFrameWords: Int = 128
   def burstFrameBytes(n: Int): Int = AtBurstWords + 4 * n + CrcBytes
 
   // ---- host -> board commands: sync, op, addr (u8), value (u32), CRC ----
@@ -58,14 +66,22 @@ object StreamV1 {
   val AtCmdValue: Int = AtCmdAddr + 1
   val CommandBytes: Int = AtCmdValue + 4 + CrcBytes
 
-  /** One record (96 bits, byte 0 = bits 7..0): sample index (u32), word (u32), position (s32). */
+  /** One record (byte 0 = bits 7..0): sample index (u32), word (u32), position (s32): 96 bits in frames of
+    * type 0x01; in frames of type 0x05 also the reference encoder's count (s32): 128 bits.
+    */
   object RecordLayout {
     val Index: Field = Field("index", 0, 32)
     val Word: Field = Index.next("word", 32)
     val Position: Field = Word.next("position", 32)
+    val RefCount: Field = Position.next("ref_count", 32)
     val fields: Seq[Field] = Seq(Index, Word, Position)
+    val refFields: Seq[Field] = fields :+ RefCount
     val width: Int = Position.msb + 1
     val bytes: Int = width / 8
+    val refWidth: Int = RefCount.msb + 1
+    val refBytes: Int = refWidth / 8
+    /** Bytes of one record in a frame of type `t` (0x01 or 0x05). */
+    def bytesOf(t: Int): Int = if (t == TypeRefRecords) refBytes else bytes
     /** Byte offset of a field within the record. */
     def at(f: Field): Int = f.lsb / 8
   }
@@ -89,4 +105,6 @@ object StreamV1 {
 
   /** Bytes of a record frame with n records. */
   def recordFrameBytes(n: Int): Int = AtRecords + RecordLayout.bytes * n + CrcBytes
+  /** Bytes of a record frame of type 0x05 with n records. */
+  def refRecordFrameBytes(n: Int): Int = AtRecords + RecordLayout.refBytes * n + CrcBytes
 }

@@ -3,8 +3,10 @@ package moire.stream
 import moire.protocol.{Field, StreamV1}
 import moire.protocol.StreamV1.{WordLayout => W}
 
-/** One record: the ADC sample index (u32), the flag/code word (u32) and the datapath position (s32). */
-final case class Record(index: Long, word: Long, position: Int) {
+/** One record: the ADC sample index (u32), the flag/code word (u32), the datapath position (s32) and, in
+  * frames of type 0x05, the reference encoder's count (s32).
+  */
+final case class Record(index: Long, word: Long, position: Int, ref: Option[Int] = None) {
   require(index >= 0 && index <= StreamV1.MaxU32, s"record index must be a u32, got $index")
   require(word >= 0 && word <= StreamV1.MaxU32, s"record word must be a u32, got $word")
   private def bit(f: Field): Boolean = f.get(word) != 0
@@ -38,8 +40,13 @@ object Record {
 /** A board -> host frame. `seq` is the u16 frame counter (+1 per frame of any type). */
 sealed trait Frame { def seq: Int }
 
-/** Type 0x01: 1..255 records and the count of records lost to FIFO overflow since the previous record frame. */
+/** Type 0x01 (records without) or 0x05 (records with the reference count): 1..255 records and the count of
+  * records lost to FIFO overflow since the previous record frame.
+  */
 final case class RecordFrame(seq: Int, dropped: Int, records: IndexedSeq[Record]) extends Frame {
+  require(records.forall(_.ref.isDefined) || records.forall(_.ref.isEmpty), "records of one frame all carry the reference count or none does")
+  /** The frame type these records go in. */
+  def frameType: Int = if (records.headOption.exists(_.ref.isDefined)) StreamV1.TypeRefRecords else StreamV1.TypeRecords
   require(seq >= 0 && seq <= 0xFFFF, s"seq must be a u16, got $seq")
   require(dropped >= 0 && dropped <= 0xFFFF, s"dropped must be a u16, got $dropped")
   require(records.nonEmpty && records.size <= StreamV1.MaxFrameRecords, s"a record frame holds 1..${StreamV1.MaxFrameRecords} records, got ${records.size}")
