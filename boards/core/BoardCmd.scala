@@ -16,7 +16,8 @@ object BoardCmd {
     try body catch { case e: IllegalArgumentException => bad("--" + e.getMessage.stripPrefix("requirement failed: ")) }
 
   def params(design: String, adcClockHz: Int, adcFormat: String, decimation: Int, baud: Int, frameRecords: Int,
-             fifoDepth: Int, glitchFilter: Int, counts: Int, clockSource: String, clockHz: Int = 50000000): BoardParams = {
+             fifoDepth: Int, glitchFilter: Int, counts: Int, clockSource: String, clockHz: Int = 50000000,
+             lines: Int = 16384, harmonics: Int = 4): BoardParams = {
     val d = BoardDesign.parse(design).fold(bad, identity)
     val f = AdcFormat.parse(adcFormat).fold(e => bad(s"--adc-format: $e"), identity)
     val c = ClockSource.parse(clockSource).fold(bad, identity)
@@ -24,7 +25,10 @@ object BoardCmd {
       val base = BoardParams()
       val sub = base.subdiv.copy(counts = counts)
       val cor = base.corrected.copy(subdiv = base.corrected.subdiv.copy(counts = counts))
-      BoardParams(d, sub, cor, adcClockHz, f, decimation, baud, frameRecords, fifoDepth, glitchFilter, c, clockHz)
+      val harm = try base.harmonic.copy(lines = lines, harmonics = harmonics, subdivision = counts) catch {
+        case e: IllegalArgumentException => bad("--" + e.getMessage.stripPrefix("requirement failed: ").replace("lines must", "lines (fringe periods per turn) must"))
+      }
+      BoardParams(d, sub, cor, adcClockHz, f, decimation, baud, frameRecords, fifoDepth, glitchFilter, c, clockHz, harmonic = harm)
     }
   }
 

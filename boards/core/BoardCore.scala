@@ -9,6 +9,7 @@ import moire.signal.AdcFormat
 import moire.protocol.{BurstLayout, RegReply, Registers, StreamRecord, StreamV1}
 import moire.protocol.Registers.{ControlBit, StatusBit}
 import moire.subdiv.{AdcPins, SubdivAdc, SubdivOut, SubdivStatus}
+import moire.harmonic.{HarmonicCompensator, HarmonicRegPort}
 
 /** Everything of a board on the system clock, shared by the DE2-115 and the ULX3S harnesses:
   * AD9226 capture, datapath, record stream over the UART, register interface, encoder input counter
@@ -54,6 +55,8 @@ class BoardCore(val p: BoardParams) extends Module {
 
   // ---- datapath ----
   private val clear = Wire(Bool())
+  /** Writes to the harmonic window (design compensated), from the register section below. */
+  private val harmonicPort = Wire(new HarmonicRegPort(p.harmonicParams))
   private val dpIn = Wire(Valid(new AdcPins(12)))
   dpIn.valid := sampleValid
   dpIn.bits.sin := sinD; dpIn.bits.cos := cosD; dpIn.bits.otrSin := otrS; dpIn.bits.otrCos := otrC
@@ -66,6 +69,24 @@ class BoardCore(val p: BoardParams) extends Module {
       val m = Module(new CorrectedSubdivider(p.correctedParams))
       m.io.in := dpIn; m.io.clearStatus := clear
       (m.io.out, m.io.a, m.io.b, m.io.z, m.io.status, m.latency)
+    case BoardDesign.Compensated =>
+      val m = Module(new SubdivAdc(p.subdiv, p.adcFormat))
+      m.io.in := dpIn; m.io.clearStatus := clear
+      val hp = p.harmonicParams
+      val h = Module(new HarmonicCompensator(hp))
+      h.io.reg := harmonicPort
+      h.io.in.valid := m.io.out.valid
+      h.io.in.bits := m.io.out.bits.position.asUInt(hp.countBits - 1, 0)
+      // theta - f(theta), kept multi-turn: the subdivider's position minus f rounded to counts
+      val late = ShiftRegister(m.io.out.bits, hp.latency)
+      val fCounts = ((h.io.out.bits.f +& (BigInt(1) << (hp.outFrac - 1)).S) >> hp.outFrac).asSInt
+      val o = Wire(Valid(new SubdivOut(p.subdiv)))
+      o.valid := h.io.out.valid
+      o.bits := late
+      o.bits.position := (late.position - fCounts)(p.subdiv.positionWidth - 1, 0).asSInt
+      val q = Module(new QuadratureOut(p.subdiv.positionWidth, p.subdiv.countBits, p.subdiv.minEdgeClocks))
+      q.io.in.valid := o.valid; q.io.in.bits := o.bits.position
+      (o, q.io.a, q.io.b, q.io.z, m.io.status, m.latency + hp.latency)
   }
   require(latency == p.datapathLatency, s"datapath latency $latency, expected ${p.datapathLatency}")
 
@@ -198,7 +219,8 @@ class BoardCore(val p: BoardParams) extends Module {
     Registers.BurstTrigger -> burstCfg.mode, Registers.BurstLength -> burstCfg.length, Registers.BurstPre -> burstCfg.pre,
     Registers.BurstThreshold -> burstCfg.threshold, Registers.BurstTarget -> burstCfg.target.asUInt,
     Registers.BurstState -> Cat(burst.io.sending || infoPending, burst.io.state), Registers.BurstDepth -> p.burst.samples.U
-  ).map { case (r, v) => r.addr.U(8.W) -> Cat(0.U(32.W), v)(31, 0) })
+  ).map { case (r, v) => r.addr.U(8.W) -> Cat(0.U(32.W), v)(31, 0) } ++
+    harmonicKept.zipWithIndex.map { case (v, i) => (Registers.HarmonicBase + i).U(8.W) -> v })
   private val cmd = cmdRx.io.cmd
   private val isWrite = cmd.valid && cmd.bits.write
   clear := isWrite && cmd.bits.addr === Registers.Control.addr.U && cmd.bits.value(ControlBit.Clear)
@@ -215,6 +237,25 @@ class BoardCore(val p: BoardParams) extends Module {
   when(written(Registers.BurstTarget)) { burstCfg.target := cmd.bits.value.asSInt }
   burstArm := written(Registers.BurstControl) && cmd.bits.value(Registers.BurstControlBit.Arm)
   burstRead := written(Registers.BurstControl) && cmd.bits.value(Registers.BurstControlBit.Send)
+  // harmonic coefficients (design compensated): written to the compensator, read back from a copy of what it kept
+  private val hp = p.harmonicParams
+  private val harmonicRegs = hp.harmonics * hp.regsPerSlot
+  private val inHarmonic = cmd.bits.addr >= Registers.HarmonicBase.U && cmd.bits.addr < (Registers.HarmonicBase + harmonicRegs).U
+  harmonicPort.we := isWrite && inHarmonic && (p.design == BoardDesign.Compensated).B
+  harmonicPort.addr := (cmd.bits.addr - Registers.HarmonicBase.U)(hp.addrBits - 1, 0)
+  harmonicPort.data := cmd.bits.value
+  private val harmonicKept: Seq[UInt] = if (p.design != BoardDesign.Compensated) Nil else Seq.tabulate(harmonicRegs) { i =>
+    val r = RegInit(0.U(32.W))
+    val v = cmd.bits.value
+    val kept = (i % hp.regsPerSlot) match {
+      case 0 => v(hp.orderBits - 1, 0).pad(32)
+      case 1 => v(hp.coefWidth - 1, 0).asSInt.pad(32).asUInt
+      case 2 => v(hp.countBits - 1, 0).pad(32)
+      case _ => 0.U(32.W)
+    }
+    when(harmonicPort.we && cmd.bits.addr === (Registers.HarmonicBase + i).U) { r := kept }
+    r
+  }
   // The reply reads the register one clock later, so a write answers with the new value.
   private val replies = Module(new Queue(new RegReply, 4))
   private val replyAddr = RegNext(cmd.bits.addr)

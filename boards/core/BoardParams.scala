@@ -12,7 +12,11 @@ object BoardDesign {
   case object Subdiv extends BoardDesign("subdiv")
   /** ADC front end + adaptive corrector + subdivider (moire.chain.CorrectedSubdivider). */
   case object Corrected extends BoardDesign("corrected")
-  val all: Seq[BoardDesign] = Seq(Subdiv, Corrected)
+  /** ADC front end + subdivider + turntable harmonic compensation of the position (moire.harmonic.HarmonicCompensator):
+    * records and A/B/Z carry theta - f(theta); coefficients by `board-reg --coefficients`.
+    */
+  case object Compensated extends BoardDesign("compensated")
+  val all: Seq[BoardDesign] = Seq(Subdiv, Corrected, Compensated)
   def parse(s: String): Either[String, BoardDesign] =
     all.find(_.name == s).toRight(s"--design: '$s' is not a board design; allowed: ${all.map(_.name).mkString(", ")}")
 }
@@ -43,6 +47,7 @@ object ClockSource {
   * @param frameRecords  n, records per frame, 1..255 (default 8)
   * @param fifoDepth     record FIFO entries, at least n
   * @param glitchFilter  encoder inputs: clocks an input must be stable to be taken, 1..65536
+  * @param harmonic      compensator of design compensated (its subdivision is set to the subdivider's M)
   * @param burstSamples  burst capture depth N (block RAM: 29 bits per sample; 65,536 = 116 DP16KD or 232 M9K)
   * @param clockSource   pll (hardware) or logic (simulation fallback)
   * @param clockHz       system clock (DE2-115: 50 MHz only; ULX3S: what its PLL makes from 25 MHz,
@@ -61,7 +66,8 @@ final case class BoardParams(
   glitchFilter: Int = 16,
   clockSource: ClockSource = ClockSource.Pll,
   clockHz: Int = 50000000,
-  burstSamples: Int = 65536
+  burstSamples: Int = 65536,
+  harmonic: moire.harmonic.HarmonicParams = moire.harmonic.HarmonicParams()
 ) {
   require(clockHz >= 1000000 && clockHz <= 200000000, s"clock-hz must be in 1000000..200000000, got $clockHz")
   require(adcClockHz > 0 && clockHz % adcClockHz == 0 && clockHz / adcClockHz <= 1000,
@@ -83,8 +89,14 @@ final case class BoardParams(
   val correctedParams: CorrectedSubdivParams = corrected.copy(format = adcFormat)
   /** The subdivider that makes the position (its counts M, position width). */
   val datapathSubdiv: SubdivParams = if (design == BoardDesign.Subdiv) subdiv else correctedParams.subdiv
+  /** The compensator of design compensated: one turn = `harmonic.lines` fringe periods of M counts. */
+  val harmonicParams: moire.harmonic.HarmonicParams = harmonic.copy(subdivision = subdiv.counts)
   /** Clocks from the captured ADC word (input register) to the datapath output. */
-  val datapathLatency: Int = if (design == BoardDesign.Subdiv) 1 + subdiv.latency else correctedParams.latency
+  val datapathLatency: Int = design match {
+    case BoardDesign.Subdiv => 1 + subdiv.latency
+    case BoardDesign.Corrected => correctedParams.latency
+    case BoardDesign.Compensated => 1 + subdiv.latency + harmonicParams.latency
+  }
   /** AD9226 pipeline: a sample's word appears on the pins 7 ADC clocks after the edge that took it. */
   val adcPipeline: Int = 7
   /** Records per second at the default decimation. */

@@ -3,23 +3,54 @@ package moire.board
 import chisel3._
 import chiseltest._
 import moire.board.de2115.{De2115Ports, De2115Top, SevenSeg}
+import moire.board.ulx3s.{Ulx3sPorts, Ulx3sTop}
 import moire.io.Quadrature
 import moire.stream.{Command, Decoder, Encoder, Frame, RecordFrame, RegisterReply}
 import scala.collection.mutable
 
-/** The board top with CLOCK_50 tied to the test clock (chiseltest needs a Module). */
-class BoardHarness(val p: BoardParams) extends Module {
+/** A board top as chiseltest drives it: a Module around the top with its clock input tied to the test clock. */
+trait BenchTop extends Module {
+  def p: BoardParams
+  /** The ADC and encoder pins (shared by both boards). */
+  def adcPins: AdcEncoderPins
+  /** UART, host -> board. */
+  def uartIn: Bool
+  /** UART, board -> host. */
+  def uartOut: Bool
+  /** Holds the board's reset button down or lets it go. */
+  def pressReset(down: Boolean): Unit
+}
+
+/** The DE2-115 top (CLOCK_50 = the test clock). */
+class BoardHarness(val p: BoardParams) extends BenchTop {
   val io = IO(new De2115Ports)
   private val top = Module(new De2115Top(p))
   top.CLOCK_50 := clock
   top.pins <> io
+  def adcPins: AdcEncoderPins = io
+  def uartIn: Bool = io.UART_RXD
+  def uartOut: Bool = io.UART_TXD
+  def pressReset(down: Boolean): Unit = io.KEY.poke((if (down) 0xE else 0xF).U)
+}
+
+/** The ULX3S top (clk_25mhz = the test clock; clock source logic). */
+class Ulx3sHarness(val p: BoardParams) extends BenchTop {
+  val io = IO(new Ulx3sPorts)
+  private val top = Module(new Ulx3sTop(p))
+  top.clk_25mhz := clock
+  top.pins <> io
+  def adcPins: AdcEncoderPins = io
+  def uartIn: Bool = io.ftdi_txd
+  def uartOut: Bool = io.ftdi_rxd
+  /** btn[0] is PWRn (1 = not pressed); btn[1] FIRE1 resets (1 = pressed). */
+  def pressReset(down: Boolean): Unit = io.btn.poke((if (down) 3 else 1).U)
 }
 
 /** Drives the board's pins clock by clock: the AD9226 model on the ADC pins (edges seen on SIN_CLK,
   * or every clock when the ADC runs at 50 MHz), scripted encoder levels, commands bit-banged into
   * UART_RXD; bytes captured from UART_TXD and decoded with moire.stream.Decoder.
   */
-final class BoardBench(c: BoardHarness, val adc: Ad9226Model) {
+final class BoardBench(c: BenchTop, val adc: Ad9226Model) {
   val p: BoardParams = c.p
   private val div = p.baudDivisor
   var cycle: Long = 0
@@ -38,32 +69,34 @@ final class BoardBench(c: BoardHarness, val adc: Ad9226Model) {
   var onCycle: () => Unit = () => ()
 
   def reset(): Unit = {
-    c.io.KEY.poke(0xE.U)
-    c.io.UART_RXD.poke(true.B)
+    c.pressReset(true)
+    c.uartIn.poke(true.B)
     pokeAdc()
     c.clock.step(40)
-    c.io.KEY.poke(0xF.U)
+    c.pressReset(false)
   }
 
   private def pokeAdc(): Unit = {
     val s = adc.pins
-    c.io.SIN_D.poke(s.sin.U); c.io.SIN_OTR.poke(s.otrSin.B)
-    c.io.COS_D.poke(s.cos.U); c.io.COS_OTR.poke(s.otrCos.B)
+    val pins = c.adcPins
+    pins.SIN_D.poke(s.sin.U); pins.SIN_OTR.poke(s.otrSin.B)
+    pins.COS_D.poke(s.cos.U); pins.COS_OTR.poke(s.otrCos.B)
   }
 
   def step(): Unit = {
     if (enc != encPoked) {
-      c.io.ENC_A_IN.poke(enc._1.B); c.io.ENC_B_IN.poke(enc._2.B); c.io.ENC_Z_IN.poke(enc._3.B); encPoked = enc
+      val pins = c.adcPins
+      pins.ENC_A_IN.poke(enc._1.B); pins.ENC_B_IN.poke(enc._2.B); pins.ENC_Z_IN.poke(enc._3.B); encPoked = enc
     }
-    if (rxLeft == 0 && rxBits.nonEmpty) { val b = rxBits.dequeue(); if (b != rxLevel) { c.io.UART_RXD.poke(b.B); rxLevel = b }; rxLeft = div }
+    if (rxLeft == 0 && rxBits.nonEmpty) { val b = rxBits.dequeue(); if (b != rxLevel) { c.uartIn.poke(b.B); rxLevel = b }; rxLeft = div }
     if (rxLeft > 0) rxLeft -= 1
     c.clock.step(1)
     cycle += 1
     val edge = if (p.adcDivide == 1) true else {
-      val clk = c.io.SIN_CLK.peekBoolean(); val rose = clk && !lastClk; lastClk = clk; rose
+      val clk = c.adcPins.SIN_CLK.peekBoolean(); val rose = clk && !lastClk; lastClk = clk; rose
     }
     if (edge) { adc.edge(); pokeAdc() }
-    sampleTx(c.io.UART_TXD.peekBoolean())
+    sampleTx(c.uartOut.peekBoolean())
     onCycle()
   }
 
@@ -115,11 +148,11 @@ final class BoardBench(c: BoardHarness, val adc: Ad9226Model) {
 
   /** The 32-bit value the eight digits show (HEX7 = high nibble), or None if a digit is not a hex pattern. */
   def hexValue: Option[Long] = {
-    val ds = c.io.hex.map(h => SevenSeg.lit.indices.find(d => SevenSeg.activeLow(d) == h.peek().litValue.toInt))
+    val ds = c.asInstanceOf[BoardHarness].io.hex.map(h => SevenSeg.lit.indices.find(d => SevenSeg.activeLow(d) == h.peek().litValue.toInt))
     if (ds.exists(_.isEmpty)) None else Some(ds.zipWithIndex.map { case (d, i) => d.get.toLong << (4 * i) }.sum)
   }
 
-  def encOut: (Boolean, Boolean, Boolean) = (c.io.ENC_A_OUT.peekBoolean(), c.io.ENC_B_OUT.peekBoolean(), c.io.ENC_Z_OUT.peekBoolean())
+  def encOut: (Boolean, Boolean, Boolean) = (c.adcPins.ENC_A_OUT.peekBoolean(), c.adcPins.ENC_B_OUT.peekBoolean(), c.adcPins.ENC_Z_OUT.peekBoolean())
 }
 
 /** Decodes a quadrature pair clock by clock into a count. */

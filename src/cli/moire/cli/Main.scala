@@ -188,7 +188,7 @@ object Main {
   @main(doc = "Write a board project: de2-115 (SystemVerilog, .qsf, .sdc, .qpf, flash.sh for Quartus) or ulx3s (Verilog, .lpf, build.sh for the open ECP5 flow).")
   def board(@arg(doc = "board name: de2-115 | ulx3s (also accepted as the first word after board)") name: String,
             @arg(doc = "output folder (default generated/NAME)") out: Option[String] = None,
-            @arg(doc = "subdiv | corrected") design: String = "subdiv",
+            @arg(doc = "subdiv | corrected | compensated (subdiv + turntable harmonic compensation, coefficients by board-reg)") design: String = "subdiv",
             @arg(doc = "system clock in Hz: de2-115 50000000 only; ulx3s what its PLL makes exactly from 25 MHz, e.g. 65000000 (default 50000000)") clockHz: Int = 50000000,
             @arg(doc = "AD9226 clock in Hz, clock-hz / k (default 50000000)") adcClockHz: Int = 50000000,
             @arg(doc = "ADC strap: offset-binary | twos-complement") adcFormat: String = "offset-binary",
@@ -198,16 +198,18 @@ object Main {
             @arg(doc = "record FIFO depth (default 256)") fifoDepth: Int = 256,
             @arg(doc = "encoder inputs: clocks stable before a level is taken (default 16)") glitchFilter: Int = 16,
             @arg(doc = "M, counts per grating period (default 1024)") counts: Int = 1024,
-            @arg(doc = "pll | logic (no PLL, for simulation; ulx3s: clock-hz 25000000)") clockSource: String = "pll"): Unit = {
+            @arg(doc = "pll | logic (no PLL, for simulation; ulx3s: clock-hz 25000000)") clockSource: String = "pll",
+            @arg(doc = "design compensated: fringe periods per turn, a power of two (default 16384)") lines: Int = 16384,
+            @arg(doc = "design compensated: harmonic slots m, 1..32 (default 4)") harmonics: Int = 4): Unit = {
     import moire.board.BoardCmd
     try BoardCmd.run(name, BoardCmd.params(design, adcClockHz, adcFormat, decimation, baud, frameRecords, fifoDepth,
-      glitchFilter, counts, clockSource, clockHz), out.getOrElse(s"generated/$name")).foreach(println)
+      glitchFilter, counts, clockSource, clockHz, lines, harmonics), out.getOrElse(s"generated/$name")).foreach(println)
     catch { case e: BoardCmd.BadOption => throw new UsageError(e.getMessage) }
   }
 
-  @main(doc = "Record the DE2-115 board's UART stream for some seconds into a moire-recording v1 file (docs/recording.md).")
+  @main(doc = "Record a board's UART stream for some seconds, or one full-rate burst (--burst N), into a moire-recording v1 file (docs/recording.md).")
   def record(@arg(doc = "serial port, e.g. /dev/ttyUSB0") port: String,
-             @arg(doc = "seconds to record") seconds: Double,
+             @arg(doc = "seconds to record; with --burst: seconds to wait for the trigger (default 10)") seconds: Option[Double] = None,
              @arg(doc = "output CSV file") out: String,
              @arg(doc = "UART baud rate (default 115200)") baud: Int = 115200,
              @arg(doc = "write this decimation D to the board first (with --listen-only: the board's D)") decimation: Option[Long] = None,
@@ -215,10 +217,21 @@ object Main {
              @arg(doc = "offset-binary | twos-complement instead of register adc_format") adcFormat: Option[String] = None,
              @arg(doc = "counts per grating period M instead of register counts_per_period") countsPerPeriod: Option[Long] = None,
              @arg(doc = "send no commands; needs --decimation, --adc-clock-hz, --adc-format, --counts-per-period") listenOnly: Flag = Flag(),
+             @arg(doc = "capture N consecutive samples at the full ADC rate instead of the decimated stream") burst: Option[Long] = None,
+             @arg(doc = "burst trigger: now (default), speed:T (counts per 1024 samples), z (reference Z), position:P (counts)") trigger: String = "now",
+             @arg(doc = "burst samples before the trigger (default 0)") pre: Long = 0,
+             @arg(doc = "reference encoder counts per grating period (metadata for the ref_counts column)") refCountsPerPeriod: Option[Double] = None,
+             @arg(doc = "reference encoder counts per turn (metadata for the ref_counts column)") refCountsPerTurn: Option[Double] = None,
              @arg(doc = "milliseconds to wait for each register reply (default 500)") timeoutMs: Int = 500,
-             @arg(doc = "no progress bar") quiet: Flag = Flag()): Unit =
-    moire.stream.Recorder.run(moire.stream.RecordOptions(port, seconds, out, baud, decimation, adcClockHz, adcFormat, countsPerPeriod,
-      listenOnly.value, timeoutMs, quiet.value), println(_), System.err.println(_))
+             @arg(doc = "no progress bar") quiet: Flag = Flag()): Unit = {
+    val secs = seconds.orElse(burst.map(_ => 10.0)).getOrElse(throw new UsageError("record: give --seconds S (continuous stream) or --burst N (one full-rate burst)"))
+    val o = moire.stream.RecordOptions(port, secs, out, baud, decimation, adcClockHz, adcFormat, countsPerPeriod,
+      listenOnly.value, timeoutMs, quiet.value, refCountsPerPeriod, refCountsPerTurn)
+    burst match {
+      case Some(n) => moire.stream.BurstRecorder.run(o, moire.stream.BurstOptions(n, trigger, pre, secs), println(_), System.err.println(_))
+      case None => moire.stream.Recorder.run(o, println(_), System.err.println(_))
+    }
+  }
 
   @main(doc = "Read and write the board's registers by name (writes, then coefficients, then reads; none: read all).")
   def boardReg(@arg(doc = "serial port, e.g. /dev/ttyUSB0") port: String,

@@ -28,23 +28,25 @@ object VerilatorBuild {
   lazy val verilatorVersion: String = try os.proc("verilator", "--version").call(stderr = os.Pipe).out.text().trim
   catch { case _: Exception => throw new ReplayError("replay needs Verilator on the PATH (apt-get install verilator)") }
 
-  def key(verilog: String): String = {
+  def key(verilog: String, harness: String = harnessSource): String = {
     val md = java.security.MessageDigest.getInstance("SHA-256")
-    for (s <- Seq(verilog, harnessSource, verilatorVersion, verilatorFlags.mkString(" "), makeFlags.mkString(" ")))
+    for (s <- Seq(verilog, harness, verilatorVersion, verilatorFlags.mkString(" "), makeFlags.mkString(" ")))
       md.update((s + "\u0000").getBytes("UTF-8"))
     md.digest().take(10).map(b => f"${b & 0xff}%02x").mkString
   }
 
-  /** The harness for this Verilog (top module `top`), from the cache or built now. */
-  def harness(verilog: String, top: String, root: os.Path = cacheRoot): Harness = {
-    val dir = root / s"$top-${key(verilog)}"
+  /** The harness for this Verilog (top module `top`), from the cache or built now; `source` is the C++ harness
+    * (default: the replay harness).
+    */
+  def harness(verilog: String, top: String, root: os.Path = cacheRoot, source: String = harnessSource): Harness = {
+    val dir = root / s"$top-${key(verilog, source)}"
     val exe = dir / "harness"
     if (os.isFile(exe)) return Harness(exe, cached = true, 0.0, dir)
     val t0 = System.nanoTime()
     val tmp = root / s".${dir.last}.tmp-${ProcessHandle.current().pid()}-${System.nanoTime()}"
     os.makeDir.all(tmp)
     os.write(tmp / "top.sv", verilog)
-    os.write(tmp / "harness.cpp", harnessSource)
+    os.write(tmp / "harness.cpp", source)
     val cmd = Seq("verilator", "--cc", "top.sv", "--top-module", top, "--exe", "harness.cpp", "--build", "-j", "1",
       "-Mdir", "obj", "-o", "harness") ++ verilatorFlags ++ makeFlags.flatMap(f => Seq("-MAKEFLAGS", f))
     os.write(tmp / "build.cmd", cmd.mkString(" ") + "\n")

@@ -16,6 +16,9 @@ final class BoardClient(val link: ByteLink, timeoutMs: Int = 500, retries: Int =
   private val buf = new Array[Byte](4096)
   private var seenFrames = 0L
   def recordFramesSeen: Long = seenFrames
+  private val burstFrames = scala.collection.mutable.ArrayBuffer.empty[Frame]
+  /** Burst frames decoded while waiting for replies (they may follow a reply in the same read); taken once. */
+  def takeBurstFrames(): Vector[Frame] = { val v = burstFrames.toVector; burstFrames.clear(); v }
 
   def read(r: Reg): Long = transact(Command.read(r.addr))
   def read(addr: Int): Long = transact(Command.read(addr))
@@ -29,10 +32,15 @@ final class BoardClient(val link: ByteLink, timeoutMs: Int = 500, retries: Int =
       val until = System.nanoTime() + timeoutMs * 1000000L
       while (System.nanoTime() < until) {
         val n = link.read(buf)
-        if (n > 0) decoder.feed(buf, 0, n).foreach {
-          case r: RegisterReply if r.addr == c.addr => return r.value
-          case _: RecordFrame => seenFrames += 1
-          case _ =>
+        if (n > 0) {
+          var answer = -1L
+          decoder.feed(buf, 0, n).foreach {
+            case r: RegisterReply if r.addr == c.addr && answer < 0 => answer = r.value
+            case _: RecordFrame => seenFrames += 1
+            case b @ (_: BurstInfo | _: BurstSamples) => burstFrames += b
+            case _ =>
+          }
+          if (answer >= 0) return answer
         }
       }
       attempt += 1

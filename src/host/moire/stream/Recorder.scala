@@ -17,7 +17,9 @@ final case class RecordOptions(
   countsPerPeriod: Option[Long] = None,
   listenOnly: Boolean = false,
   timeoutMs: Int = 500,
-  quiet: Boolean = false
+  quiet: Boolean = false,
+  refCountsPerPeriod: Option[Double] = None,
+  refCountsPerTurn: Option[Double] = None
 )
 
 /** What the board told us (or the user, by hand) before recording. */
@@ -47,6 +49,9 @@ object Recorder {
     o.adcClockHz.foreach(f => if (!(f > 0) || f.isInfinite) throw new StreamError(s"--adc-clock-hz must be a positive number, got $f"))
     o.adcFormat.foreach(f => AdcFormat.parse(f).left.foreach(e => throw new StreamError(s"--adc-format: $e")))
     o.countsPerPeriod.foreach(m => if (m < 1 || m > StreamV1.MaxU32) throw new StreamError(s"--counts-per-period must be a positive u32, got $m"))
+    for ((k, v) <- Seq("--ref-counts-per-period" -> o.refCountsPerPeriod, "--ref-counts-per-turn" -> o.refCountsPerTurn); x <- v)
+      if (!(x > 0) || x.isInfinite) throw new StreamError(s"$k must be a positive number, got $x")
+    if (o.refCountsPerPeriod.isDefined && o.refCountsPerTurn.isDefined) throw new StreamError("give --ref-counts-per-period or --ref-counts-per-turn, not both")
     if (o.timeoutMs < 10 || o.timeoutMs > 60000) throw new StreamError(s"--timeout-ms must be in 10..60000, got ${o.timeoutMs}")
     if (o.listenOnly) {
       val missing = Seq("--decimation" -> o.decimation, "--adc-clock-hz" -> o.adcClockHz, "--adc-format" -> o.adcFormat,
@@ -144,9 +149,13 @@ object Recorder {
     "missing_frames" -> st.seqMissing.toString, "truncated" -> st.truncated.toString, "skipped_bytes" -> st.skippedBytes.toString,
     "port" -> o.port, "baud" -> o.baud.toString, "seconds" -> f"$elapsed%.3f",
     "setup" -> (if (s.fromBoard) "registers" else "by hand (listen-only)"),
-    "started_utc" -> java.time.Instant.now().minusMillis((elapsed * 1000).toLong).toString)
+    "started_utc" -> java.time.Instant.now().minusMillis((elapsed * 1000).toLong).toString) ++ refMeta(o)
 
-  private def num(d: Double): String = if (d == math.rint(d) && math.abs(d) < 1e15) d.toLong.toString else f"$d%.6f".reverse.dropWhile(_ == '0').reverse
+  /** Metadata naming the scale of the `ref_counts` column, as given by the user. */
+  def refMeta(o: RecordOptions): Map[String, String] =
+    o.refCountsPerPeriod.map(v => "ref_counts_per_period" -> num(v)).toMap ++ o.refCountsPerTurn.map(v => "ref_counts_per_turn" -> num(v))
+
+  def num(d: Double): String = if (d == math.rint(d) && math.abs(d) < 1e15) d.toLong.toString else f"$d%.6f".reverse.dropWhile(_ == '0').reverse
 
   /** Hunts the stream for the first record frame whose records are D apart (with n = 1: D after the previous
     * frame's record); returns the bytes after that frame.

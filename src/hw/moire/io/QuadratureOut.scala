@@ -1,0 +1,38 @@
+package moire.io
+
+import chisel3._
+import chisel3.util._
+
+/** A/B/Z outputs that follow a position one count at a time, edges at least `minEdgeClocks` apart, so a
+  * downstream quadrature counter never sees a skipped phase; Z is high while the followed position is a
+  * multiple of 2^zBits. Starts at the first valid position.
+  */
+class QuadratureOut(val width: Int, val zBits: Int, val minEdgeClocks: Int = 1) extends Module {
+  require(width >= 2 && zBits >= 2 && zBits <= width && minEdgeClocks >= 1)
+  override def desiredName: String = s"QuadratureOut_w${width}_z${zBits}_e$minEdgeClocks"
+  val io = IO(new Bundle {
+    val in = Flipped(Valid(SInt(width.W)))
+    val a = Output(Bool())
+    val b = Output(Bool())
+    val z = Output(Bool())
+    /** Counts still to be output (signed). */
+    val backlog = Output(SInt(width.W))
+  })
+  private val started = RegInit(false.B)
+  private val target = RegInit(0.S(width.W))
+  private val pos = RegInit(0.S(width.W))
+  private val holdOff = RegInit(0.U(log2Ceil(minEdgeClocks + 1).W))
+  private val pending = (target - pos)(width - 1, 0).asSInt
+  when(io.in.valid) { target := io.in.bits }
+  when(!started) {
+    when(io.in.valid) { pos := io.in.bits; started := true.B }
+  }.elsewhen(holdOff === 0.U && pending =/= 0.S) {
+    pos := (pos + Mux(pending > 0.S, 1.S, -1.S))(width - 1, 0).asSInt
+    holdOff := (minEdgeClocks - 1).U
+  }.elsewhen(holdOff =/= 0.U) { holdOff := holdOff - 1.U }
+  private val q = pos(1, 0)
+  io.a := q === 1.U || q === 2.U
+  io.b := q(1)
+  io.z := started && pos(zBits - 1, 0) === 0.U
+  io.backlog := Mux(started, pending, 0.S)
+}
