@@ -26,8 +26,8 @@ class BoardCompensatedSpec extends AnyFlatSpec with ChiselScalatestTester {
       val quad = new QuadDecoder
       b.onCycle = () => { val (a, bb, _) = b.encOut; quad.update(a, bb) }
       b.reset()
-      // two harmonics: order 1, 150 arcsec at 30 degrees; order 2, -80 arcsec at 200 degrees
-      val slots = Seq(HarmonicSlot.of(hp, 1, 150, 30), HarmonicSlot.of(hp, 2, -80, 200)) ++ Seq.fill(hp.harmonics - 2)(HarmonicSlot.off)
+      // two harmonics: order 1, 100 arcsec at 30 degrees; order 2, -60 arcsec at 200 degrees
+      val slots = Seq(HarmonicSlot.of(hp, 1, 100, 30), HarmonicSlot.of(hp, 2, -60, 200)) ++ Seq.fill(hp.harmonics - 2)(HarmonicSlot.off)
       for ((s, j) <- slots.take(2).zipWithIndex; (v, f) <- Seq(s.order.toLong, s.c & 0xFFFFFFFFL, s.phi).zipWithIndex) {
         val addr = Registers.HarmonicBase + j * hp.regsPerSlot + f
         val want = if (f == 1) java.lang.Long.valueOf(moire.cordic.Fixed.wrap(s.c, hp.coefWidth)).longValue & 0xFFFFFFFFL else v
