@@ -27,6 +27,24 @@ class RecordingSpec extends AnyFlatSpec with Matchers {
     }
   }
 
+  it should "stream a long file into arrays of the right length, with or without a samples line, CRLF and Latin-1 bytes" in {
+    val n = 200003 // more than the first block of 65536 rows: the arrays grow
+    val rnd = new scala.util.Random(5)
+    val r = Recording(1e6, Adc(12), Array.fill(n)(rnd.nextInt(4096)), Array.fill(n)(rnd.nextInt(4096)), Map.empty,
+      Map("ref_counts" -> Array.tabulate(n)(i => (i / 3).toDouble)))
+    val p = os.temp(suffix = ".csv"); Recording.write(p, r)
+    val b = Recording.read(p)
+    b.length shouldBe n; b.sin.toSeq shouldBe r.sin.toSeq; b.extra("ref_counts").toSeq shouldBe r.extra("ref_counts").toSeq
+    // another writer: CRLF line ends, no samples line, a Latin-1 micro sign in a comment
+    val text = os.read(p).linesIterator.filterNot(_.startsWith("# samples:")).toSeq
+    val bytes = (text.take(1) ++ Seq("# probe: 5 µm") ++ text.drop(1)).mkString("", "
+", "
+").getBytes("ISO-8859-1")
+    val q = os.temp(suffix = ".csv"); os.write.over(q, bytes)
+    val c = Recording.read(q)
+    c.length shouldBe n; c.cos.toSeq shouldBe r.cos.toSeq; c.meta("probe") should startWith("5 ")
+  }
+
   it should "take adc as free text and the code format from adc_format, and still read files that put the format under adc" in {
     def fmt(meta: String*): AdcFormat = Recording.parse("f.csv", good.take(3) ++ meta ++ good.drop(3)).adc.format
     fmt("# adc: AD9226") shouldBe AdcFormat.OffsetBinary

@@ -1,5 +1,7 @@
 package moire.explain
 
+import scala.jdk.CollectionConverters._
+
 import moire.recording.{Calibration, CsvText, Recording}
 import moire.signal.{Adc, AdcFormat, SignalParams}
 
@@ -148,7 +150,7 @@ object ExplainCmd {
 
   def kindOf(p: os.Path): String = {
     if (!os.isFile(p)) throw new ExplainError(s"$p: no such file")
-    val first = CsvText.lines(p).headOption.map(_.trim).getOrElse("")
+    val first = CsvText.firstLine(p).trim
     if (first == Calibration.Magic) "calibration"
     else if (first == Recording.Magic) "signals"
     else throw new ExplainError(s"$p:1: first line must be '${Recording.Magic}' or '${Calibration.Magic}', got '${first.take(40)}'")
@@ -168,10 +170,17 @@ object ExplainCmd {
     val dir = out.map(os.Path(_, os.pwd)).getOrElse(os.temp.dir(prefix = "moire-bench"))
     val file = dir / "bench.csv"
     Recording.write(file, rec)
+    val bytes = os.size(file)
+    // peak heap of the explain step alone: the generator's arrays are dropped and collected first
+    val pools = java.lang.management.ManagementFactory.getMemoryPoolMXBeans.asScala.filter(_.getType == java.lang.management.MemoryType.HEAP)
+    System.gc()
+    pools.foreach(_.resetPeakUsage())
     val t0 = System.nanoTime()
     val rep = explain(Seq(file.toString), Some((dir / "json").toString), Some((dir / "plots").toString), None, quiet = false).head
     val s = (System.nanoTime() - t0) / 1e9
-    f"explain-bench: $samples samples explained in $s%.1f s (read, fit, JSON, plots) = ${samples / s}%.0f samples/s; " +
-      s"${Runtime.getRuntime.availableProcessors} cores; findings: ${rep.findings.map(_.effect).mkString(", ")}"
+    val peakMb = pools.map(_.getPeakUsage.getUsed).sum / 1048576.0
+    val maxMb = Runtime.getRuntime.maxMemory / 1048576.0
+    f"explain-bench: $samples samples (${bytes / 1048576.0}%.0f MB file) explained in $s%.1f s (read, fit, JSON, plots) = ${samples / s}%.0f samples/s; " +
+      f"peak heap $peakMb%.0f MB of $maxMb%.0f MB; ${Runtime.getRuntime.availableProcessors} cores; findings: ${rep.findings.map(_.effect).mkString(", ")}"
   }
 }

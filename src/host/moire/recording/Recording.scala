@@ -34,30 +34,42 @@ object Recording {
     * recording; every other key (`adc`, free text naming the converter, among them) is kept as it is.
     */
   def write(path: os.Path, r: Recording): Unit = {
-    val sb = new java.lang.StringBuilder(r.length * 12 + 256)
-    sb.append(Magic).append('\n')
     val fixed = Seq("sample_rate_hz" -> fmt(r.sampleRateHz), "adc_bits" -> r.adc.bits.toString,
       "adc_format" -> r.adc.format.name, "samples" -> r.length.toString)
     val rest = r.meta.filter { case (k, _) => !fixed.exists(_._1 == k) }.toSeq.sortBy(_._1)
-    for ((k, v) <- fixed ++ rest) sb.append("# ").append(k).append(": ").append(v).append('\n')
     val cols = r.extra.keys.toSeq.sorted
-    sb.append((Seq("sin", "cos") ++ cols).mkString(",")).append('\n')
-    var i = 0
-    while (i < r.length) {
-      sb.append(r.sin(i)).append(',').append(r.cos(i))
-      cols.foreach(c => sb.append(',').append(fmt(r.extra(c)(i))))
-      sb.append('\n'); i += 1
+    val colData = cols.map(r.extra).toArray
+    // streamed row by row: a file of 20 million rows is never held as text
+    moire.files.SafeWrite(path) { tmp =>
+      val w = new java.io.BufferedWriter(new java.io.OutputStreamWriter(java.nio.file.Files.newOutputStream(tmp.toNIO), "UTF-8"), 1 << 16)
+      try {
+        w.write(Magic); w.write('\n')
+        for ((k, v) <- fixed ++ rest) { w.write("# "); w.write(k); w.write(": "); w.write(v); w.write('\n') }
+        w.write((Seq("sin", "cos") ++ cols).mkString(",")); w.write('\n')
+        val sb = new java.lang.StringBuilder(128)
+        var i = 0
+        while (i < r.length) {
+          sb.setLength(0)
+          sb.append(r.sin(i)).append(',').append(r.cos(i))
+          var c = 0
+          while (c < colData.length) { sb.append(',').append(fmt(colData(c)(i))); c += 1 }
+          sb.append('\n'); w.append(sb); i += 1
+        }
+      } finally w.close()
     }
-    moire.files.SafeWrite.text(path, sb.toString)
   }
 
   private def fmt(d: Double): String = if (d == math.rint(d) && math.abs(d) < 1e15) d.toLong.toString else d.toString
 
-  /** Reads a file; any problem is one RecordingError naming the file, the line and what is wrong. */
+  /** Reads a file, streamed line by line into primitive arrays (the text is never held whole); any problem is
+    * one RecordingError naming the file, the line and what is wrong.
+    */
   def read(path: os.Path): Recording = {
     if (!os.isFile(path)) throw new RecordingError(s"$path: no such file")
-    val lines = CsvText.lines(path)
-    parse(path.toString, lines)
+    val in = try CsvText.reader(path) catch {
+      case e: java.io.IOException => throw new RecordingError(s"$path: cannot read (${moire.files.SafeWrite.reason(e)})")
+    }
+    try parse(path.toString, CsvText.lineIterator(path, in)) finally in.close()
   }
 
   /** The code format: `adc_format` (offset-binary or twos-complement); files written before it held the
@@ -69,54 +81,74 @@ object Recording {
     case None => Right(meta.get("adc").flatMap(a => AdcFormat.parse(a).toOption).getOrElse(AdcFormat.OffsetBinary))
   }
 
-  def parse(name: String, lines: IndexedSeq[String]): Recording = {
-    def bad(line: Int, msg: String) = throw new RecordingError(s"$name:$line: $msg")
-    if (lines.isEmpty || lines.forall(_.trim.isEmpty)) bad(1, "empty file, expected '# moire-recording v1'")
-    if (lines.head.stripPrefix("\uFEFF").trim != Magic) bad(1, s"first line must be '$Magic', got '${lines.head.take(40)}'")
-    val (meta, headerAt) = CsvText.metadata(name, lines)
+  def parse(name: String, lines: IndexedSeq[String]): Recording = parse(name, lines.iterator)
+
+  /** Parses lines as they come: metadata and header first, then the rows into growing primitive arrays. */
+  def parse(name: String, lines: Iterator[String]): Recording = {
+    def bad(line: Long, msg: String) = throw new RecordingError(s"$name:$line: $msg")
+    val it = lines.buffered
+    if (!it.hasNext) bad(1, "empty file, expected '# moire-recording v1'")
+    val first = it.next()
+    if (first.stripPrefix("\uFEFF").trim != Magic)
+      bad(1, if (first.trim.isEmpty && !it.exists(_.trim.nonEmpty)) "empty file, expected '# moire-recording v1'" else s"first line must be '$Magic', got '${first.take(40)}'")
+    val (meta, headerAt) = CsvText.metadata(name, it)
     def need(k: String) = meta.getOrElse(k, bad(headerAt + 1, s"metadata '$k' is missing (a line '# $k: value' before the header)"))
     val fs = need("sample_rate_hz").toDoubleOption.filter(v => v > 0 && v <= MaxSampleRateHz)
       .getOrElse(bad(headerAt + 1, s"metadata sample_rate_hz '${meta("sample_rate_hz")}' is not a sample rate (a number above 0 and at most 1e11 Hz)"))
     val bits = need("adc_bits").toIntOption.filter(b => b >= 4 && b <= 24)
       .getOrElse(bad(headerAt + 1, s"metadata adc_bits '${meta("adc_bits")}' is not an integer in 4..24"))
     val adc = Adc(bits, format(meta).fold(e => bad(headerAt + 1, e), identity))
-    if (headerAt >= lines.length) bad(lines.length, "the header row 'sin,cos' is missing")
-    val header = lines(headerAt).split(",", -1).map(_.trim)
+    if (!it.hasNext) bad(headerAt, "the header row 'sin,cos' is missing")
+    val headerLine = it.next()
+    val header = headerLine.split(",", -1).map(_.trim)
     header.groupBy(identity).collectFirst { case (c, cs) if cs.length > 1 => bad(headerAt + 1, s"column '$c' appears ${cs.length} times in the header") }
     val si = header.indexOf("sin"); val ci = header.indexOf("cos")
-    if (si < 0 || ci < 0) bad(headerAt + 1, s"header must name columns sin and cos, got '${lines(headerAt).take(60)}'")
-    val rows = (headerAt + 1 until lines.length).filter(i => lines(i).trim.nonEmpty)
-    if (rows.isEmpty) bad(headerAt + 1, "no data rows after the header")
-    val n = rows.length
+    if (si < 0 || ci < 0) bad(headerAt + 1, s"header must name columns sin and cos, got '${headerLine.take(60)}'")
+    val extraIdx = header.indices.filter(i => i != si && i != ci).toArray
+    // the `samples` line sizes the arrays when it is there (checked against the rows at the end)
+    val expect = meta.get("samples").flatMap(_.toIntOption).filter(n => n > 0 && n < Int.MaxValue - 8)
+    var cap = expect.getOrElse(1 << 16)
+    var sin = new Array[Int](cap); var cos = new Array[Int](cap)
+    val extra = Array.fill(extraIdx.length)(new Array[Double](cap))
+    val maxCode = (1 << bits) - 1
+    var n = 0
+    var ln = headerAt + 1L
+    while (it.hasNext) {
+      val line = it.next(); ln += 1
+      if (line.trim.nonEmpty) {
+        if (n == cap) {
+          if (cap >= Int.MaxValue / 2) bad(ln, s"more than $cap rows: too long for one recording")
+          cap *= 2
+          sin = java.util.Arrays.copyOf(sin, cap); cos = java.util.Arrays.copyOf(cos, cap)
+          var e = 0
+          while (e < extra.length) { extra(e) = java.util.Arrays.copyOf(extra(e), cap); e += 1 }
+        }
+        val cells = line.split(",", -1)
+        if (cells.length != header.length) bad(ln, s"${cells.length} cells, the header has ${header.length}")
+        def code(c: Int, col: String): Int = {
+          val v = cells(c).trim.toIntOption.getOrElse(bad(ln, s"$col '${cells(c).trim}' is not an integer ADC code"))
+          if (v < 0 || v > maxCode) bad(ln, s"$col code $v is outside the $bits-bit ADC range 0..$maxCode")
+          v
+        }
+        sin(n) = code(si, "sin"); cos(n) = code(ci, "cos")
+        var e = 0
+        while (e < extraIdx.length) {
+          val c = extraIdx(e)
+          extra(e)(n) = cells(c).trim.toDoubleOption.filter(v => !v.isNaN && !v.isInfinite)
+            .getOrElse(bad(ln, s"${header(c)} '${cells(c).trim}' is not a finite number"))
+          e += 1
+        }
+        n += 1
+      }
+    }
+    if (n == 0) bad(headerAt + 1, "no data rows after the header")
     meta.get("samples").foreach { s =>
       if (!s.toLongOption.contains(n.toLong))
-        bad(lines.length, s"metadata samples says '$s' but the file has $n data rows: a truncated or edited file")
+        bad(ln, s"metadata samples says '$s' but the file has $n data rows: a truncated or edited file")
     }
-    val sin = new Array[Int](n); val cos = new Array[Int](n)
-    val extraIdx = header.indices.filter(i => i != si && i != ci)
-    val extra = extraIdx.map(_ => new Array[Double](n))
-    val maxCode = (1 << bits) - 1
-    var r = 0
-    while (r < n) {
-      val ln = rows(r) + 1
-      val cells = lines(rows(r)).split(",", -1)
-      if (cells.length != header.length) bad(ln, s"${cells.length} cells, the header has ${header.length}")
-      def code(c: Int, col: String): Int = {
-        val v = cells(c).trim.toIntOption.getOrElse(bad(ln, s"$col '${cells(c).trim}' is not an integer ADC code"))
-        if (v < 0 || v > maxCode) bad(ln, s"$col code $v is outside the $bits-bit ADC range 0..$maxCode")
-        v
-      }
-      sin(r) = code(si, "sin"); cos(r) = code(ci, "cos")
-      var e = 0
-      while (e < extraIdx.length) {
-        val c = extraIdx(e)
-        extra(e)(r) = cells(c).trim.toDoubleOption.filter(v => !v.isNaN && !v.isInfinite)
-          .getOrElse(bad(ln, s"${header(c)} '${cells(c).trim}' is not a finite number"))
-        e += 1
-      }
-      r += 1
-    }
-    Recording(fs, adc, sin, cos, meta, extraIdx.zip(extra).map { case (c, a) => header(c) -> a }.toMap)
+    def trim[A](a: Array[A], copy: (Array[A], Int) => Array[A]): Array[A] = if (a.length == n) a else copy(a, n)
+    Recording(fs, adc, trim[Int](sin, (a, k) => java.util.Arrays.copyOf(a, k)), trim[Int](cos, (a, k) => java.util.Arrays.copyOf(a, k)), meta,
+      extraIdx.indices.map(e => header(extraIdx(e)) -> trim[Double](extra(e), (a, k) => java.util.Arrays.copyOf(a, k))).toMap)
   }
 }
 
@@ -127,14 +159,47 @@ object CsvText {
     text.stripPrefix("\uFEFF").split("\r?\n", -1).toIndexedSeq match { case s if s.nonEmpty && s.last.isEmpty => s.init; case s => s }
   }
 
-  /** `# key: value` lines after the first; returns the map and the index of the first other line. */
-  def metadata(name: String, lines: IndexedSeq[String]): (Map[String, String], Int) = {
+  /** A UTF-8 reader of a file; bytes that are not UTF-8 (a Latin-1 comment) become U+FFFD, never an error. */
+  def reader(path: os.Path): java.io.BufferedReader =
+    new java.io.BufferedReader(new java.io.InputStreamReader(java.nio.file.Files.newInputStream(path.toNIO), java.nio.charset.StandardCharsets.UTF_8), 1 << 16)
+
+  /** The first line of a file ("" when empty), without reading the rest; a byte-order mark dropped. */
+  def firstLine(path: os.Path): String = {
+    val in = try CsvText.reader(path) catch {
+      case e: java.io.IOException => throw new RecordingError(s"$path: cannot read (${moire.files.SafeWrite.reason(e)})")
+    }
+    try lineIterator(path, in).nextOption().getOrElse("") finally in.close()
+  }
+
+  /** The lines of an open reader (a byte-order mark dropped, CRLF or LF), read as they are asked for; a read
+    * error is a RecordingError naming the file.
+    */
+  def lineIterator(path: os.Path, in: java.io.BufferedReader): Iterator[String] = new Iterator[String] {
+    private var first = true
+    private var nextLine: String = read()
+    private def read(): String = try in.readLine() catch {
+      case e: java.io.IOException => throw new RecordingError(s"$path: cannot read (${moire.files.SafeWrite.reason(e)})")
+    }
+    def hasNext: Boolean = nextLine != null
+    def next(): String = {
+      val l = if (first) nextLine.stripPrefix("\uFEFF") else nextLine
+      first = false
+      nextLine = read()
+      l
+    }
+  }
+
+  /** `# key: value` lines after the first, taken from `it` (which is left at the first other line); returns
+    * the map and the index (0-based line number) of that line.
+    */
+  def metadata(name: String, it: scala.collection.BufferedIterator[String]): (Map[String, String], Int) = {
     var i = 1; val m = scala.collection.mutable.LinkedHashMap.empty[String, String]
-    while (i < lines.length && (lines(i).startsWith("#") || lines(i).trim.isEmpty)) {
-      val body = lines(i).stripPrefix("#").trim
+    while (it.hasNext && (it.head.startsWith("#") || it.head.trim.isEmpty)) {
+      val line = it.next()
+      val body = line.stripPrefix("#").trim
       if (body.nonEmpty) {
         val at = body.indexOf(':')
-        if (at <= 0) throw new RecordingError(s"$name:${i + 1}: metadata line must be '# key: value', got '${lines(i).take(60)}'")
+        if (at <= 0) throw new RecordingError(s"$name:${i + 1}: metadata line must be '# key: value', got '${line.take(60)}'")
         val key = body.substring(0, at).trim
         if (m.contains(key)) throw new RecordingError(s"$name:${i + 1}: metadata key '$key' appears twice")
         m(key) = body.substring(at + 1).trim

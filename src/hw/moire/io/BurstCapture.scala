@@ -13,8 +13,10 @@ case class BurstParams(samples: Int = 65536) {
   val addrBits: Int = log2Ceil(samples)
   /** Bits of a length or pre-trigger count (0..samples). */
   val countBits: Int = log2Ceil(samples + 1)
-  /** Clocks from a sample at `in` to its write into the RAM (one input register). */
-  val latency: Int = 1
+  /** Clocks from a sample at `in` to its write into the RAM (an input register, then a registered write port:
+    * address, data and enable are registered in front of the block RAMs, whose write enables fan out widely).
+    */
+  val latency: Int = 2
   def moduleName: String = s"BurstCapture_n$samples"
   /** A requested length (a register's u32) as used: 1..samples. */
   def length(requested: Long): Int = math.min(math.max(requested, 1L), samples.toLong).toInt
@@ -117,6 +119,10 @@ class BurstCapture(val p: BurstParams) extends Module {
   }
 
   private val capturing = state === BurstState.Waiting.U || state === BurstState.Capturing.U
+  private val wEn = RegNext(false.B, false.B)
+  private val wAddr = Reg(UInt(p.addrBits.W))
+  private val wData = Reg(UInt(BurstLayout.width.W))
+  when(wEn) { mem.write(wAddr, wData) }
   private val arm = io.arm && !sending
   when(arm) {
     val l = Mux(io.config.length === 0.U, 1.U, Mux(io.config.length > p.samples.U, p.samples.U, io.config.length))
@@ -128,7 +134,7 @@ class BurstCapture(val p: BurstParams) extends Module {
   }.elsewhen(s.valid) {
     prevValid := true.B; prevAbove := above; prevBelow := below; prevZ := z
     when(capturing) {
-      mem.write(wptr, s.bits.word)
+      wEn := true.B; wAddr := wptr; wData := s.bits.word
       wptr := Mux(wptr === len - 1.U, 0.U, wptr + 1.U)
       held := Mux(held === len, held, held + 1.U)
       val start = state === BurstState.Waiting.U && held >= pre && fired
@@ -142,15 +148,19 @@ class BurstCapture(val p: BurstParams) extends Module {
     }
   }
 
-  // ---- read-out: oldest first (the ring is full when Done, so the oldest is at wptr) ----
-  private val q = Module(new Queue(UInt(BurstLayout.width.W), 2))
+  // ---- read-out: oldest first (the ring is full when Done, so the oldest is at wptr); the RAM's output is
+  // registered once more before the queue (the read mux across the block RAMs), so two reads are in flight ----
+  private val q = Module(new Queue(UInt(BurstLayout.width.W), 3))
   private val raddr = RegInit(0.U(p.addrBits.W))
   private val issued = RegInit(0.U(p.countBits.W))
-  private val inflight = RegInit(false.B)
-  private val issue = sending && issued =/= len && (q.io.count +& inflight.asUInt) < 2.U
-  inflight := issue
-  q.io.enq.valid := inflight
-  q.io.enq.bits := mem.read(raddr, issue)
+  private val read1 = RegInit(false.B)
+  private val read2 = RegInit(false.B)
+  private val issue = sending && issued =/= len && (q.io.count +& read1.asUInt +& read2.asUInt) < 3.U
+  read1 := issue
+  read2 := read1
+  private val inflight = read1 || read2
+  q.io.enq.valid := read2
+  q.io.enq.bits := RegNext(mem.read(raddr, issue))
   io.out <> q.io.deq
   when(io.read && state === BurstState.Done.U && !sending) {
     sending := true.B; raddr := wptr; issued := 0.U
