@@ -10,7 +10,10 @@ ThisBuild / dependencyOverrides += "org.chipsalliance" %% "chisel" % chiselVersi
 
 lazy val common = Seq(
   addCompilerPlugin("org.chipsalliance" % "chisel-plugin" % chiselVersion cross CrossVersion.full),
-  scalacOptions ++= Seq("-deprecation", "-feature", "-unchecked", "-language:reflectiveCalls", "-Ymacro-annotations")
+  scalacOptions ++= Seq("-deprecation", "-feature", "-unchecked", "-language:reflectiveCalls", "-Ymacro-annotations"),
+  // no Scaladoc jars: `stage` would build them for nothing
+  Compile / doc / sources := Nil,
+  Compile / packageDoc / publishArtifact := false
 )
 
 /** A layer whose Scala lives in `dir` (no test sources of its own: tests are in the root project). */
@@ -62,6 +65,7 @@ lazy val cli = layer("cli", "src/cli").dependsOn(host).settings(
 lazy val root = (project in file("."))
   .aggregate(hw, boards, host, cli)
   .dependsOn(cli)
+  .enablePlugins(JavaAppPackaging)
   .settings(common)
   .settings(
     name := "moire",
@@ -93,5 +97,10 @@ lazy val root = (project in file("."))
     },
     Test / parallelExecution := true,
     // sbt's default restrictions allow one forked group at a time; replace them.
-    Global / concurrentRestrictions := Seq(Tags.limitAll(2), Tags.limit(Tags.ForkedTestGroup, 2), Tags.exclusiveGroup(Tags.Clean))
+    Global / concurrentRestrictions := Seq(Tags.limitAll(2), Tags.limit(Tags.ForkedTestGroup, 2), Tags.exclusiveGroup(Tags.Clean)),
+    // `./sbt stage`: target/universal/stage/bin/moire runs the cli without sbt (the JVM options of `run`).
+    executableScriptName := "moire",
+    Universal / javaOptions ++= (run / javaOptions).value.map("-J" + _),
+    // the layers' own launchers are not wanted: stage the root only
+    stage / aggregate := false
   )

@@ -80,7 +80,7 @@ final case class BoardParams(
   /** The subdivider that makes the position (its counts M, position width). */
   val datapathSubdiv: SubdivParams = if (design == BoardDesign.Subdiv) subdiv else correctedParams.subdiv
   /** Clocks from the captured ADC word (input register) to the datapath output. */
-  val datapathLatency: Int = if (design == BoardDesign.Subdiv) 1 + subdiv.latency else correctedParams.latency
+  val datapathLatency: Int = if (design == BoardDesign.Subdiv) moire.subdiv.SubdivAdc.latency(subdiv) else correctedParams.latency
   /** AD9226 pipeline: a sample's word appears on the pins 7 ADC clocks after the edge that took it. */
   val adcPipeline: Int = 7
   /** Records per second at the default decimation. */

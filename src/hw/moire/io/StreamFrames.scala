@@ -33,6 +33,7 @@ class FrameTx(val n: Int, val countWidth: Int) extends Module {
 
   private val bodyEnd = Mux(isReply, (ReplyBytes - CrcBytes).U, (recordFrameBytes(n) - CrcBytes).U) // first CRC byte
   private val startRec = !busy && !io.reply.valid && io.recordCount >= n.U
+  moire.emit.Unused("record_count", io.recordCount) // compared with n: firtool reads only the bits that decide
   private val startReply = !busy && io.reply.valid
   io.reply.ready := !busy
   private val dropNow = io.dropped && droppedCnt =/= MaxDropped.U
