@@ -101,6 +101,21 @@ lazy val root = (project in file("."))
     // `./sbt stage`: target/universal/stage/bin/moire runs the cli without sbt (the JVM options of `run`).
     executableScriptName := "moire",
     Universal / javaOptions ++= (run / javaOptions).value.map("-J" + _),
+    // A quick start: no second JVM for the launcher's Java version check; the classes a start loads from
+    // a CDS archive (lib/moire.jsa, written by `stage`); `--help` stops at the first JIT tier.
+    bashScriptExtraDefines ++= Seq(
+      "no_version_check=1",
+      """[[ -f "$lib_dir/moire.jsa" ]] && addJava "-XX:SharedArchiveFile=$lib_dir/moire.jsa"""",
+      """case " $* " in *" --help "*) addJava "-XX:TieredStopAtLevel=1"; addJava "-XX:+UseSerialGC";; esac"""),
+    stage := {
+      val dir = stage.value
+      val jsa = dir / "lib" / "moire.jsa"
+      IO.delete(jsa)
+      val code = scala.sys.process.Process(Seq((dir / "bin" / "moire").getPath, "--help"), None,
+        "JAVA_OPTS" -> s"-XX:ArchiveClassesAtExit=$jsa").!(scala.sys.process.ProcessLogger(_ => ()))
+      streams.value.log.info(if (code == 0 && jsa.exists) s"wrote $jsa (class data sharing: a faster start)" else s"no $jsa (exit $code); the launcher starts without it")
+      dir
+    },
     // the layers' own launchers are not wanted: stage the root only
     stage / aggregate := false
   )
