@@ -45,7 +45,8 @@ object Emit {
       ChiselStage.emitSystemVerilogFile({ val m = gen; top = Some(m); m },
         Array("--target-dir", tmp.toString, "--split-verilog"), target.opts)
       val first = s"${top.get.desiredName}.sv"
-      val files = os.walk(tmp).filter(f => os.isFile(f) && Seq("sv", "v", "svh").contains(f.ext))
+      // Verilog files that hold a module (not firtool's extern_modules.sv, macro definitions only)
+      val files = os.walk(tmp).filter(f => os.isFile(f) && Seq("sv", "v").contains(f.ext) && """(?m)^\s*module\s""".r.findFirstIn(os.read(f)).nonEmpty)
       os.makeDir.all(dir)
       (top.get, files.sortBy(f => (f.last != first, f.last)).map { f => val d = dir / f.last; os.copy.over(f, d); d })
     } finally os.remove.all(tmp)
