@@ -10,7 +10,10 @@ ThisBuild / dependencyOverrides += "org.chipsalliance" %% "chisel" % chiselVersi
 
 lazy val common = Seq(
   addCompilerPlugin("org.chipsalliance" % "chisel-plugin" % chiselVersion cross CrossVersion.full),
-  scalacOptions ++= Seq("-deprecation", "-feature", "-unchecked", "-language:reflectiveCalls", "-Ymacro-annotations")
+  scalacOptions ++= Seq("-deprecation", "-feature", "-unchecked", "-language:reflectiveCalls", "-Ymacro-annotations"),
+  // no Scaladoc jars: `stage` would build them for nothing
+  Compile / doc / sources := Nil,
+  Compile / packageDoc / publishArtifact := false
 )
 
 /** A layer whose Scala lives in `dir` (no test sources of its own: tests are in the root project). */
@@ -62,6 +65,7 @@ lazy val cli = layer("cli", "src/cli").dependsOn(host).settings(
 lazy val root = (project in file("."))
   .aggregate(hw, boards, host, cli)
   .dependsOn(cli)
+  .enablePlugins(JavaAppPackaging)
   .settings(common)
   .settings(
     name := "moire",
@@ -93,5 +97,25 @@ lazy val root = (project in file("."))
     },
     Test / parallelExecution := true,
     // sbt's default restrictions allow one forked group at a time; replace them.
-    Global / concurrentRestrictions := Seq(Tags.limitAll(2), Tags.limit(Tags.ForkedTestGroup, 2), Tags.exclusiveGroup(Tags.Clean))
+    Global / concurrentRestrictions := Seq(Tags.limitAll(2), Tags.limit(Tags.ForkedTestGroup, 2), Tags.exclusiveGroup(Tags.Clean)),
+    // `./sbt stage`: target/universal/stage/bin/moire runs the cli without sbt (the JVM options of `run`).
+    executableScriptName := "moire",
+    Universal / javaOptions ++= (run / javaOptions).value.map("-J" + _),
+    // A quick start: no second JVM for the launcher's Java version check; the classes a start loads from
+    // a CDS archive (lib/moire.jsa, written by `stage`); `--help` stops at the first JIT tier.
+    bashScriptExtraDefines ++= Seq(
+      "no_version_check=1",
+      """[[ -f "$lib_dir/moire.jsa" ]] && addJava "-XX:SharedArchiveFile=$lib_dir/moire.jsa"""",
+      """case " $* " in *" --help "*) addJava "-XX:TieredStopAtLevel=1"; addJava "-XX:+UseSerialGC";; esac"""),
+    stage := {
+      val dir = stage.value
+      val jsa = dir / "lib" / "moire.jsa"
+      IO.delete(jsa)
+      val code = scala.sys.process.Process(Seq((dir / "bin" / "moire").getPath, "--help"), None,
+        "JAVA_OPTS" -> s"-XX:ArchiveClassesAtExit=$jsa").!(scala.sys.process.ProcessLogger(_ => ()))
+      streams.value.log.info(if (code == 0 && jsa.exists) s"wrote $jsa (class data sharing: a faster start)" else s"no $jsa (exit $code); the launcher starts without it")
+      dir
+    },
+    // the layers' own launchers are not wanted: stage the root only
+    stage / aggregate := false
   )

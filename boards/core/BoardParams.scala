@@ -93,9 +93,9 @@ final case class BoardParams(
   val harmonicParams: moire.harmonic.HarmonicParams = harmonic.copy(subdivision = subdiv.counts)
   /** Clocks from the captured ADC word (input register) to the datapath output. */
   val datapathLatency: Int = design match {
-    case BoardDesign.Subdiv => 1 + subdiv.latency
+    case BoardDesign.Subdiv => moire.subdiv.SubdivAdc.latency(subdiv)
     case BoardDesign.Corrected => correctedParams.latency
-    case BoardDesign.Compensated => 1 + subdiv.latency + harmonicParams.latency
+    case BoardDesign.Compensated => moire.subdiv.SubdivAdc.latency(subdiv) + harmonicParams.latency
   }
   /** AD9226 pipeline: a sample's word appears on the pins 7 ADC clocks after the edge that took it. */
   val adcPipeline: Int = 7

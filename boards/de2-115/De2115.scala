@@ -2,9 +2,8 @@ package moire.board.de2115
 
 import chisel3.RawModule
 import moire.board.BoardParams
-import moire.emit.{Emit, Target}
 
-/** Elaboration, Verilog emission and the Quartus project of the DE2-115 board in one place. */
+/** The DE2-115 board's top and its Quartus project (the Verilog comes from the design registry, moire.designs). */
 object De2115 {
   /** CLOCK_50, the only system clock of this board. */
   val clockHz: Int = 50000000
@@ -13,16 +12,13 @@ object De2115 {
 
   def top(p: BoardParams): RawModule = new De2115Top(p)
 
-  /** Writes the SystemVerilog of the board (and the PLL Verilog when used) into `dir`; returns the
-    * Verilog files (top first).
-    */
-  def emitVerilog(p: BoardParams, dir: os.Path): Seq[os.Path] = Emit.write(top(p), dir, Target.Verilog)._2
+  /** Where [[writeProject]] expects the board's Verilog: `dir/rtl`. */
+  def rtlDir(dir: os.Path): os.Path = dir / "rtl"
 
-  /** Writes a complete Quartus project into `dir`: Verilog, .qsf, .sdc, .qpf and flash.sh. */
-  def writeProject(p: BoardParams, dir: os.Path): Seq[os.Path] = {
-    val rtl = dir / "rtl"
-    if (os.exists(rtl)) os.remove.all(rtl)
-    val verilog = emitVerilog(p, rtl)
+  /** Writes the Quartus project into `dir` around the board's Verilog files (already written into
+    * [[rtlDir]], top first): .qsf, .sdc, .qpf and flash.sh. Returns every file, the Verilog first.
+    */
+  def writeProject(p: BoardParams, dir: os.Path, verilog: Seq[os.Path]): Seq[os.Path] = {
     val files = Seq(
       dir / s"$projectName.qpf" -> QuartusProject.qpf(p),
       dir / s"$projectName.qsf" -> QuartusProject.qsf(p, verilog.map(_.relativeTo(dir).toString)),

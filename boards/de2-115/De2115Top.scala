@@ -25,6 +25,7 @@ class De2115Top(val p: BoardParams) extends RawModule {
     case ClockSource.Logic => (CLOCK_50, CLOCK_50, true.B)
   }
   private val reset = withClock(sysClk)(BoardReset(!pins.KEY(0), locked))
+  moire.emit.Unused("keys", pins.KEY(3, 1)) // KEY[3:1] are spare buttons
   private val core = withClockAndReset(sysClk, reset) { Module(new BoardCore(p)) }
   core.io.pins <> pins.viewAsSupertype(new AdcEncoderPins)
   pins.UART_TXD := core.io.txd

@@ -2,9 +2,8 @@ package moire.board.ulx3s
 
 import chisel3.RawModule
 import moire.board.BoardParams
-import moire.emit.{Emit, Target}
 
-/** Elaboration, Verilog emission, the .lpf and the open-flow build script of the ULX3S in one place. */
+/** The ULX3S top, its .lpf and the open-flow build script (the Verilog comes from the design registry, moire.designs). */
 object Ulx3s {
   val oscillatorHz: Int = 25000000
   val projectName: String = "moire_ulx3s"
@@ -16,9 +15,8 @@ object Ulx3s {
 
   def top(p: BoardParams): RawModule = new Ulx3sTop(p)
 
-  /** Writes the Verilog of the board (and the PLL wrapper when used) into `dir`; returns the files, top first. */
-  def emitVerilog(p: BoardParams, dir: os.Path): Seq[os.Path] = Emit.write(top(p), dir, Target.Verilog)._2
-
+  /** Where [[writeProject]] expects the board's Verilog: `dir/rtl`. */
+  def rtlDir(dir: os.Path): os.Path = dir / "rtl"
   /** The build script [[writeProject]] writes into `dir`. */
   def buildScript(dir: os.Path): os.Path = dir / "build.sh"
   /** The bitstream the build script makes in `dir`. */
@@ -26,13 +24,10 @@ object Ulx3s {
   /** nextpnr's report (Fmax per clock, utilisation) after a build in `dir`. */
   def report(dir: os.Path): os.Path = dir / "report.json"
 
-  /** Writes the project into `dir`: rtl/ (Verilog), moire_ulx3s.lpf, build.sh and ecp5-tools.sh.
-    * Returns the files written, Verilog first.
+  /** Writes the project into `dir` around the board's Verilog files (already written into [[rtlDir]],
+    * top first): moire_ulx3s.lpf, build.sh and ecp5-tools.sh. Returns every file, the Verilog first.
     */
-  def writeProject(p: BoardParams, dir: os.Path): Seq[os.Path] = {
-    val rtl = dir / "rtl"
-    if (os.exists(rtl)) os.remove.all(rtl)
-    val verilog = emitVerilog(p, rtl)
+  def writeProject(p: BoardParams, dir: os.Path, verilog: Seq[os.Path]): Seq[os.Path] = {
     val files = Seq(
       dir / s"$projectName.lpf" -> Ulx3sProject.lpf(p),
       buildScript(dir) -> Ulx3sProject.build(p, verilog.map(_.relativeTo(dir).toString)),

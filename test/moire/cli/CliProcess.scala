@@ -11,9 +11,12 @@ object CliProcess {
   def run(args: String*): (Int, String, String) = runWith(Nil)(args: _*)
 
   /** As `run`, with extra JVM options (e.g. -Dkey=value). */
-  def runWith(jvmOpts: Seq[String])(args: String*): (Int, String, String) = {
+  def runWith(jvmOpts: Seq[String])(args: String*): (Int, String, String) = runIn(jvmOpts, os.pwd)(args: _*)
+
+  /** As `runWith`, in the working folder `cwd`. */
+  def runIn(jvmOpts: Seq[String], cwd: os.Path)(args: String*): (Int, String, String) = {
     val out = new StringBuilder; val err = new StringBuilder
-    val code = Process(Seq(javaBin, "-Xmx2g") ++ jvmOpts ++ Seq("-cp", cp, "moire.cli.Main") ++ args)
+    val code = Process(Seq(javaBin, "-Xmx2g") ++ jvmOpts ++ Seq("-cp", cp, "moire.cli.Main") ++ args, cwd.toIO)
       .!(ProcessLogger(l => out.append(l).append('\n'), l => err.append(l).append('\n')))
     (code, out.toString, err.toString)
   }

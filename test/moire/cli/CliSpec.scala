@@ -50,4 +50,18 @@ class CliSpec extends AnyFlatSpec {
     assert(os.read(sv.head).contains("module Cordic_asin_double_n12_w16f14_a16_g0z5_k1_rne("))
     assert(out.contains("latency 14 clocks"))
   }
+
+  "No arguments" should "write the DE2-115 project of the subdivider into generated/ and name the next command" in {
+    val cwd = os.temp.dir(prefix = "moire-noargs-")
+    try {
+      val (code, out, err) = moire.cli.CliProcess.runIn(Nil, cwd)()
+      assert(code == 0, err)
+      val dir = cwd / "generated" / "de2-115"
+      val top = moire.board.de2115.De2115.topName(moire.board.BoardParams())
+      assert(top.startsWith("De2115_subdiv_"), top)
+      for (f <- Seq(dir / "moire_de2_115.qsf", dir / "moire_de2_115.qpf", dir / "moire_de2_115.sdc", dir / "flash.sh", dir / "rtl" / s"$top.sv"))
+        assert(os.isFile(f) && out.linesIterator.contains(s"wrote $f"), s"$f missing or not reported:\n$out")
+      assert(out.linesIterator.exists(_.startsWith(s"next: ${dir / "flash.sh"}")), out)
+    } finally os.remove.all(cwd)
+  }
 }

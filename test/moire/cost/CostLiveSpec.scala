@@ -10,7 +10,7 @@ class CostLiveSpec extends AnyFlatSpec with Matchers {
   private def measure(p: CordicParams): CostReport = {
     assume(Yosys.available, "yosys not installed")
     val work = os.temp.dir(prefix = "moire-cost-test-")
-    try Cost.measure(CostDesigns.find("cordic").toOption.get, p, work, 300, _ => ())
+    try Cost.measure(moire.designs.Designs.cordic(p), Some(p), work, 300, _ => ())
     finally os.remove.all(work)
   }
 
@@ -64,8 +64,8 @@ class CostLiveSpec extends AnyFlatSpec with Matchers {
     assume(Yosys.available, "yosys not installed")
     val work = os.temp.dir(prefix = "moire-cost-test-")
     val inner = cordic(4, 8)
-    val pair = CostDesign("pair", "two CORDICs", _ => new TwoCordics(inner), _ => None)
-    val r = try Cost.measure(pair, inner, work, 300, _ => ()) finally os.remove.all(work)
+    val pair = new moire.designs.Design("pair", "two CORDICs", () => new TwoCordics(inner))
+    val r = try Cost.measure(pair, None, work, 300, _ => ()) finally os.remove.all(work)
     val cm = r.synth.modules.find(_.name == inner.moduleName).get
     r.synth.modules.map(_.name) should contain allOf ("TwoCordics", inner.moduleName)
     r.registers should be >= 2 * cm.registers

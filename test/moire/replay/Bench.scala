@@ -47,7 +47,7 @@ object Bench {
     def cpuNow = threads.getCurrentThreadCpuTime / 1e9
     var ctLoop = 0.0; var ctCpu = 0.0; var sink = 0L
     val tc = System.nanoTime()
-    RawTester.test(new SubdivAdc(p, fmt), annos) { dut =>
+    RawTester.test(d.gen().asInstanceOf[SubdivAdc], annos) { dut => // the registry's design, typed for peek and poke
       dut.io.in.valid.poke(true.B); dut.io.clearStatus.poke(false.B)
       val t0 = System.nanoTime(); val c0 = cpuNow
       var i = 0

@@ -37,7 +37,7 @@ class SubdivRtlSpec extends AnyFlatSpec with ChiselScalatestTester {
     var checked = 0
     val seen = scala.collection.mutable.Set[String]()
     test(new SubdivBank(configs)).withAnnotations(SimSupport.backend) { dut =>
-      assert(dut.latencies.zip(configs).forall { case (l, c) => l == c._1.latency + 1 })
+      assert(dut.latencies.zip(configs).forall { case (l, c) => l == SubdivAdc.latency(c._1) })
       val cycles = stims.map(_.size).max + dut.latencies.max + 40
       for (t <- 0 until cycles; k <- configs.indices) {
         val st = stims(k)

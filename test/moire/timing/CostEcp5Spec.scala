@@ -1,7 +1,8 @@
 package moire.timing
 
 import moire.cordic.{CordicMode, CordicParams}
-import moire.cost.{Cost, CostDesigns, Synth, Yosys}
+import moire.cost.{Cost, Synth, Yosys}
+import moire.designs.Designs
 import org.scalatest.flatspec.AnyFlatSpec
 import org.scalatest.matchers.should.Matchers
 
@@ -17,15 +18,15 @@ class CostEcp5Spec extends AnyFlatSpec with Matchers {
     s"cost's multiplier count of $name" should "match the ECP5 flow's" in {
       assume(Yosys.available, "yosys not installed")
       val tools = Ecp5Tools.find.getOrElse(cancel(s"ECP5 tools not installed: ${Ecp5Tools.installHint}"))
-      val d = CostDesigns.find(name).toOption.get
+      val d = Designs.find(name, p).toOption.get
       val work = os.temp.dir(prefix = "moire-cost-ecp5-")
       val cost = try {
-        val (top, files) = Synth.emit(() => d.gen(p), work / "rtl")
+        val (top, files) = Synth.emit(d.gen, work / "rtl")
         val short = Yosys.multipliers(top, files, work / "mul", 1800)
-        if (name == "subdiv") Cost.measure(d, p, work / "full", 1800, _ => ()).synth.multipliers shouldBe short
+        if (name == "subdiv") Cost.measure(d, None, work / "full", 1800, _ => ()).synth.multipliers shouldBe short
         short
       } finally os.remove.all(work)
-      val ecp5 = Timing.multipliers(tools, TimingDesigns.gen(d, p), TimingOptions(), _ => ())
+      val ecp5 = Timing.multipliers(tools, d.place, TimingOptions(), _ => ())
       ecp5 should be > 0L
       cost shouldBe ecp5
     }

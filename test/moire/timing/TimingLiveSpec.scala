@@ -1,6 +1,5 @@
 package moire.timing
 
-import moire.cost.CostDesigns
 import org.scalatest.flatspec.AnyFlatSpec
 import org.scalatest.matchers.should.Matchers
 
@@ -11,8 +10,7 @@ class TimingLiveSpec extends AnyFlatSpec with Matchers {
   private def tools: Ecp5Tools = Ecp5Tools.find.getOrElse(cancel(s"ECP5 tools not installed: ${Ecp5Tools.installHint}"))
   private lazy val cache = os.temp.dir(prefix = "moire-timing-cache-")
   private lazy val opts = TimingOptions(speeds = Seq(6), cache = cache)
-  private val subdiv = CostDesigns.find("subdiv").toOption.get
-  private val gen = TimingDesigns.gen(subdiv, moire.cordic.CordicParams(moire.cordic.CordicMode.SinCos, 16, 18))
+  private val gen = moire.designs.Designs.find("subdiv").toOption.get.place
   private lazy val first = Timing.run(tools, "subdiv", gen, opts, _ => ())
 
   "timing" should "place the subdivider at speed grade 6 at or above 65 MHz" in {

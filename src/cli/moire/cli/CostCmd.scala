@@ -1,18 +1,19 @@
 package moire.cli
 
 import moire.cost._
+import moire.designs.Designs
 
 /** `cost`: yosys logic cells, memory bits, multipliers and longest path of a design. */
 object CostCmd {
   private def log(s: String): Unit = System.err.println(s"cost: $s")
 
   def run(config: CordicConfig, design: String, json: Option[String], timeout: Int, keep: Option[String]): Unit = {
-    val d = CostDesigns.find(design).fold(e => throw new UsageError(e), identity)
     val p = config.params
+    val d = Designs.find(design, p).fold(e => throw new UsageError(e), identity)
     if (timeout < 1) throw new UsageError(s"--timeout must be at least 1 second, got $timeout")
     if (!Yosys.available) throw new UsageError("yosys not found on PATH (install yosys 0.23 or newer)")
     val work = keep.map(k => os.Path(k, os.pwd)).getOrElse(Cost.tempDir())
-    val r = try Cost.measure(d, p, work, timeout, log)
+    val r = try Cost.measure(d, if (d.name == "cordic") Some(p) else None, work, timeout, log)
     catch { case e: YosysError => throw new UsageError(e.getMessage) }
     finally if (keep.isEmpty) os.remove.all(work)
     print(r.text)

@@ -1,24 +1,21 @@
 package moire.cli
 
-import chisel3.RawModule
-import moire.emit.{Emit, Target}
-import moire.adapt.{AdaptParams, AdaptiveCorrector}
-import moire.chain.{CorrectedSubdivParams, CorrectedSubdivider}
-import moire.quadcomp.{QuadComp, QuadCompParams}
+import moire.designs.Designs
+import moire.emit.Target
 
-/** `emit-datapath`: the SystemVerilog of a datapath at its default parameters. */
+/** `emit-datapath` and `designs`: any design of the registry ([[moire.designs.Designs]]) at its defaults. */
 object DatapathCmd {
-  final case class Design(name: String, what: String, latency: Int, gen: () => RawModule)
-  val designs: Seq[Design] = Seq(
-    Design("quadcomp", "quadrature-error compensation (seed 000)", QuadCompParams().latency, () => new QuadComp(QuadCompParams())),
-    Design("adapt", "adaptive offset/gain/phase/harmonic corrector", AdaptParams().latency, () => new AdaptiveCorrector(AdaptParams())),
-    Design("corrected", "ADC front end + adaptive corrector + subdivider (M = 1024)", CorrectedSubdivParams().latency,
-      () => new CorrectedSubdivider(CorrectedSubdivParams())))
+  /** Writes the design's SystemVerilog into `out`; returns the line to print. */
+  def run(design: String, out: String): String = {
+    val d = Designs.find(design).fold(e => throw new UsageError(e), identity)
+    val file = d.write(os.Path(out, os.pwd), Target.SystemVerilog).head
+    s"wrote $file (${d.describe})"
+  }
 
-  def run(design: String, out: String): Unit = {
-    val d = designs.find(_.name == design).getOrElse(throw new UsageError(
-      s"--design: '$design' is not a datapath; allowed: ${designs.map(_.name).mkString(", ")}"))
-    val file = Emit.write(d.gen(), os.Path(out, os.pwd), Target.SystemVerilog)._2.head
-    println(s"wrote $file (${d.what}, latency ${d.latency} clocks)")
+  /** One line per registered design: name and description (nothing is elaborated). */
+  def list: Seq[String] = {
+    val all = Designs.all()
+    val w = all.map(_.name.length).max
+    all.map(d => s"${d.name.padTo(w, ' ')}  ${d.what}")
   }
 }

@@ -2,7 +2,7 @@ package moire.cli
 
 import mainargs.{Flag, ParserForClass, ParserForMethods, arg, main}
 import moire.cordic._
-import moire.emit.{Emit, Target}
+import moire.emit.Target
 import moire.options.{SubdivCmd, SubdivConfig}
 import moire.paper.{AccuracyRow, Reproduce}
 
@@ -41,14 +41,14 @@ object Main {
 
   @main(doc = "Write the SystemVerilog of one CORDIC configuration into a folder.")
   def emit(config: CordicConfig, @arg(doc = "output folder") out: String = "generated"): Unit = {
-    val p = config.params
-    val file = Emit.write(new Cordic(p), os.Path(out, os.pwd), Target.SystemVerilog)._2.head
-    println(s"wrote $file (${p.moduleName}, latency ${p.latency} clocks)")
+    val d = moire.designs.Designs.cordic(config.params)
+    val file = d.write(os.Path(out, os.pwd), Target.SystemVerilog).head
+    println(s"wrote $file (${d.topName}, latency ${d.latency.get} clocks)")
   }
 
   @main(doc = "Logic cells, registers, memory bits, multipliers and longest path (yosys synth_intel, Cyclone IV E) of a design.")
   def cost(config: CordicConfig,
-           @arg(doc = "a design of moire.cost.CostDesigns: cordic (the emit options), subdiv, quadcomp, adapt, corrected, harmonic, ...") design: String = "cordic",
+           @arg(doc = "a design of the registry (see designs): cordic (the emit options), subdiv, quadcomp, adapt, corrected, harmonic, ...") design: String = "cordic",
            @arg(doc = "also write the figures as JSON to this file") json: Option[String] = None,
            @arg(doc = "seconds each yosys run may take (default 1800)") timeout: Int = 1800,
            @arg(doc = "keep the Verilog and yosys files in this folder") keep: Option[String] = None,
@@ -64,7 +64,7 @@ object Main {
 
   @main(doc = "Fmax, utilisation and critical path on the LFE5U-85F (yosys synth_ecp5, nextpnr-ecp5) at speed grades 6 and 8; exit code 1 when a design misses its target.")
   def timing(config: CordicConfig,
-             @arg(doc = "a design of the registry: cordic (the emit options), subdiv, quadcomp, adapt, corrected, harmonic, board-de2-115, ...") design: Option[String] = None,
+             @arg(doc = "a design of the registry (see designs): cordic (the emit options), subdiv, quadcomp, adapt, corrected, harmonic, board-de2-115, ...") design: Option[String] = None,
              @arg(doc = "every design of the registry") all: Flag = Flag(),
              @arg(doc = "comma-separated speed grades (default 6,8)") speeds: String = "6,8",
              @arg(doc = "target clock in MHz (default 65, the AD9226's full rate)") targetMhz: Double = 65.0,
@@ -138,10 +138,13 @@ object Main {
                    @arg(doc = "output folder (default generated)") out: String = "generated"): Unit =
     CalibrateCmd.emit(lines, subdivision, harmonics, iterations, dataBits, out)
 
-  @main(doc = "Write the SystemVerilog of a datapath at its default parameters (quadcomp | adapt | corrected).")
-  def emitDatapath(@arg(doc = "quadcomp | adapt | corrected") design: String,
+  @main(doc = "Write the SystemVerilog of a registered design at its default parameters (see designs).")
+  def emitDatapath(@arg(doc = "a design name: quadcomp | adapt | corrected | harmonic | ... (see designs)") design: String,
                    @arg(doc = "output folder (default generated)") out: String = "generated"): Unit =
-    DatapathCmd.run(design, out)
+    println(DatapathCmd.run(design, out))
+
+  @main(doc = "List the registered designs (emit-datapath, cost, timing, replay and board read this registry).")
+  def designs(): Unit = DatapathCmd.list.foreach(println)
 
   @main(doc = "Fit the m largest harmonics to a moire-calibration v1 CSV; write the coefficient file, register listing and plot.")
   def calibrate(@arg(doc = "calibration CSV (moire-calibration v1)") input: String,
@@ -202,9 +205,12 @@ object Main {
             @arg(doc = "design compensated: fringe periods per turn, a power of two (default 16384)") lines: Int = 16384,
             @arg(doc = "design compensated: harmonic slots m, 1..32 (default 4)") harmonics: Int = 4): Unit = {
     import moire.board.BoardCmd
-    try BoardCmd.run(name, BoardCmd.params(design, adcClockHz, adcFormat, decimation, baud, frameRecords, fifoDepth,
-      glitchFilter, counts, clockSource, clockHz, lines, harmonics), out.getOrElse(s"generated/$name")).foreach(println)
-    catch { case e: BoardCmd.BadOption => throw new UsageError(e.getMessage) }
+    try {
+      BoardCmd.checkBoard(name)
+      val p = BoardCmd.params(design, adcClockHz, adcFormat, decimation, baud, frameRecords, fifoDepth, glitchFilter, counts, clockSource,
+        clockHz, lines, harmonics)
+      moire.designs.BoardProject.run(name, p, os.Path(out.getOrElse(s"generated/$name"), os.pwd)).foreach(println)
+    } catch { case e: BoardCmd.BadOption => throw new UsageError(e.getMessage) }
   }
 
   @main(doc = "Record a board's UART stream for some seconds, or one full-rate burst (--burst N), into a moire-recording v1 file (docs/recording.md).")
@@ -252,7 +258,8 @@ object Main {
 
   /** The command line without leaving the JVM: the exit code (2 for a user's mistake, told in one line). */
   def run(args: Array[String]): Int = {
-    val argv0 = if (args.isEmpty) Array("emit") else args
+    // No arguments: the flagship, the DE2-115 project of the subdivider (as `board de2-115`).
+    val argv0 = if (args.isEmpty) Array("board", "de2-115") else args
     // `board de2-115 --out DIR`: the board name as a positional word.
     val argv = if (argv0.length > 1 && argv0(0) == "board" && !argv0(1).startsWith("-")) Array("board", "--name") ++ argv0.tail else argv0
     val parser = ParserForMethods(this)

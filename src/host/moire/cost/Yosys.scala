@@ -71,8 +71,9 @@ object Yosys {
   private def coarse(top: String, files: Seq[os.Path], flatten: Boolean): Seq[String] =
     Seq(s"read_verilog -sv ${files.map(f => "\"" + f + "\"").mkString(" ")}",
       "read_verilog -lib mult_stub.v",
-      // Vendor PLL (board tops) as a black box: a hard block, no logic cells.
+      // Vendor PLLs (board tops: altpll on the DE2-115, EHXPLLL on the ULX3S) as black boxes: hard blocks, no logic cells.
       "read_verilog -lib -DNO_CLEARBOX +/intel/common/altpll_bb.v",
+      "read_verilog -lib +/ecp5/cells_bb.v",
       s"hierarchy -check -top $top",
       "proc") ++
     // Memories sit in their own firtool modules with separate read and write clock ports; inline

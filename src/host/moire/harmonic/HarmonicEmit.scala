@@ -1,13 +1,14 @@
 package moire.harmonic
 
-import moire.emit.{Emit, Target}
-import moire.io.{QuadratureCounter, QuadratureParams}
+import moire.designs.Designs
+import moire.emit.Target
+import moire.io.QuadratureParams
 
 /** Writes the SystemVerilog of a compensator (with its CORDICs) and, optionally, the quadrature counter. */
 object HarmonicEmit {
   def apply(p: HarmonicParams, out: os.Path, counter: Boolean): Seq[os.Path] = {
-    val comp = Emit.write(new HarmonicCompensator(p), out, Target.SystemVerilog)._2
-    val q = if (counter) Emit.write(new QuadratureCounter(QuadratureParams(p.countBits)), out, Target.SystemVerilog)._2 else Nil
+    val comp = Designs.harmonic(p).write(out, Target.SystemVerilog)
+    val q = if (counter) Designs.counter(QuadratureParams(p.countBits)).write(out, Target.SystemVerilog) else Nil
     comp ++ q
   }
 }

@@ -1,10 +1,10 @@
 package moire.options
 
 import mainargs.{arg, main}
-import moire.emit.{Emit, Target}
+import moire.emit.Target
 import moire.cordic.Rounding
 import moire.signal.AdcFormat
-import moire.subdiv.{PhaseMethod, SubdivAdc, SubdivParams}
+import moire.subdiv.{PhaseMethod, SubdivParams}
 
 /** Options of the subdivider (see moire.subdiv.SubdivParams). */
 @main
@@ -39,8 +39,9 @@ object SubdivCmd {
     * the latency from ADC pins to position, and the top's name.
     */
   def emit(p: SubdivParams, format: AdcFormat, out: String): (os.Path, Int, String) = {
-    val (top, files) = Emit.write(new SubdivAdc(p, format), os.Path(out, os.pwd), Target.SystemVerilog)
-    (files.head, top.latency, top.desiredName)
+    val d = moire.designs.Designs.subdiv(p, format)
+    val files = d.write(os.Path(out, os.pwd), Target.SystemVerilog)
+    (files.head, d.latency.get, d.topName)
   }
 
   def run(c: SubdivConfig, out: String): String = {

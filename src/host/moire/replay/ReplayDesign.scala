@@ -1,11 +1,12 @@
 package moire.replay
 
 import chisel3.RawModule
-import moire.chain.{AdcPinCodes, CorrectedSubdivModel, CorrectedSubdivParams, CorrectedSubdivider}
-import moire.emit.{Emit, Target}
+import moire.chain.{AdcPinCodes, CorrectedSubdivModel, CorrectedSubdivParams}
+import moire.designs.{Design, Designs}
+import moire.emit.Target
 import moire.options.SubdivConfig
 import moire.signal.{Adc, AdcFormat}
-import moire.subdiv.{SubdivAdc, SubdivCycle, SubdivModel, SubdivParams, SubdivSample}
+import moire.subdiv.{SubdivCycle, SubdivModel, SubdivParams, SubdivSample}
 
 /** The clock-level model of a replayable design: one clock with the pins as driven, what the outputs show. */
 trait PinModel {
@@ -13,26 +14,30 @@ trait PinModel {
 }
 
 /** A design that replay can run: ADC pin codes in (Valid(AdcPins)), SubdivOut, A/B/Z and status out.
-  * `out` gives the output formats (position width, phase bits, M); `latency` is pins -> out.
+  * `out` gives the output formats (position width, phase bits, M). The RTL, its top name and its
+  * latency (pins -> out) come from the design registry ([[moire.designs.Designs]]).
   */
 sealed trait ReplayDesign {
   def name: String
   def inputBits: Int
   def format: AdcFormat
   def out: SubdivParams
-  def latency: Int
-  def topName: String
-  def gen(): RawModule
+  /** The registry entry: generator, top name and latency read from the elaborated module. */
+  def design: Design
+  def latency: Int = design.latency.get
+  def topName: String = design.topName
+  def gen(): RawModule = design.gen()
   /** A fresh clock-level model, from reset. */
   def model(): PinModel
   /** The subdivider's own model when its period counter can be seeded mid-run (windows of a long replay). */
   def subdivModel: Option[SubdivParams]
-  def describe: String
-  /** SystemVerilog of the whole design as one text (the same lowering as emit-subdiv). */
-  def verilog(): String = Emit.elaborate(gen(), Target.Verilog)._2
+  def describe: String = s"$name $topName (${design.what})"
+  /** The Verilog of the whole design as one text (what Verilator builds). */
+  def verilog(): String = design.verilog(Target.Verilog)
 }
 
 object ReplayDesign {
+  /** The registry's designs that have a pin-level model. */
   val names: Seq[String] = Seq("subdiv", "corrected")
 
   /** `subdiv` takes the emit-subdiv options; `corrected` is the corrected chain at its defaults (M = 1024). */
@@ -46,11 +51,8 @@ object ReplayDesign {
     def name = "subdiv"
     def inputBits: Int = p.inputBits
     def out: SubdivParams = p
-    def latency: Int = 1 + p.latency
-    def topName = s"${p.moduleName}_${moire.subdiv.AdcFrontEnd.tag(format)}"
-    def gen(): RawModule = new SubdivAdc(p, format)
+    lazy val design: Design = Designs.subdiv(p, format)
     def subdivModel: Option[SubdivParams] = Some(p)
-    def describe = s"subdiv $topName (${p.method.name}, M = ${p.counts}, ${p.inputBits}-bit ${format.name} ADC)"
     def model(): PinModel = new PinModel {
       private val m = new SubdivModel(p)
       private val adc = Adc(p.inputBits, format)
@@ -68,11 +70,8 @@ object ReplayDesign {
     def inputBits: Int = p.adapt.inputBits
     def format: AdcFormat = p.format
     def out: SubdivParams = p.subdiv
-    def latency: Int = p.latency
-    def topName: String = p.moduleName
-    def gen(): RawModule = new CorrectedSubdivider(p)
+    lazy val design: Design = Designs.corrected(p)
     def subdivModel: Option[SubdivParams] = None
-    def describe = s"corrected $topName (adaptive corrector + subdivider, M = ${p.subdiv.counts}, ${inputBits}-bit ${format.name} ADC)"
     def model(): PinModel = new PinModel {
       private val m = new CorrectedSubdivModel(p)
       def clock(valid: Boolean, sin: Int, cos: Int, otrSin: Boolean, otrCos: Boolean): SubdivCycle =

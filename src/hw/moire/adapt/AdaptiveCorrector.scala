@@ -23,7 +23,7 @@ class AdaptSample(w: Int) extends Bundle {
   * 16x18, statistics 16x16 (3), interpolation 23x8, radians 25x17 (constant 2 pi), rotation 18x16 (2),
   * table update 28x9 (2): at most 18 of the EP4CE115's 266 embedded 18x18 multipliers.
   */
-class AdaptiveCorrector(val p: AdaptParams) extends Module {
+class AdaptiveCorrector(val p: AdaptParams) extends Module with moire.emit.Latency {
   override def desiredName: String = p.moduleName
   val io = IO(new Bundle {
     val in = Flipped(Valid(new AdaptSample(p.inputBits)))

@@ -19,15 +19,15 @@ final case class CorrectedSubdivParams(
 ) {
   require(adapt.outputBits == subdiv.inputBits,
     s"the corrector's output bits (${adapt.outputBits}) must equal the subdivider's input bits (${subdiv.inputBits})")
-  /** Front end (1) + corrector + subdivider, clocks. */
-  val latency: Int = 1 + adapt.latency + subdiv.latency
+  /** Front end + corrector + subdivider, clocks. */
+  val latency: Int = AdcFrontEnd.latency + adapt.latency + subdiv.latency
   val moduleName: String = s"Corrected_${adapt.moduleName}_${subdiv.moduleName}_${AdcFrontEnd.tag(format)}"
   /** The front end only reads the input width from its params. */
   private[chain] val frontEnd: SubdivParams = SubdivParams(inputBits = adapt.inputBits)
 }
 
 /** Pin codes in; the subdivider's outputs, A/B/Z and status out. Latency [[CorrectedSubdivParams.latency]]. */
-class CorrectedSubdivider(val p: CorrectedSubdivParams) extends Module {
+class CorrectedSubdivider(val p: CorrectedSubdivParams) extends Module with moire.emit.Latency {
   override def desiredName: String = p.moduleName
   val io = IO(new Bundle {
     val in = Flipped(Valid(new AdcPins(p.adapt.inputBits)))

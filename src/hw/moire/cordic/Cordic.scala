@@ -2,6 +2,7 @@ package moire.cordic
 
 import chisel3._
 import chisel3.util._
+import moire.emit.Unused
 import CordicMode._
 
 class CordicIn(p: CordicParams) extends Bundle {
@@ -25,7 +26,7 @@ class CordicOut(p: CordicParams) extends Bundle {
 /** Pipelined CORDIC for every mode of [[CordicMode]]; one result per clock, `latency` clocks after
   * the input. Bit-exact with [[CordicModel]]; number formats in [[CordicParams]].
   */
-class Cordic(val p: CordicParams) extends Module {
+class Cordic(val p: CordicParams) extends Module with moire.emit.Latency {
   override def desiredName: String = p.moduleName
   val io = IO(new Bundle {
     val in = Flipped(Valid(new CordicIn(p)))
@@ -62,6 +63,12 @@ class Cordic(val p: CordicParams) extends Module {
     val inX = io.in.bits.x
     val inY = io.in.bits.y
     val inZ = io.in.bits.z
+    p.mode match { // the ports a mode does not read
+      case SinCos => Unused("in_xy", inX, inY)
+      case Rotate =>
+      case Atan2 => Unused("in_z", inZ)
+      case _ => Unused("in_xz", inX, inZ)
+    }
     /** The arcsine input clamped to [-1.0, 1.0], one bit wider than the port. */
     lazy val sineIn: SInt = {
       val oneIn = 1L << p.dataFrac
@@ -110,6 +117,7 @@ class Cordic(val p: CordicParams) extends Module {
       val mag = Mux(a < 0.S, -a, a)
       val hit = mag >= lit(pt.start, p.width + 2)
       val offset = (mag - lit(pt.start, p.width + 2)).asUInt
+      Unused("lut_offset", offset) // the bits below an entry's bin pick nothing; `hit` covers those above
       val rom = VecInit(pt.entries.map(e => lit(e, p.angleBits)))
       val v = if (pt.size == 1) rom(0) else rom((offset >> pt.binShift)(log2Ceil(pt.size) - 1, 0))
       val signed = Mux(a < 0.S, -v, v)
@@ -187,6 +195,7 @@ class Cordic(val p: CordicParams) extends Module {
         result.z := outAngle(if (p.postScale) stage(state.z, "z_scaled") else state.z)
       case _ =>
         val z = if (p.mode.isAcos) lit(1L << (zw - 2), zw) - state.z else state.z
+        if (p.mode.isAcos) Unused("acos_z", z) // outAngle keeps the angle word: truncation drops the guard bits
         val cordicAngle = outAngle(z)
         result.z := (tableState match {
           case Some((hit, v)) => Mux(hit, v, cordicAngle)

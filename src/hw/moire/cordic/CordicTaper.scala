@@ -2,6 +2,7 @@ package moire.cordic
 
 import chisel3._
 import chisel3.util._
+import moire.emit.Unused
 
 /** The tapered sincos datapath of [[Cordic]] (`CordicParams.taper`). The arithmetic is the
   * conventional one, so the results equal those without taper bit for bit; only the hardware is leaner:
@@ -32,6 +33,7 @@ private[cordic] object CordicTaper {
 
     // Fold and iterations 0, 1 on the angle bits (see CordicModel.rotation for the arithmetic).
     val a = in.bits.z.asUInt
+    Unused("in_xy", in.bits.x, in.bits.y) // sincos reads only the angle
     val fold = a(ab - 1) ^ a(ab - 2)
     val low = Cat(~a(ab - 3), a(ab - 4, 0))
     val z1 = (if (p.zGuard == 0) low else Cat(low, 0.U(p.zGuard.W))).asSInt // z after iteration 0, zWidth - 2 bits
@@ -63,6 +65,7 @@ private[cordic] object CordicTaper {
       if (s < m - 1 || p.taperFoldAtOutput) folded = reg(folded, s"fold_$s")
     }
 
+    Unused("z_last", z) // the last angle word decides the last direction by its sign alone
     val (xn, yn) = xy.get
     def outData(v: SInt): SInt = {
       val rounded =
@@ -105,6 +108,7 @@ private[cordic] object CordicTaper {
         }
     }
     val sum = Cat(acc.asUInt, 1.U(1.W)) + Cat(q ^ Fill(w, sub), roundUp ^ sub)
+    Unused("carry_in", sum(0)) // bit 0 only carries the rounding in
     sum(w, 1).asSInt
   }
 }

@@ -6,14 +6,19 @@ import circt.stage.ChiselStage
 /** What the Verilog is for: Verilator and Quartus read SystemVerilog; yosys wants plain Verilog. */
 sealed abstract class Target(val name: String, val opts: Array[String])
 object Target {
-  private val base = Array("-disable-all-randomization", "-strip-debug-info")
-  /** SystemVerilog for Verilator and Quartus. Locals are still disallowed: yosys reads these files too. */
-  case object SystemVerilog extends Target("sv", base :+ "--lowering-options=disallowLocalVariables")
-  /** Plain Verilog-2001 style (no automatic locals, no packed arrays), for yosys and older Quartus releases. */
-  case object Verilog extends Target("v", base :+ "--lowering-options=disallowLocalVariables,disallowPackedArrays")
+  /** No automatic locals, no packed arrays: Debian's yosys 0.23 rejects both (DesignLintSpec reads every design). */
+  private val base = Array("-disable-all-randomization", "-strip-debug-info",
+    "--lowering-options=disallowLocalVariables,disallowPackedArrays")
+  /** SystemVerilog for Verilator and Quartus (`emit`, `board de2-115`, replay). */
+  case object SystemVerilog extends Target("sv", base)
+  /** Plain Verilog-2001 style for yosys (`cost`, `timing`, `board ulx3s`). Today the same lowering as
+    * [[SystemVerilog]], since the SystemVerilog must read in yosys 0.23 too; kept apart so a caller says
+    * which tool reads its files.
+    */
+  case object Verilog extends Target("v", base)
 }
 
-/** The one way a design becomes Verilog: elaborate, lower through firtool, split black-box files. */
+/** The one way a design becomes Verilog: elaborate, lower through firtool (one text, or one file per module). */
 object Emit {
   /** The elaborated top and its Verilog text (design first, black-box resources appended by firtool). */
   def elaborate[M <: RawModule](gen: => M, target: Target = Target.Verilog): (M, String) = {
@@ -22,27 +27,28 @@ object Emit {
     (top.get, text)
   }
 
-  /** Elaborates `gen` and writes its files into `dir`; returns the top and the Verilog files, the design first. */
-  def write[M <: RawModule](gen: => M, dir: os.Path, target: Target = Target.Verilog): (M, Seq[os.Path]) = {
-    val (top, text) = elaborate(gen, target)
-    (top, writeSplit(text, s"${top.desiredName}.sv", dir))
+  /** Elaborates `gen` without lowering it (fast): the top, to read its name and latency. */
+  def module[M <: RawModule](gen: => M): M = {
+    var top: Option[M] = None
+    chisel3.stage.ChiselGeneratorAnnotation(() => { val m = gen; top = Some(m); m }).elaborate
+    top.get
   }
 
-  private val fileMarker = """(?m)^// ----- 8< ----- FILE "(.*)" ----- 8< -----$""".r
-
-  /** Splits firtool's single-string output into `dir`: the design into `topFile`, and each black-box
-    * resource firtool appends after a `// ----- 8< ----- FILE` line into its own file. Returns the
-    * Verilog files, the design first; non-Verilog pieces (file lists) are left out.
+  /** Elaborates `gen` and writes one file per module (`Name.sv`, the file named after its module as
+    * Verilator's DECLFILENAME asks) and the black-box files into `dir`; returns the top and the
+    * Verilog files, the top's first.
     */
-  def writeSplit(sv: String, topFile: String, dir: os.Path): Seq[os.Path] = {
-    os.makeDir.all(dir)
-    val cuts = fileMarker.findAllMatchIn(sv).toSeq
-    val parts = (topFile, 0) +: cuts.map(m => (os.RelPath(m.group(1)).last, m.end))
-    val ends = cuts.map(_.start) :+ sv.length
-    parts.zip(ends).collect { case ((name, from), to) if name.endsWith(".sv") || name.endsWith(".v") =>
-      val f = dir / name
-      os.write.over(f, sv.substring(from, to).dropWhile(_ == '\n'))
-      f
-    }
+  def write[M <: RawModule](gen: => M, dir: os.Path, target: Target = Target.Verilog): (M, Seq[os.Path]) = {
+    var top: Option[M] = None
+    val tmp = os.temp.dir(prefix = "moire-emit-")
+    try {
+      ChiselStage.emitSystemVerilogFile({ val m = gen; top = Some(m); m },
+        Array("--target-dir", tmp.toString, "--split-verilog"), target.opts)
+      val first = s"${top.get.desiredName}.sv"
+      // Verilog files that hold a module (not firtool's extern_modules.sv, macro definitions only)
+      val files = os.walk(tmp).filter(f => os.isFile(f) && Seq("sv", "v").contains(f.ext) && """(?m)^\s*module\s""".r.findFirstIn(os.read(f)).nonEmpty)
+      os.makeDir.all(dir)
+      (top.get, files.sortBy(f => (f.last != first, f.last)).map { f => val d = dir / f.last; os.copy.over(f, d); d })
+    } finally os.remove.all(tmp)
   }
 }

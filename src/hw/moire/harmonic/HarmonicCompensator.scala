@@ -28,7 +28,7 @@ class HarmonicResult(p: HarmonicParams) extends Bundle {
   * old and new coefficients (load them while in.valid is low, or discard `latency` results).
   * Bit-exact with [[HarmonicModel]].
   */
-class HarmonicCompensator(val p: HarmonicParams) extends Module {
+class HarmonicCompensator(val p: HarmonicParams) extends Module with moire.emit.Latency {
   override def desiredName: String = p.moduleName
   val io = IO(new Bundle {
     val reg = Input(new HarmonicRegPort(p))
@@ -43,6 +43,7 @@ class HarmonicCompensator(val p: HarmonicParams) extends Module {
   private val phases = RegInit(VecInit(Seq.fill(p.harmonics)(0.U(p.countBits.W))))
   orders.suggestName("order"); coefs.suggestName("coef"); phases.suggestName("phase")
   private val slot = io.reg.addr >> 2
+  moire.emit.Unused("reg_data", io.reg.data) // each field takes the low bits it needs
   private val field = io.reg.addr(1, 0)
   for (j <- 0 until p.harmonics) when(io.reg.we && slot === j.U) {
     switch(field) {

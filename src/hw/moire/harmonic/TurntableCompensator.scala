@@ -8,7 +8,7 @@ import chisel3.util._
   * (seed 001 fig. 3: angle generation and f(theta) compensation). One result per clock; `latency`
   * clocks from an A/B edge at the pins to the result of the new count. Formats in [[HarmonicParams]].
   */
-class TurntableCompensator(val p: HarmonicParams, syncStages: Int = 2) extends Module {
+class TurntableCompensator(val p: HarmonicParams, syncStages: Int = 2) extends Module with moire.emit.Latency {
   val q: QuadratureParams = QuadratureParams(p.countBits, syncStages)
   override def desiredName: String = s"Turntable_${p.moduleName.stripPrefix("HarmonicComp_")}_s$syncStages"
   val io = IO(new Bundle {

@@ -33,7 +33,7 @@ object Quadrature {
   * and pulses `error`. `out.valid` is high every clock after reset (the count as a Valid stream for
   * [[HarmonicCompensator]]). Latency `p.latency` clocks from pin to count.
   */
-class QuadratureCounter(val p: QuadratureParams) extends Module {
+class QuadratureCounter(val p: QuadratureParams) extends Module with moire.emit.Latency {
   override def desiredName: String = p.moduleName
   val io = IO(new Bundle {
     val a = Input(Bool())

@@ -55,6 +55,7 @@ class FrameTx(val n: Int, val countWidth: Int) extends Module {
   private val bursting = sent =/= total
   private val left = total - sent
   private val nextWords = Mux(left > BurstFrameWords.U, BurstFrameWords.U, left)(7, 0)
+  moire.emit.Unused("record_count", io.recordCount) // compared with n: firtool reads only the bits that decide
   private val startReply = !busy && io.reply.valid
   private val startInfo = !busy && !io.reply.valid && !bursting && io.burstInfo.valid
   private val startSamples = !busy && !io.reply.valid && bursting

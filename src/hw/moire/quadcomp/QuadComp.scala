@@ -26,7 +26,7 @@ class QuadCompOut(p: QuadCompParams) extends Bundle {
   * Formats in [[QuadCompParams]]. `diff` pulses with each raw measurement; `correction` is the
   * averaged correction now applied.
   */
-class QuadComp(val p: QuadCompParams) extends Module {
+class QuadComp(val p: QuadCompParams) extends Module with moire.emit.Latency {
   override def desiredName: String = p.moduleName
   val io = IO(new Bundle {
     val in = Flipped(Valid(new QuadCompIn(p)))

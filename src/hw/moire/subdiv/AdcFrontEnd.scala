@@ -16,13 +16,13 @@ class AdcPins(bits: Int) extends Bundle {
   * read as it is (the same mapping as moire.signal.Adc.fromPins). Latency 1 clock (a register
   * that can sit in the I/O cells).
   */
-class AdcFrontEnd(val p: SubdivParams, val format: AdcFormat) extends Module {
+class AdcFrontEnd(val p: SubdivParams, val format: AdcFormat) extends Module with moire.emit.Latency {
   override def desiredName: String = s"AdcFrontEnd_${p.inputBits}_${AdcFrontEnd.tag(format)}"
   val io = IO(new Bundle {
     val in = Flipped(Valid(new AdcPins(p.inputBits)))
     val out = Valid(new SubdivIn(p))
   })
-  val latency: Int = 1
+  val latency: Int = AdcFrontEnd.latency
   private def conv(c: UInt): SInt = format match {
     case AdcFormat.OffsetBinary => Cat(~c(p.inputBits - 1), c(p.inputBits - 2, 0)).asSInt
     case AdcFormat.TwosComplement => c.asSInt
@@ -37,13 +37,15 @@ class AdcFrontEnd(val p: SubdivParams, val format: AdcFormat) extends Module {
 }
 
 object AdcFrontEnd {
+  /** Clocks through the front end: its one input register. */
+  val latency: Int = 1
   def tag(f: AdcFormat): String = if (f == AdcFormat.OffsetBinary) "ob" else "tc"
 }
 
 /** The board-facing subdivider: [[AdcFrontEnd]] then [[Subdivider]], flat IO, pin codes in.
-  * Latency 1 + SubdivParams.latency clocks.
+  * Latency [[SubdivAdc.latency]] clocks.
   */
-class SubdivAdc(val p: SubdivParams, val format: AdcFormat) extends Module {
+class SubdivAdc(val p: SubdivParams, val format: AdcFormat) extends Module with moire.emit.Latency {
   override def desiredName: String = s"${p.moduleName}_${AdcFrontEnd.tag(format)}"
   val io = IO(new Bundle {
     val in = Flipped(Valid(new AdcPins(p.inputBits)))
@@ -65,4 +67,9 @@ class SubdivAdc(val p: SubdivParams, val format: AdcFormat) extends Module {
   io.b := sd.io.b
   io.z := sd.io.z
   io.status := sd.io.status
+}
+
+object SubdivAdc {
+  /** Clocks from the ADC pins to the position: the front end, then the subdivider. */
+  def latency(p: SubdivParams): Int = AdcFrontEnd.latency + p.latency
 }

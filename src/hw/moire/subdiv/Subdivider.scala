@@ -47,7 +47,7 @@ class SubdivStatus(p: SubdivParams) extends Bundle {
   * most once every minEdgeClocks clocks; Z is high while that count is 0 modulo M.
   * Bit- and clock-exact with [[SubdivModel]].
   */
-class Subdivider(val p: SubdivParams) extends Module {
+class Subdivider(val p: SubdivParams) extends Module with moire.emit.Latency {
   override def desiredName: String = p.moduleName
   val io = IO(new Bundle {
     val in = Flipped(Valid(new SubdivIn(p)))
