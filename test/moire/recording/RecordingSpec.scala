@@ -37,9 +37,7 @@ class RecordingSpec extends AnyFlatSpec with Matchers {
     b.length shouldBe n; b.sin.toSeq shouldBe r.sin.toSeq; b.extra("ref_counts").toSeq shouldBe r.extra("ref_counts").toSeq
     // another writer: CRLF line ends, no samples line, a Latin-1 micro sign in a comment
     val text = os.read(p).linesIterator.filterNot(_.startsWith("# samples:")).toSeq
-    val bytes = (text.take(1) ++ Seq("# probe: 5 µm") ++ text.drop(1)).mkString("", "
-", "
-").getBytes("ISO-8859-1")
+    val bytes = (text.take(1) ++ Seq("# probe: 5 µm") ++ text.drop(1)).mkString("", "\r\n", "\r\n").getBytes("ISO-8859-1")
     val q = os.temp(suffix = ".csv"); os.write.over(q, bytes)
     val c = Recording.read(q)
     c.length shouldBe n; c.cos.toSeq shouldBe r.cos.toSeq; c.meta("probe") should startWith("5 ")
