@@ -106,7 +106,7 @@ class AdaptModelSpec extends AnyFlatSpec {
 
   "latency and module name" should "follow the parameters" in {
     val p = AdaptParams()
-    assert(p.latency == 5 + p.cordic.latency)
+    assert(p.latency == 1 + p.correctionStages + p.cordic.latency + p.rmwStage)
     assert(p.moduleName != AdaptParams(harmonicEntries = 32).moduleName)
     assert(p.moduleName != AdaptParams(gainRate = 5).moduleName)
   }

@@ -8,11 +8,17 @@ final case class AdaptOut(sin: Long, cos: Long, otrSin: Boolean = false, otrCos:
 /** Bit-accurate, clock-accurate model of [[AdaptiveCorrector]]: the same registers, the same
   * integer operations and roundings, advanced once per clock. `step` takes this clock's input
   * (None = in.valid low) and returns what io.out shows during this clock.
+  *
+  * Pure arithmetic is computed where convenient; what reads or writes state happens in the clock
+  * the hardware does it (the stage clocks are in [[AdaptParams]]): offsets, gains and phase term
+  * at the correction stages that use them, the estimate update `updateDelay` clocks after the
+  * window closes, the table read and its mean `tableRead` clocks after the CORDIC, the PLL at
+  * `pllStage`, the leak at `leakStage`, the table's read-modify-write at `rmwStage` (exact: the
+  * hardware forwards the writes still in flight), the table sum one clock after that.
   */
 class AdaptModel(val p: AdaptParams) {
   import Fixed.{saturate, wrap}
-  private val he = Rounding.HalfEven
-  private def shR(v: Long, s: Int): Long = Fixed.shift(v, s, he)
+  import AdaptModel.shR
   /** Round-half-up shift by a run-time amount (the per-period normalisation). */
   private def shUp(v: Long, s: Int): Long = (v + (1L << (s - 1))) >> s
 
@@ -31,19 +37,29 @@ class AdaptModel(val p: AdaptParams) {
   var periods = 0L
   // ---- harmonic table and PLL state ----
   val table: Array[Long] = new Array[Long](math.max(entries, 1))
+  /** The table sum register: every entry's write is in it one clock after the write. */
   var tableSum = 0L
+  private var sumPending = 0L
   var theta = 0L; var vel = 0L; private var prevPhic = 0L; var lockCnt = 0L
 
-
-  // ---- pipeline registers ----
-  private final class Stage(var valid: Boolean = false, var a: Long = 0, var b: Long = 0, var c: Long = 0,
-                            var d: Long = 0, var e: Long = 0, var f: Long = 0)
-  private var inR = new Stage()   // a = sin, b = cos
-  private var hR = new Stage()    // a = sp, b = cp, c = s1, d = c1
-  private val cq = scala.collection.mutable.Queue.fill(p.cordic.latency)(new Stage()) // a = sp, b = cp, c = phi1
-  private var p1 = new Stage()    // a = sp, b = cp, c = phi1, d = idx, e = frac, f = delta
-  private var p2 = new Stage()    // a = sp, b = cp, c = dr, d = idx, e = frac, f = phic
-  private var outR = new Stage()  // a = sin, b = cos
+  /** One sample in flight; fields filled as it passes the stages. */
+  private final class Sample(val s: Long, val c: Long) {
+    var s1 = 0L; var c1 = 0L; var sr = 0L; var cr = 0L; var ms = 0L; var mc = 0L
+    var sp = 0L; var cp = 0L; var ca = 0L; var phi = 0L
+    var idx = 0; var frac = 0L; var delta = 0L; var mean = 0L; var phic = 0L
+    var e = 0L; var enable = false; var leak = 0L
+  }
+  /** A delay line: index k = the sample that entered k + 1 clocks ago. */
+  private def line[T](k: Int) = scala.collection.mutable.ArrayDeque.fill[Option[T]](k)(None)
+  private def shift[T](l: scala.collection.mutable.ArrayDeque[Option[T]], x: Option[T]): Unit = { l.removeLast(); l.prepend(x) }
+  /** front(k): the sample in the registers of stage k (input register = 0, correction stages 1..5). */
+  private val front = line[Sample](p.correctionStages + 1)
+  private val stat = line[Sample](1)
+  private val cq = line[Sample](p.cordic.latency)
+  /** post(k): the sample whose table read was k + 1 clocks ago. */
+  private val post = line[Sample](p.rmwStage)
+  private val updates = line[Snapshot](p.updateDelay)
+  private final class Snapshot(val aS: Long, val aC: Long, val bS: Long, val bC: Long, val cX: Long, val l: Int)
 
   def quadrant(sp: Long, cp: Long): Int = (if (sp >= 0) (if (cp >= 0) 0 else 1) else if (cp < 0) 2 else 3)
 
@@ -52,65 +68,56 @@ class AdaptModel(val p: AdaptParams) {
   /** One clock: `in` = (sin, cos) when in.valid, `otr` = the over-range flags (delayed by `latency`). */
   def step(in: Option[(Long, Long)], otr: (Boolean, Boolean) = (false, false)): Option[AdaptOut] = {
     val flags = otrLine.dequeue(); otrLine.enqueue(otr)
-    val shown = if (outR.valid) Some(AdaptOut(outR.a, outR.b, flags._1, flags._2)) else None
+    // what the output register shows: the sample that reaches the read-modify-write this clock
+    val atRmw = post.last
+    val shown = atRmw.map { x => val (so, co) = AdaptModel.rotate(p, x.sp, x.cp, AdaptModel.radians(p, x.delta))
+      AdaptOut(so, co, flags._1, flags._2) }
 
-    // output stage: small rotation by -delta
-    val outN = new Stage(p2.valid)
-    if (p2.valid) {
-      val (so, co) = AdaptModel.rotate(p, p2.a, p2.b, p2.c)
-      outN.a = so; outN.b = co
+    // ---- correction, one stage a clock, each reading the estimates of its clock ----
+    front(0).foreach { x => val (s1, sr) = AdaptModel.offset(p, x.s, os); val (c1, cr) = AdaptModel.offset(p, x.c, oc)
+      x.s1 = s1; x.sr = sr; x.c1 = c1; x.cr = cr }
+    front(1).foreach { x => x.ms = x.sr * ks; x.mc = x.cr * kc }
+    front(2).foreach { x => x.sp = saturate(AdaptModel.scaled(p, x.ms), p.outputBits); x.ca = AdaptModel.scaled(p, x.mc) }
+    front(3).foreach { x => x.cp = AdaptModel.phased(p, x.ca, x.sp * t) }
+    val corrected = front.last // its h registers hold: statistics products and the CORDIC start now
+    corrected.foreach(x => x.phi = cordic(CordicWord(x.cp, x.sp, 0)).z)
+
+    // ---- statistics one clock later; an update reaches the estimates updateDelay clocks after ----
+    val apply = updates.last
+    shift(updates, stat(0).flatMap(x => stats(x.sp, x.cp, x.s1, x.c1)))
+
+    // ---- harmonic table: read, PLL, leak, read-modify-write ----
+    val read = cq.last
+    read.foreach { x =>
+      val u = x.phi & ((1L << p.angleBits) - 1)
+      x.idx = (u >> (p.angleBits - p.tableIndexBits)).toInt
+      x.frac = (u >> (p.angleBits - p.tableIndexBits - p.interpBits)) & ((1L << p.interpBits) - 1)
+      x.mean = shR(tableSum, p.tableIndexBits)
+      if (entries > 0) x.delta = AdaptModel.interpolate(p, table(x.idx), table((x.idx + 1) & mask), x.frac) - x.mean
+      x.phic = wrap((x.phi << p.fineGuard) - x.delta, F)
     }
+    post(p.pllStage - 1).foreach(pll)
+    post(p.leakStage - 1).foreach(x => x.leak = shR(tableSum, p.tableIndexBits + p.meanShift))
+    tableSum += sumPending; sumPending = 0
+    atRmw.foreach(x => if (x.enable) update(x))
 
-    // P1: table read and interpolation (reads the table before this clock's write)
-    val cOut = cq.dequeue()
-    val p1N = new Stage(cOut.valid, cOut.a, cOut.b, cOut.c)
-    if (cOut.valid) {
-      val u = cOut.c & ((1L << p.angleBits) - 1)
-      p1N.d = u >> (p.angleBits - p.tableIndexBits)
-      p1N.e = (u >> (p.angleBits - p.tableIndexBits - p.interpBits)) & ((1L << p.interpBits) - 1)
-      if (entries > 0) {
-        val a = table(p1N.d.toInt); val b = table(((p1N.d + 1) & mask).toInt)
-        p1N.f = AdaptModel.interpolate(p, a, b, p1N.e) - shR(tableSum, p.tableIndexBits)
-      }
-    }
-    // P2: radians for the rotation, corrected fine phase
-    val p2N = new Stage(p1.valid, p1.a, p1.b, 0, p1.d, p1.e)
-    if (p1.valid) {
-      p2N.c = AdaptModel.radians(p, p1.f)
-      p2N.f = wrap((p1.c << p.fineGuard) - p1.f, F)
-    }
-    // PLL and table update from P2
-    if (p2.valid) pllAndTable(p2.f, p2.d.toInt, p2.e)
-
-    // CORDIC (fixed delay)
-    val cIn = new Stage(hR.valid, hR.a, hR.b)
-    if (hR.valid) cIn.c = cordic(CordicWord(hR.b, hR.a, 0)).z
-    cq.enqueue(cIn)
-
-    // statistics of the corrected signals; the estimates move once per whole period
-    val hN = new Stage(inR.valid)
-    if (inR.valid) correct(inR.a, inR.b, hN) // uses this clock's estimates
-    if (hR.valid) stats(hR.a, hR.b, hR.c, hR.d)
-
-    val inN = new Stage(in.isDefined)
-    in.foreach { case (s, c) => inN.a = wrap(s, p.inputBits); inN.b = wrap(c, p.inputBits) }
-    inR = inN; hR = hN; p1 = p1N; p2 = p2N; outR = outN
+    apply.foreach(estimate)
+    shift(post, read)
+    shift(cq, corrected)
+    shift(stat, corrected)
+    shift(front, in.map { case (s, c) => new Sample(wrap(s, p.inputBits), wrap(c, p.inputBits)) })
     shown
   }
 
-  /** Offset, gain and phase correction of one sample into hN (a = sp, b = cp, c = s1, d = c1). */
-  private def correct(s: Long, c: Long, hN: Stage): Unit = {
-    val (sp, cp) = AdaptModel.correct(p, s, c, os, oc, ks, kc, t)
-    hN.a = sp; hN.b = cp; hN.c = (s << p.offsetFrac) - os; hN.d = (c << p.offsetFrac) - oc
-  }
-
-  private def stats(sp: Long, cp: Long, s1: Long, c1: Long): Unit = {
+  /** Statistics of one corrected sample; a closed window's sums when the estimates are to move. */
+  private def stats(sp: Long, cp: Long, s1: Long, c1: Long): Option[Snapshot] = {
     val q = quadrant(sp, cp)
     val start = q == 0 && prevQ != 0
     val whole = (seen & 0xE) == 0xE && n < p.countMax
+    var snap: Option[Snapshot] = None
     if (start && !(whole && n < (1L << p.windowBits))) {
       // a window of whole periods is complete (update), or the period was broken (discard): restart
-      if (whole) update()
+      if (whole) snap = Some(new Snapshot(aS, aC, bS, bC, cX, 64 - java.lang.Long.numberOfLeadingZeros(n)))
       aS = s1; aC = c1; bS = tSquare - sp * sp; bC = tSquare - cp * cp; cX = sp * cp; n = 1; seen = 0
     } else if (n < p.countMax) {
       if (start) seen = 0
@@ -118,53 +125,61 @@ class AdaptModel(val p: AdaptParams) {
       seen |= 1 << q
     }
     prevQ = q
+    snap
   }
 
-  private def update(): Unit = {
-    val l = 64 - java.lang.Long.numberOfLeadingZeros(n)
+  private def estimate(u: Snapshot): Unit = {
     val gMax = (1L << (p.gainBits - 1)) - 1
-    os = saturate(os + shUp(aS, l + p.offsetRate), p.offsetWidth)
-    oc = saturate(oc + shUp(aC, l + p.offsetRate), p.offsetWidth)
-    ks = math.max(1L, math.min(gMax, ks + shUp(bS, l + p.gainRate + p.gainShift)))
-    kc = math.max(1L, math.min(gMax, kc + shUp(bC, l + p.gainRate + p.gainShift)))
-    t = saturate(t - shUp(cX, l + p.phaseRate + p.phaseShift), p.phaseBits)
+    os = saturate(os + shUp(u.aS, u.l + p.offsetRate), p.offsetWidth)
+    oc = saturate(oc + shUp(u.aC, u.l + p.offsetRate), p.offsetWidth)
+    ks = math.max(1L, math.min(gMax, ks + shUp(u.bS, u.l + p.gainRate + p.gainShift)))
+    kc = math.max(1L, math.min(gMax, kc + shUp(u.bC, u.l + p.gainRate + p.gainShift)))
+    t = saturate(t - shUp(u.cX, u.l + p.phaseRate + p.phaseShift), p.phaseBits)
     periods += 1
   }
 
-  private def pllAndTable(phic: Long, idx: Int, frac: Long): Unit = {
+  private def pll(x: Sample): Unit = {
     val pred = wrap(theta + vel, F)
-    val e = wrap(phic - pred, F)
-    val d = wrap(phic - prevPhic, F)
-    val enable = entries > 0 && lockCnt == lockMax && math.abs(vel) >= (1L << (F - p.minSpeedShift))
+    val e = wrap(x.phic - pred, F)
+    val d = wrap(x.phic - prevPhic, F)
+    x.e = e
+    x.enable = entries > 0 && lockCnt == lockMax && math.abs(vel) >= (1L << (F - p.minSpeedShift))
     theta = wrap(pred + shR(e, p.pllKp), F)
     vel = wrap(vel + shR(e, p.pllKv) + shR(d - vel, p.pllKf), F)
-    prevPhic = phic
+    prevPhic = x.phic
     lockCnt = if (math.abs(e) < (1L << (F - p.lockShift))) math.min(lockCnt + 1, lockMax) else 0L
-    if (enable) {
-      // LMS step split by the interpolation weights, plus a leak of the (unobservable) table mean
-      val sh = p.interpBits + p.harmonicRate
-      val j = (idx + 1) & mask
-      val leak = shR(tableSum, p.tableIndexBits + p.meanShift)
-      val t0 = saturate(table(idx) + shR(e * ((1L << p.interpBits) - frac), sh) - leak, p.tableBits)
-      val t1 = saturate(table(j) + shR(e * frac, sh) - leak, p.tableBits)
-      tableSum += (t0 - table(idx)) + (t1 - table(j))
-      table(idx) = t0; table(j) = t1
-    }
+  }
+
+  /** LMS step split by the interpolation weights, plus a leak of the (unobservable) table mean. */
+  private def update(x: Sample): Unit = {
+    val sh = p.interpBits + p.harmonicRate
+    val j = (x.idx + 1) & mask
+    val t0 = saturate(table(x.idx) + shR(x.e * ((1L << p.interpBits) - x.frac), sh) - x.leak, p.tableBits)
+    val t1 = saturate(table(j) + shR(x.e * x.frac, sh) - x.leak, p.tableBits)
+    sumPending = (t0 - table(x.idx)) + (t1 - table(j))
+    table(x.idx) = t0; table(j) = t1
   }
 }
 
 /** The model's combinational pieces, also checked alone against double precision. */
 object AdaptModel {
   import Fixed.saturate
-  private def shR(v: Long, s: Int): Long = Fixed.shift(v, s, Rounding.HalfEven)
+  private[adapt] def shR(v: Long, s: Int): Long = Fixed.shift(v, s, Rounding.HalfEven)
+
+  /** x - offset with offsetFrac fractional bits, and that rounded to the multiplier operand (mulFrac). */
+  def offset(p: AdaptParams, x: Long, o: Long): (Long, Long) = {
+    val d = (x << p.offsetFrac) - o
+    (d, shR(d, p.offsetFrac - p.mulFrac))
+  }
+  /** A gain product in output LSB (rounded, not saturated). */
+  def scaled(p: AdaptParams, prod: Long): Long = shR(prod, p.mulFrac + p.gainFrac)
+  /** cp = ca + sp t, from the gain-corrected cos and the phase product sp t, saturated. */
+  def phased(p: AdaptParams, ca: Long, spt: Long): Long = saturate(ca + shR(spt, p.phaseFrac), p.outputBits)
 
   /** (sp, cp) = ((s - os) ks, (c - oc) kc + sp t) in output LSB. */
   def correct(p: AdaptParams, s: Long, c: Long, os: Long, oc: Long, ks: Long, kc: Long, t: Long): (Long, Long) = {
-    val s1 = (s << p.offsetFrac) - os
-    val c1 = (c << p.offsetFrac) - oc
-    val sp = saturate(shR(shR(s1, p.offsetFrac - p.mulFrac) * ks, p.mulFrac + p.gainFrac), p.outputBits)
-    val ca = shR(shR(c1, p.offsetFrac - p.mulFrac) * kc, p.mulFrac + p.gainFrac)
-    (sp, saturate(ca + shR(sp * t, p.phaseFrac), p.outputBits))
+    val sp = saturate(scaled(p, offset(p, s, os)._2 * ks), p.outputBits)
+    (sp, phased(p, scaled(p, offset(p, c, oc)._2 * kc), sp * t))
   }
 
   /** Table value between entries a and b at fraction frac / 2^interpBits. */

@@ -45,8 +45,12 @@ class AdaptiveCorrector(val p: AdaptParams) extends Module with moire.emit.Laten
   private def lit(v: Long, w: Int): SInt = v.S(w.W)
   private def abs(v: SInt): SInt = Mux(v < 0.S, 0.S -& v, v.pad(v.getWidth + 1))
 
+  /** v delayed by k clocks in registers of its exact type. */
+  private def delay[T <: Data](v: T, k: Int): T = (0 until k).foldLeft(v)((x, _) => reg(x))
+  private def valid(v: Bool): Bool = RegNext(v, false.B)
+
   // ---- input register ----
-  private val inV = RegNext(io.in.valid, false.B)
+  private val inV = valid(io.in.valid)
   private val inS = reg(io.in.bits.sin)
   private val inC = reg(io.in.bits.cos)
 
@@ -57,59 +61,75 @@ class AdaptiveCorrector(val p: AdaptParams) extends Module with moire.emit.Laten
   private val kc = RegInit(p.startGain.S(p.gainBits.W))
   private val t = RegInit(0.S(p.phaseBits.W))
 
-  // ---- correction: sp = (s - os) ks, cp = (c - oc) kc + sp t ----
-  private val s1 = fit((inS << p.offsetFrac).asSInt -& os, p.diffWidth)
-  private val c1 = fit((inC << p.offsetFrac).asSInt -& oc, p.diffWidth)
-  private val s1r = fit(shR(s1, p.offsetFrac - p.mulFrac), p.mulWidth)
-  private val c1r = fit(shR(c1, p.offsetFrac - p.mulFrac), p.mulWidth)
-  private val spW = sat(shR(s1r * ks, p.mulFrac + p.gainFrac), p.outputBits)
-  private val cpW = sat(shR(c1r * kc, p.mulFrac + p.gainFrac) +& shR(spW * t, p.phaseFrac), p.outputBits)
-  private val hV = RegNext(inV, false.B)
-  private val hSp = reg(spW)
-  private val hCp = reg(cpW)
-  private val hS1 = reg(s1)
-  private val hC1 = reg(c1)
+  // ---- correction in five clocks: sp = (s - os) ks, cp = (c - oc) kc + sp t ----
+  /** x - offset (offsetFrac fractional bits) and that rounded to the multiplier operand. */
+  private def offset(x: SInt, o: SInt): (SInt, SInt) = {
+    val d = fit((x << p.offsetFrac).asSInt -& o, p.diffWidth)
+    (d, fit(shR(d, p.offsetFrac - p.mulFrac), p.mulWidth))
+  }
+  private val (s1, sr) = offset(inS, os)
+  private val (c1, cr) = offset(inC, oc)
+  private val aV = valid(inV); private val aS1 = reg(s1); private val aC1 = reg(c1); private val aSr = reg(sr); private val aCr = reg(cr)
+  private val bV = valid(aV); private val bMs = reg(aSr * ks); private val bMc = reg(aCr * kc)
+  private val cV = valid(bV)
+  private val cSp = reg(sat(shR(bMs, p.mulFrac + p.gainFrac), p.outputBits))
+  private val cCa = reg(shR(bMc, p.mulFrac + p.gainFrac))
+  private val dV = valid(cV); private val dPt = reg(cSp * t); private val dSp = reg(cSp); private val dCa = reg(cCa)
+  private val hV = valid(dV)
+  private val hSp = reg(dSp)
+  private val hCp = reg(sat(dCa +& shR(dPt, p.phaseFrac), p.outputBits))
+  private val hS1 = delay(aS1, p.correctionStages - 1)
+  private val hC1 = delay(aC1, p.correctionStages - 1)
 
-  // ---- per-window statistics of the corrected signals ----
+  // ---- per-window statistics of the corrected signals (products registered first) ----
   private val target = lit(1L << p.targetSquareLog2, 2 * p.outputBits)
+  private val gV = valid(hV)
+  private val gQ = reg(Mux(hSp >= 0.S, Mux(hCp >= 0.S, 0.U(2.W), 1.U), Mux(hCp < 0.S, 2.U, 3.U)))
+  private val gDs = reg(target -& hSp * hSp)
+  private val gDc = reg(target -& hCp * hCp)
+  private val gXc = reg(hSp * hCp)
+  private val gS1 = reg(hS1); private val gC1 = reg(hC1)
   private val aS = Reg(SInt(p.sumOffsetWidth.W)); private val aC = Reg(SInt(p.sumOffsetWidth.W))
   private val bS = Reg(SInt(p.sumSquareWidth.W)); private val bC = Reg(SInt(p.sumSquareWidth.W))
   private val cX = Reg(SInt(p.sumSquareWidth.W))
   private val n = RegInit(0.U(p.periodBits.W))
   private val prevQ = RegInit(0.U(2.W))
   private val seen = RegInit(0.U(4.W))
-  private val q = Mux(hSp >= 0.S, Mux(hCp >= 0.S, 0.U(2.W), 1.U), Mux(hCp < 0.S, 2.U, 3.U))
-  private val start = q === 0.U && prevQ =/= 0.U
+  private val start = gQ === 0.U && prevQ =/= 0.U
   private val whole = (seen & 0xE.U) === 0xE.U && n < p.countMax.U
   private val restart = start && !(whole && n < (1L << p.windowBits).U)
-  private val ds = target -& hSp * hSp
-  private val dc = target -& hCp * hCp
-  private val xc = hSp * hCp
-  when(hV) {
+  when(gV) {
     when(restart) {
-      aS := fit(hS1, p.sumOffsetWidth); aC := fit(hC1, p.sumOffsetWidth)
-      bS := fit(ds, p.sumSquareWidth); bC := fit(dc, p.sumSquareWidth); cX := fit(xc, p.sumSquareWidth)
+      aS := fit(gS1, p.sumOffsetWidth); aC := fit(gC1, p.sumOffsetWidth)
+      bS := fit(gDs, p.sumSquareWidth); bC := fit(gDc, p.sumSquareWidth); cX := fit(gXc, p.sumSquareWidth)
       n := 1.U; seen := 0.U
     }.elsewhen(n < p.countMax.U) {
-      aS := fit(aS +& hS1, p.sumOffsetWidth); aC := fit(aC +& hC1, p.sumOffsetWidth)
-      bS := fit(bS +& ds, p.sumSquareWidth); bC := fit(bC +& dc, p.sumSquareWidth); cX := fit(cX +& xc, p.sumSquareWidth)
+      aS := fit(aS +& gS1, p.sumOffsetWidth); aC := fit(aC +& gC1, p.sumOffsetWidth)
+      bS := fit(bS +& gDs, p.sumSquareWidth); bC := fit(bC +& gDc, p.sumSquareWidth); cX := fit(cX +& gXc, p.sumSquareWidth)
       n := n + 1.U
-      seen := Mux(start, 0.U, seen) | UIntToOH(q, 4)
+      seen := Mux(start, 0.U, seen) | UIntToOH(gQ, 4)
     }
-    prevQ := q
+    prevQ := gQ
   }
-  when(hV && restart && whole) {
-    val l = Log2(n) +& 1.U
+  // a closed window: snapshot of its sums, then the shifted steps, then the estimates move
+  private val uV = valid(gV && restart && whole)
+  private val uL = reg(Log2(n) +& 1.U)
+  private val uS = reg(aS); private val uC = reg(aC); private val uBs = reg(bS); private val uBc = reg(bC); private val uX = reg(cX)
+  private val vV = valid(uV)
+  private val vOs = reg(shUp(uS, uL + p.offsetRate.U)); private val vOc = reg(shUp(uC, uL + p.offsetRate.U))
+  private val vKs = reg(shUp(uBs, uL + (p.gainRate + p.gainShift).U)); private val vKc = reg(shUp(uBc, uL + (p.gainRate + p.gainShift).U))
+  private val vT = reg(shUp(uX, uL + (p.phaseRate + p.phaseShift).U))
+  when(vV) {
     val gMax = lit((1L << (p.gainBits - 1)) - 1, p.gainBits)
-    def gain(k: SInt, b: SInt): SInt = {
-      val v = k +& shUp(b, l + (p.gainRate + p.gainShift).U)
+    def gain(k: SInt, step: SInt): SInt = {
+      val v = k +& step
       Mux(v < 1.S, 1.S(p.gainBits.W), Mux(v > gMax, gMax, fit(v, p.gainBits)))
     }
-    os := sat(os +& shUp(aS, l + p.offsetRate.U), p.offsetWidth)
-    oc := sat(oc +& shUp(aC, l + p.offsetRate.U), p.offsetWidth)
-    ks := gain(ks, bS)
-    kc := gain(kc, bC)
-    t := sat(t -& shUp(cX, l + (p.phaseRate + p.phaseShift).U), p.phaseBits)
+    os := sat(os +& vOs, p.offsetWidth)
+    oc := sat(oc +& vOc, p.offsetWidth)
+    ks := gain(ks, vKs)
+    kc := gain(kc, vKc)
+    t := sat(t -& vT, p.phaseBits)
   }
 
   // ---- vectoring CORDIC (reused), data delayed beside it ----
@@ -119,39 +139,38 @@ class AdaptiveCorrector(val p: AdaptParams) extends Module with moire.emit.Laten
   cordic.io.in.bits.y := hSp
   cordic.io.in.bits.z := 0.S
   private val lc = p.cordic.latency
-  private val dSp = (0 until lc).foldLeft(hSp)((x, _) => reg(x))
-  private val dCp = (0 until lc).foldLeft(hCp)((x, _) => reg(x))
-  private val phi1 = cordic.io.out.bits.z
+  private val phi = cordic.io.out.bits.z
 
-  // ---- harmonic table: read and interpolate ----
+  // ---- harmonic table: two banks (even, odd entries) in block RAM, read the clock the angle arrives ----
   private val entries = math.max(p.harmonicEntries, 1)
   private val ib = math.max(p.tableIndexBits, 1)
-  private val table = RegInit(VecInit(Seq.fill(entries)(0.S(p.tableBits.W))))
   private val tableSum = RegInit(0.S((p.tableBits + p.tableIndexBits).W))
-  private val u = phi1.asUInt
+  private val u = phi.asUInt
   private val aw = p.angleBits
   private val idx: UInt = if (p.harmonicEntries > 0) u(aw - 1, aw - p.tableIndexBits) else 0.U(ib.W)
   private val frac: UInt = u(aw - p.tableIndexBits - 1, aw - p.tableIndexBits - p.interpBits)
-  private val delta: SInt = if (p.harmonicEntries > 0) {
-    val a = table(idx); val b = table(idx +% 1.U)
-    a +& shR((b -& a) * frac.zext, p.interpBits) -& shR(tableSum, p.tableIndexBits)
-  } else 0.S(2.W)
+  private val q0V = valid(cordic.io.out.valid)
+  private val q0Sp = delay(hSp, lc + 1); private val q0Cp = delay(hCp, lc + 1)
+  private val q0Phi = reg(phi); private val q0Idx = reg(idx); private val q0Frac = reg(frac)
+  private val q0Mean = reg(shR(tableSum, p.tableIndexBits))
   private val dw = p.tableBits + 3
-  private val p1V = RegNext(cordic.io.out.valid, false.B)
-  private val p1Sp = reg(dSp); private val p1Cp = reg(dCp); private val p1Phi = reg(phi1)
-  private val p1Idx = reg(idx); private val p1Frac = reg(frac); private val p1Delta = reg(fit(delta, dw))
+  /** q3: the interpolated table value less the table mean (fine angle). */
+  private val tbl = if (p.harmonicEntries > 0) Some(new Table) else None
+  private val q3Delta: SInt = tbl.map(_.delta).getOrElse(delay(0.S(dw.W), 3))
 
-  // ---- P2: rotation angle in radians, corrected fine phase ----
-  private val dr = sat(shR(p1Delta * lit(p.twoPi, p.twoPiFrac + 4), p.twoPiFrac + F - p.rotFrac), p.rotWidth)
-  private val phic = fit((p1Phi << p.fineGuard).asSInt -& p1Delta, F)
-  private val p2V = RegNext(p1V, false.B)
-  private val p2Sp = reg(p1Sp); private val p2Cp = reg(p1Cp); private val p2Dr = reg(dr)
-  private val p2Idx = reg(p1Idx); private val p2Frac = reg(p1Frac); private val p2Phic = reg(phic)
-
-  // ---- output: small rotation by -delta ----
-  private val outV = RegNext(p2V, false.B)
-  private val outCos = reg(sat(p2Cp +& shR(p2Dr * p2Sp, p.rotFrac), p.outputBits))
-  private val outSin = reg(sat(p2Sp -& shR(p2Dr * p2Cp, p.rotFrac), p.outputBits))
+  // ---- q4: fine phase corrected by the table, rotation angle product ----
+  private val q3Phi = delay(q0Phi, 3)
+  private val q4V = delay(q0V, 4)
+  private val q4Raw = reg(q3Delta * lit(p.twoPi, p.twoPiFrac + 4))
+  private val q4Phic = reg(fit((q3Phi << p.fineGuard).asSInt -& q3Delta, F))
+  // ---- q5: radians; q6: rotation products; q7 (output register): small rotation by -delta ----
+  private val q5Dr = reg(sat(shR(q4Raw, p.twoPiFrac + F - p.rotFrac), p.rotWidth))
+  private val q5Sp = delay(q0Sp, 5); private val q5Cp = delay(q0Cp, 5)
+  private val q6RotS = reg(q5Dr * q5Cp); private val q6RotC = reg(q5Dr * q5Sp)
+  private val q6Sp = reg(q5Sp); private val q6Cp = reg(q5Cp)
+  private val outV = delay(q4V, 3)
+  private val outSin = reg(sat(q6Sp -& shR(q6RotS, p.rotFrac), p.outputBits))
+  private val outCos = reg(sat(q6Cp +& shR(q6RotC, p.rotFrac), p.outputBits))
   io.out.valid := outV
   io.out.bits.sin := outSin
   io.out.bits.cos := outCos
@@ -159,33 +178,84 @@ class AdaptiveCorrector(val p: AdaptParams) extends Module with moire.emit.Laten
   io.out.bits.otrSin := ShiftRegister(io.in.bits.otrSin, latency)
   io.out.bits.otrCos := ShiftRegister(io.in.bits.otrCos, latency)
 
-  // ---- PLL (smoothed phase) and LMS update of the table ----
+  // ---- PLL (smoothed phase) on q4's fine phase, the table's error signal ----
   private val theta = RegInit(0.S(F.W))
   private val vel = RegInit(0.S(F.W))
   private val prevPhic = RegInit(0.S(F.W))
   private val lockMax = (1L << p.lockBits) - 1
   private val lockCnt = RegInit(0.U(p.lockBits.W))
-  when(p2V) {
-    val pred = fit(theta +& vel, F)
-    val e = fit(p2Phic -& pred, F)
-    val d = fit(p2Phic -& prevPhic, F)
+  private val pred = fit(theta +& vel, F)
+  private val e = fit(q4Phic -& pred, F)
+  when(q4V) {
+    val d = fit(q4Phic -& prevPhic, F)
     theta := fit(pred +& shR(e, p.pllKp), F)
     vel := fit(vel +& shR(e, p.pllKv) +& shR(d -& vel, p.pllKf), F)
-    prevPhic := p2Phic
+    prevPhic := q4Phic
     lockCnt := Mux(abs(e) < lit(1L << (F - p.lockShift), F + 1), Mux(lockCnt === lockMax.U, lockCnt, lockCnt + 1.U), 0.U)
-    if (p.harmonicEntries > 0) {
-      val enable = lockCnt === lockMax.U && abs(vel) >= lit(1L << (F - p.minSpeedShift), F + 1)
-      when(enable) {
-        val sh = p.interpBits + p.harmonicRate
-        val j = p2Idx +% 1.U
-        val leak = shR(tableSum, p.tableIndexBits + p.meanShift)
-        val w0 = ((1 << p.interpBits).U -& p2Frac).zext
-        val t0 = sat(table(p2Idx) +& shR(e * w0, sh) -& leak, p.tableBits)
-        val t1 = sat(table(j) +& shR(e * p2Frac.zext, sh) -& leak, p.tableBits)
-        tableSum := fit(tableSum +& (t0 -& table(p2Idx)) +& (t1 -& table(j)), tableSum.getWidth)
-        table(p2Idx) := t0
-        table(j) := t1
+  }
+  private val q5E = reg(e)
+  private val q5En = valid(q4V && lockCnt === lockMax.U && abs(vel) >= lit(1L << (F - p.minSpeedShift), F + 1))
+  tbl.foreach(_.update())
+
+  /** The table: read (q0), interpolated (q1 to q3: `delta`), and updated by LMS at rmwStage
+    * (`update`), forwarding the writes still in flight so that back-to-back updates of one entry add up exactly.
+    */
+  private class Table {
+    val half = entries / 2
+    val bw = ib - 1
+    val banks = Seq.fill(2)(SyncReadMem(half, SInt(p.tableBits.W)))
+    val written = Seq.fill(2)(RegInit(0.U(half.W)))
+    val rAddr = Seq(((idx +% 1.U) >> 1)(bw - 1, 0), (idx >> 1)(bw - 1, 0)) // even bank, odd bank
+    // the write port: registered read-modify-write results (w), written one clock after the RMW
+    val wV = RegInit(false.B)
+    val wAddr = Seq.fill(2)(Reg(UInt(bw.W)))
+    val wData = Seq.fill(2)(Reg(SInt(p.tableBits.W)))
+    val wOld = Seq.fill(2)(Reg(SInt(p.tableBits.W)))
+    val read = banks.indices.map { b =>
+      val hit = valid(wV && wAddr(b) === rAddr(b))
+      val known = reg(written(b)(rAddr(b)))
+      val data = banks(b).read(rAddr(b))
+      when(wV) { banks(b).write(wAddr(b), wData(b)); written(b) := written(b) | UIntToOH(wAddr(b), half) }
+      Mux(hit, reg(wData(b)), Mux(known, data, 0.S))
+    }
+    val q0R = rAddr.map(reg(_))
+    // q1: entries idx (a) and idx + 1 (b) from the two banks
+    val odd = q0Idx(0)
+    val a = Mux(odd, read(1), read(0))
+    val b = Mux(odd, read(0), read(1))
+    val q1A = reg(a); val q1Diff = reg(b -& a); val q1Frac = reg(q0Frac); val q1Mean = reg(q0Mean)
+    val q1Read = read.map(reg(_))
+    // q2: interpolation product; q3: delta
+    val q2Prod = reg(q1Diff * q1Frac.zext); val q2A = reg(q1A); val q2Mean = reg(q1Mean)
+    val delta: SInt = reg(fit(q2A +& shR(q2Prod, p.interpBits) -& q2Mean, dw))
+
+    def update(): Unit = {
+      // q6: LMS products; q7: their rounded steps, the leak, and the youngest in-flight write of each entry
+      val q5Idx = delay(q0Idx, 5); val q5Frac = delay(q0Frac, 5)
+      val sh = p.interpBits + p.harmonicRate
+      val q6P0 = reg(q5E * ((1 << p.interpBits).U -& q5Frac).zext); val q6P1 = reg(q5E * q5Frac.zext)
+      val q6En = valid(q5En); val q6Odd = reg(q5Idx(0))
+      val q6R = q0R.map(delay(_, 6)); val q6Read = q1Read.map(delay(_, 5))
+      // writes not in the value read at q0: those of the rmwStage clocks since; q7 looks at all but the last
+      val hist = (0 until p.rmwStage - 2).scanLeft((wV, wAddr, wData)) { case ((v, ad, da), _) =>
+        (valid(v), ad.map(reg(_)), da.map(reg(_))) }
+      val cand = banks.indices.map { b =>
+        hist.foldRight(q6Read(b)) { case ((v, ad, da), older) => Mux(v && ad(b) === q6R(b), da(b), older) } }
+      val q7V = valid(q6En)
+      val q7Inc0 = reg(shR(q6P0, sh)); val q7Inc1 = reg(shR(q6P1, sh))
+      val q7Leak = reg(shR(tableSum, p.tableIndexBits + p.meanShift))
+      val q7Cand = cand.map(reg(_)); val q7R = q6R.map(reg(_)); val q7Odd = reg(q6Odd)
+      // q8: read-modify-write of entries idx and idx + 1 (one in each bank)
+      val old = banks.indices.map(b => Mux(wV && wAddr(b) === q7R(b), wData(b), q7Cand(b)))
+      val old0 = Mux(q7Odd, old(1), old(0)); val old1 = Mux(q7Odd, old(0), old(1))
+      val t0 = sat(old0 +& q7Inc0 -& q7Leak, p.tableBits)
+      val t1 = sat(old1 +& q7Inc1 -& q7Leak, p.tableBits)
+      wV := q7V
+      when(q7V) {
+        for (bk <- banks.indices) { wAddr(bk) := q7R(bk); wOld(bk) := old(bk) }
+        wData(0) := Mux(q7Odd, t1, t0); wData(1) := Mux(q7Odd, t0, t1)
       }
+      when(wV) { tableSum := fit(tableSum +& (wData(0) -& wOld(0)) +& (wData(1) -& wOld(1)), tableSum.getWidth) }
     }
   }
 }

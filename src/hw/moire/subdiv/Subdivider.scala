@@ -62,11 +62,11 @@ class Subdivider(val p: SubdivParams) extends Module with moire.emit.Latency {
   private val pb = p.angleBits
   private val ib = p.inputBits
 
-  // ---- stage 1: input register (scaling, octant choice, signal-present test) ----
+  // ---- stage 1: input register (scaling, octant choice, the squares of the signal-present test) ----
   private val sn = io.in.bits.sin
   private val cs = io.in.bits.cos
-  private val sq = (sn * sn).asUInt +& (cs * cs).asUInt
-  private val present1 = RegNext(sq >= p.presentSq.U)
+  private val sqS1 = RegNext((sn * sn).asUInt)
+  private val sqC1 = RegNext((cs * cs).asUInt)
   private val otr1 = RegNext(io.in.bits.otrSin || io.in.bits.otrCos)
   private val valid1 = RegNext(io.in.valid, false.B)
   private val x1 = Reg(SInt(p.width.W)).suggestName("cordic_x")
@@ -95,7 +95,9 @@ class Subdivider(val p: SubdivParams) extends Module with moire.emit.Latency {
   cordic.io.in.bits.y := y1
   cordic.io.in.bits.z := 0.S
   private val lc = cordic.latency
-  private val present2d = ShiftRegister(present1, lc)
+  require(lc >= 1, "the signal-present test takes a clock of the CORDIC's latency")
+  // the amplitude compare in the first CORDIC clock, then delayed beside the CORDIC
+  private val present2d = ShiftRegister(RegNext(sqS1 +& sqC1 >= p.presentSq.U), lc - 1)
   private val otr2d = ShiftRegister(otr1, lc)
   private val useSin2d = ShiftRegister(useSin1, lc)
   private val sNeg2d = ShiftRegister(sNeg1, lc)
@@ -146,24 +148,35 @@ class Subdivider(val p: SubdivParams) extends Module with moire.emit.Latency {
   // ---- A/B/Z generator and sticky flags ----
   private val genStarted = RegInit(false.B)
   private val outPos = RegInit(0.S(p.positionWidth.W))
+  // outPos + 1 and outPos - 1, kept beside it so that a step is a choice, not an add after the compare
+  private val outPosUp = RegInit(1.S(p.positionWidth.W))
+  private val outPosDn = RegInit(-1.S(p.positionWidth.W))
+  private def wrapPos(v: SInt): SInt = v(p.positionWidth - 1, 0).asSInt
   private val waitW = log2Ceil(p.minEdgeClocks + 1)
   private val waitCnt = RegInit(0.U(waitW.W))
   private val pending = (out.position - outPos)(p.positionWidth - 1, 0).asSInt
   when(!genStarted) {
-    when(outValid) { outPos := out.position; genStarted := true.B }
+    when(outValid) {
+      outPos := out.position; genStarted := true.B
+      outPosUp := wrapPos(out.position + 1.S); outPosDn := wrapPos(out.position - 1.S)
+    }
   }.elsewhen(waitCnt === 0.U && pending =/= 0.S) {
-    outPos := (outPos + Mux(pending > 0.S, 1.S, -1.S))(p.positionWidth - 1, 0).asSInt
+    val up = pending > 0.S
+    outPos := Mux(up, outPosUp, outPosDn)
+    outPosUp := Mux(up, wrapPos(outPosUp + 1.S), outPos)
+    outPosDn := Mux(up, outPos, wrapPos(outPosDn - 1.S))
     waitCnt := (p.minEdgeClocks - 1).U
   }.elsewhen(waitCnt =/= 0.U) {
     waitCnt := waitCnt - 1.U
   }
-  private val absPending = Mux(pending < 0.S, -pending.pad(p.positionWidth + 1), pending.pad(p.positionWidth + 1)).asUInt
   private def sticky(event: Bool): Bool = {
     val r = RegInit(false.B)
     r := (r && !io.clearStatus) || event
     r
   }
-  io.status.overspeed := sticky(genStarted && absPending > p.backlogLimit.U)
+  // |pending| > limit as two compares of pending (no negation in the path)
+  private val w1 = p.positionWidth + 1
+  io.status.overspeed := sticky(genStarted && (pending > p.backlogLimit.S(w1.W) || pending < (-p.backlogLimit).S(w1.W)))
   io.status.stepFault := sticky(outValid && out.stepFault)
   io.status.signalLost := sticky(outValid && !out.present)
   io.status.overRange := sticky(outValid && out.overRange)
