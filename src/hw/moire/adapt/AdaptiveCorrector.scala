@@ -151,7 +151,7 @@ class AdaptiveCorrector(val p: AdaptParams) extends Module with moire.emit.Laten
   private val frac: UInt = u(aw - p.tableIndexBits - 1, aw - p.tableIndexBits - p.interpBits)
   private val q0V = valid(cordic.io.out.valid)
   private val q0Sp = delay(hSp, lc + 1); private val q0Cp = delay(hCp, lc + 1)
-  private val q0Phi = reg(phi); private val q0Idx = reg(idx); private val q0Frac = reg(frac)
+  private val q0Phi = reg(phi); private val q0Odd = reg(idx(0)); private val q0Frac = reg(frac)
   private val q0Mean = reg(shR(tableSum, p.tableIndexBits))
   private val dw = p.tableBits + 3
   /** q3: the interpolated table value less the table mean (fine angle). */
@@ -184,14 +184,17 @@ class AdaptiveCorrector(val p: AdaptParams) extends Module with moire.emit.Laten
   private val prevPhic = RegInit(0.S(F.W))
   private val lockMax = (1L << p.lockBits) - 1
   private val lockCnt = RegInit(0.U(p.lockBits.W))
+  // The loop closes in one clock, so it is written for short paths (same numbers as the model's):
+  // e = phic - theta - vel with a carry-save layer before one adder, each rounded shift added as the
+  // adder's carry-in, the lock test as a bit pattern, and vel + shR(d - vel) formed beside e.
   private val pred = fit(theta +& vel, F)
-  private val e = fit(q4Phic -& pred, F)
+  private val e = PllMath.sub2(q4Phic, theta, vel, F)
   when(q4V) {
     val d = fit(q4Phic -& prevPhic, F)
-    theta := fit(pred +& shR(e, p.pllKp), F)
-    vel := fit(vel +& shR(e, p.pllKv) +& shR(d -& vel, p.pllKf), F)
+    theta := PllMath.addShR(pred, e, p.pllKp, F)
+    vel := PllMath.addShR(fit(vel +& shR(d -& vel, p.pllKf), F), e, p.pllKv, F)
     prevPhic := q4Phic
-    lockCnt := Mux(abs(e) < lit(1L << (F - p.lockShift), F + 1), Mux(lockCnt === lockMax.U, lockCnt, lockCnt + 1.U), 0.U)
+    lockCnt := Mux(PllMath.absBelow(e, F - p.lockShift), Mux(lockCnt === lockMax.U, lockCnt, lockCnt + 1.U), 0.U)
   }
   private val q5E = reg(e)
   private val q5En = valid(q4V && lockCnt === lockMax.U && abs(vel) >= lit(1L << (F - p.minSpeedShift), F + 1))
@@ -205,7 +208,9 @@ class AdaptiveCorrector(val p: AdaptParams) extends Module with moire.emit.Laten
     val bw = ib - 1
     val banks = Seq.fill(2)(SyncReadMem(half, SInt(p.tableBits.W)))
     val written = Seq.fill(2)(RegInit(0.U(half.W)))
-    val rAddr = Seq(((idx +% 1.U) >> 1)(bw - 1, 0), (idx >> 1)(bw - 1, 0)) // even bank, odd bank
+    private val next = idx +% 1.U
+    moire.emit.Unused("next_index_lsb", next(0)) // the even bank is addressed by (idx + 1) / 2
+    val rAddr = Seq(next(bw, 1), idx(bw, 1)) // even bank, odd bank
     // the write port: registered read-modify-write results (w), written one clock after the RMW
     val wV = RegInit(false.B)
     val wAddr = Seq.fill(2)(Reg(UInt(bw.W)))
@@ -213,14 +218,14 @@ class AdaptiveCorrector(val p: AdaptParams) extends Module with moire.emit.Laten
     val wOld = Seq.fill(2)(Reg(SInt(p.tableBits.W)))
     val read = banks.indices.map { b =>
       val hit = valid(wV && wAddr(b) === rAddr(b))
-      val known = reg(written(b)(rAddr(b)))
+      val known = reg(VecInit(written(b).asBools)(rAddr(b)))
       val data = banks(b).read(rAddr(b))
       when(wV) { banks(b).write(wAddr(b), wData(b)); written(b) := written(b) | UIntToOH(wAddr(b), half) }
       Mux(hit, reg(wData(b)), Mux(known, data, 0.S))
     }
     val q0R = rAddr.map(reg(_))
     // q1: entries idx (a) and idx + 1 (b) from the two banks
-    val odd = q0Idx(0)
+    val odd = q0Odd
     val a = Mux(odd, read(1), read(0))
     val b = Mux(odd, read(0), read(1))
     val q1A = reg(a); val q1Diff = reg(b -& a); val q1Frac = reg(q0Frac); val q1Mean = reg(q0Mean)
@@ -231,10 +236,10 @@ class AdaptiveCorrector(val p: AdaptParams) extends Module with moire.emit.Laten
 
     def update(): Unit = {
       // q6: LMS products; q7: their rounded steps, the leak, and the youngest in-flight write of each entry
-      val q5Idx = delay(q0Idx, 5); val q5Frac = delay(q0Frac, 5)
+      val q5Odd = delay(q0Odd, 5); val q5Frac = delay(q0Frac, 5)
       val sh = p.interpBits + p.harmonicRate
       val q6P0 = reg(q5E * ((1 << p.interpBits).U -& q5Frac).zext); val q6P1 = reg(q5E * q5Frac.zext)
-      val q6En = valid(q5En); val q6Odd = reg(q5Idx(0))
+      val q6En = valid(q5En); val q6Odd = reg(q5Odd)
       val q6R = q0R.map(delay(_, 6)); val q6Read = q1Read.map(delay(_, 5))
       // writes not in the value read at q0: those of the rmwStage clocks since; q7 looks at all but the last
       val hist = (0 until p.rmwStage - 2).scanLeft((wV, wAddr, wData)) { case ((v, ad, da), _) =>
