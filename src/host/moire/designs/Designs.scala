@@ -85,7 +85,9 @@ object Designs {
     counter(QuadratureParams(HarmonicParams().countBits)),
     de2115("board-de2-115", BoardParams()),
     de2115("board-de2-115-corrected", BoardParams(design = BoardDesign.Corrected)),
-    ulx3s("board-ulx3s", BoardParams()))
+    de2115("board-de2-115-compensated", BoardParams(design = BoardDesign.Compensated)),
+    ulx3s("board-ulx3s", BoardParams()),
+    ulx3s("board-ulx3s-compensated", BoardParams(design = BoardDesign.Compensated)))
 
   lazy val names: Seq[String] = all().map(_.name)
 
