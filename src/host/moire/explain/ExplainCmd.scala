@@ -22,6 +22,7 @@ object ExplainCmd {
     if (o.noise < 0) throw new ExplainError(s"--noise must be 0 or more (full-scale rms), got ${o.noise}")
     if (o.samples < 1) throw new ExplainError(s"--samples must be at least 1, got ${o.samples}")
     if (!(o.amplitude > 0)) throw new ExplainError(s"--amplitude must be above 0, got ${o.amplitude}")
+    o.linesPerRev.foreach(l => if (!(l > 0)) throw new ExplainError(s"--lines-per-rev must be above 0, got $l"))
     val fmt = AdcFormat.parse(o.adc).fold(e => throw new ExplainError(s"--adc: $e"), identity)
     val d = try PhysicsModel(SignalParams(o.amplitude, o.offsetSin, o.offsetCos, o.gainSin, o.gainCos, o.phaseErrorDeg, Nil, o.noise, o.seed),
       PhysicsModel.parseMotion(o.motion), o.sampleRateHz, o.samples, Adc(o.adcBits, fmt), o.linesPerRev, o.effects.map(EffectSpec.parse))
@@ -37,7 +38,7 @@ object ExplainCmd {
 
   def simulate(o: SimOptions): String = {
     val m = model(o)
-    val (rec, _) = m.generate()
+    val (rec, _) = try m.generate() catch { case e: IllegalArgumentException => throw new ExplainError(e.getMessage.stripPrefix("requirement failed: ")) }
     val path = os.Path(o.out, os.pwd)
     Recording.write(path, rec)
     s"wrote $path (${rec.length} samples, ${m.effects.map(_.effect).mkString(", ") match { case "" => "default model only"; case s => s }})"
@@ -47,11 +48,7 @@ object ExplainCmd {
   def explain(files: Seq[String], jsonDir: Option[String], plotDir: Option[String], modelFile: Option[String], quiet: Boolean,
               rtl: Option[Seq[String]] = Some(Nil)): Seq[Report] = {
     if (files.isEmpty) throw new ExplainError("explain: name at least one recording file")
-    val givenEffects = modelFile.map { f =>
-      val text = readText(f)
-      val v = try ujson.read(text) catch { case e: Exception => throw new ExplainError(s"$f: not valid JSON") }
-      v.obj.get("effects").map(_.arr.toSeq.map(EffectSpec.fromJson(_, f))).getOrElse(Nil)
-    }.getOrElse(Nil)
+    val givenEffects = modelFile.map(f => PhysicsModel.effectsFromJson(PhysicsModel.jsonObject(readText(f), f), f, Nil)).getOrElse(Nil)
     val paths = files.map(f => os.Path(f, os.pwd))
     // Outputs are checked before the long work: writable folders, no two reports under one name.
     val outDirs = (jsonDir ++ plotDir).map(d => os.Path(d, os.pwd))
@@ -156,10 +153,17 @@ object ExplainCmd {
     else throw new ExplainError(s"$p:1: first line must be '${Recording.Magic}' or '${Calibration.Magic}', got '${first.take(40)}'")
   }
 
+  /** explain-bench's range of --samples: a few fringe periods of the ramp up to the 2^31-sample limit of an array. */
+  val BenchMinSamples = 10000
+  val BenchMaxSamples = 1 << 30
+
   /** Simulates a recording with five effects (skew, bandwidth, harmonic, stuck bit, interference) and explains it;
     * prints the time and samples per second.
     */
   def bench(samples: Int, out: Option[String]): String = {
+    if (samples < BenchMinSamples || samples > BenchMaxSamples)
+      throw new ExplainError(s"--samples must be in $BenchMinSamples..$BenchMaxSamples, got $samples")
+    out.foreach(d => moire.files.SafeWrite.checkFolder(os.Path(d, os.pwd)))
     val m = PhysicsModel(SignalParams(amplitude = 0.9, phaseErrorDeg = 1.0, noiseRms = 0.0007, seed = 7),
       moire.signal.Motion.Ramp(20e3, 250e3, samples / 10e6), 10e6, samples, Adc(12), None,
       Seq(EffectSpec("channel_skew", Map("skew_s" -> 20e-9)), EffectSpec("bandwidth", Map("cutoff_hz" -> 600e3)),
