@@ -188,10 +188,11 @@ object Main {
               @arg(doc = "do not compare a recording's board outputs (position column) with the RTL") noRtl: Flag = Flag()): Unit =
     moire.explain.ExplainCmd.explainArgs(files.value, jsonDir, plots, model, quiet.value, subdiv, noRtl.value)
 
-  @main(doc = "Benchmark: simulate and explain one recording, print the time and samples per second.")
-  def explainBench(@arg(doc = "samples in the recording") samples: Int = 1000000,
-                   @arg(doc = "folder for the recording, JSON and plots (default: a temporary folder)") out: Option[String] = None): Unit =
-    println(moire.explain.ExplainCmd.bench(samples, out))
+  @main(doc = "Benchmark: simulate and explain one recording; print the time, samples per second and peak heap (also per million samples) of reading and of the whole explain.")
+  def explainBench(@arg(doc = "samples in the recording (default 1000000)") samples: Int = 1000000,
+                   @arg(doc = "folder for the recording, JSON and plots (default: a temporary folder)") out: Option[String] = None,
+                   @arg(doc = "explain this moire-recording v1 file instead of a simulated one (--samples is then ignored)") recording: Option[String] = None): Unit =
+    moire.explain.ExplainCmd.bench(samples, out, recording, println(_))
 
   @main(doc = "Write a board project: de2-115 (SystemVerilog, .qsf, .sdc, .qpf, flash.sh for Quartus) or ulx3s (Verilog, .lpf, build.sh for the open ECP5 flow).")
   def board(@arg(doc = "board name: de2-115 | ulx3s (also accepted as the first word after board)") name: String,

@@ -157,34 +157,54 @@ object ExplainCmd {
   val BenchMinSamples = 10000
   val BenchMaxSamples = 1 << 30
 
-  /** Simulates a recording with five effects (skew, bandwidth, harmonic, stuck bit, interference) and explains it;
-    * prints the time and samples per second.
+  /** Simulates a recording with five effects (skew, bandwidth, harmonic, stuck bit, interference), or takes
+    * `recording`, and explains it; `say` gets two lines: reading (with the per-file checks) and the whole
+    * explain, each with its time, the peak heap and the peak heap per million samples.
     */
-  def bench(samples: Int, out: Option[String]): String = {
-    if (samples < BenchMinSamples || samples > BenchMaxSamples)
+  def bench(samples: Int, out: Option[String], recording: Option[String], say: String => Unit): Unit = {
+    if (recording.isEmpty && (samples < BenchMinSamples || samples > BenchMaxSamples))
       throw new ExplainError(s"--samples must be in $BenchMinSamples..$BenchMaxSamples, got $samples")
     out.foreach(d => moire.files.SafeWrite.checkFolder(os.Path(d, os.pwd)))
+    val dir = out.map(os.Path(_, os.pwd)).getOrElse(os.temp.dir(prefix = "moire-bench"))
+    val file = recording.map { f =>
+      val p = os.Path(f, os.pwd)
+      if (!os.isFile(p)) throw new ExplainError(s"$f: no such file")
+      p
+    }.getOrElse(benchRecording(samples, dir / "bench.csv"))
+    val mb = os.size(file) / 1048576.0
+    val maxMb = Runtime.getRuntime.maxMemory / 1048576.0
+    val (n, readS, readPeak) = peakHeap { val r = Recording.read(file); checkSignals(file, r); r.length }
+    def perM(peak: Double) = peak / (n / 1e6)
+    say(f"explain-bench: read and checked $n rows ($mb%.0f MB file) in $readS%.1f s; peak heap $readPeak%.0f MB of $maxMb%.0f MB " +
+      f"(${perM(readPeak)}%.1f MB per million samples)")
+    val (rep, s, peak) = peakHeap(explain(Seq(file.toString), Some((dir / "json").toString), Some((dir / "plots").toString), None, quiet = false).head)
+    say(f"explain-bench: $n samples explained in $s%.1f s (read, fit, JSON, plots) = ${n / s}%.0f samples/s; " +
+      f"peak heap $peak%.0f MB of $maxMb%.0f MB (${perM(peak)}%.1f MB per million samples); ${Runtime.getRuntime.availableProcessors} cores; " +
+      s"findings: ${rep.findings.map(_.effect).mkString(", ")}")
+  }
+
+  /** Writes the bench's simulated recording; its arrays are garbage once this returns. */
+  private def benchRecording(samples: Int, file: os.Path): os.Path = {
     val m = PhysicsModel(SignalParams(amplitude = 0.9, phaseErrorDeg = 1.0, noiseRms = 0.0007, seed = 7),
       moire.signal.Motion.Ramp(20e3, 250e3, samples / 10e6), 10e6, samples, Adc(12), None,
       Seq(EffectSpec("channel_skew", Map("skew_s" -> 20e-9)), EffectSpec("bandwidth", Map("cutoff_hz" -> 600e3)),
         EffectSpec("harmonic", Map("order" -> 3, "amplitude_rel" -> 0.001), "sin"),
         EffectSpec("adc_bit_fault", Map("bit" -> 2, "stuck_at" -> 0), "cos"),
         EffectSpec("interference", Map("frequency_hz" -> 50e3, "amplitude_fs" -> 3e-4))))
-    val (rec, _) = m.generate()
-    val dir = out.map(os.Path(_, os.pwd)).getOrElse(os.temp.dir(prefix = "moire-bench"))
-    val file = dir / "bench.csv"
-    Recording.write(file, rec)
-    val bytes = os.size(file)
-    // peak heap of the explain step alone: the generator's arrays are dropped and collected first
+    Recording.write(file, m.generate()._1)
+    file
+  }
+
+  /** The result of `body`, its seconds and the peak heap (MB, the sum of the heap pools' peaks, an upper
+    * bound) while it ran, counted from a collected heap.
+    */
+  def peakHeap[T](body: => T): (T, Double, Double) = {
     val pools = java.lang.management.ManagementFactory.getMemoryPoolMXBeans.asScala.filter(_.getType == java.lang.management.MemoryType.HEAP)
     System.gc()
     pools.foreach(_.resetPeakUsage())
     val t0 = System.nanoTime()
-    val rep = explain(Seq(file.toString), Some((dir / "json").toString), Some((dir / "plots").toString), None, quiet = false).head
+    val r = body
     val s = (System.nanoTime() - t0) / 1e9
-    val peakMb = pools.map(_.getPeakUsage.getUsed).sum / 1048576.0
-    val maxMb = Runtime.getRuntime.maxMemory / 1048576.0
-    f"explain-bench: $samples samples (${bytes / 1048576.0}%.0f MB file) explained in $s%.1f s (read, fit, JSON, plots) = ${samples / s}%.0f samples/s; " +
-      f"peak heap $peakMb%.0f MB of $maxMb%.0f MB; ${Runtime.getRuntime.availableProcessors} cores; findings: ${rep.findings.map(_.effect).mkString(", ")}"
+    (r, s, pools.map(_.getPeakUsage.getUsed).sum / 1048576.0)
   }
 }
