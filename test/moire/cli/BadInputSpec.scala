@@ -14,22 +14,16 @@ class BadInputSpec extends AnyFlatSpec with Matchers {
   private val good = dir / "good.csv"
   os.write(good, head + "sin,cos\n" + rows(2000))
 
-  /** (exit code, stderr) of the command line run here. */
-  private def run(args: String*): (Int, String) = {
-    val err = new java.io.ByteArrayOutputStream(); val out = new java.io.ByteArrayOutputStream()
-    val (e0, o0) = (System.err, System.out)
-    System.setErr(new java.io.PrintStream(err, true)); System.setOut(new java.io.PrintStream(out, true))
-    val code = try Console.withOut(out)(Console.withErr(err)(Main.run(args.toArray))) finally { System.setErr(e0); System.setOut(o0) }
-    (code, err.toString)
-  }
+  import CliInProcess.{classNames, runCli}
 
-  private val classNames = """(java|scala|ujson|mainargs|chisel3|firrtl)\.[a-z]+\.[A-Z]|Exception|\$[A-Z]|\tat """.r
+  /** The kinds registered by [[bad]]. */
+  private var kinds = 0
 
-  /** One bad case: exit 2, one line naming `expect`, no class name, files in `keep` unchanged. */
-  private def bad(kind: String, expect: String, keep: Seq[os.Path] = Nil)(args: String*): Unit =
+  private def bad(kind: String, expect: String, keep: Seq[os.Path] = Nil)(args: String*): Unit = {
+    kinds += 1
     it should s"refuse $kind" in {
       val before = keep.map(f => f -> (if (os.exists(f)) Some(os.read.bytes(f).toSeq) else None))
-      val (code, err) = run(args: _*)
+      val (code, err) = runCli(args: _*)
       withClue(s"stderr: $err") {
         code shouldBe 2
         err.linesIterator.filter(_.nonEmpty).toSeq should have size 1
@@ -38,12 +32,21 @@ class BadInputSpec extends AnyFlatSpec with Matchers {
       }
       for ((f, b) <- before) withClue(s"$f changed: ") { (if (os.exists(f)) Some(os.read.bytes(f).toSeq) else None) shouldBe b }
     }
+  }
 
   private def rec(name: String, text: String): String = { os.write.over(dir / name, text); (dir / name).toString }
+  /** A 36-point calibration table (10 degree steps): header and rows. */
+  private val calRows = "angle_deg,error_arcsec\n" + (0 until 360 by 10).map { a =>
+    val t = math.toRadians(a); f"$a,${2 * math.sin(t) + 0.5 * math.cos(3 * t)}%.4f" }.mkString("\n") + "\n"
+  private val cal = dir / "cal.csv"
+  os.write.over(cal, "# moire-calibration v1\n" + calRows)
+  /** A file where a folder is wanted. */
+  private val aFile = dir / "a-file"
+  os.write.over(aFile, "keep\n")
 
   "explain" should "read a recording with a byte-order mark, CRLF line ends and adc as free text" in {
     val f = rec("bom.csv", "\uFEFF" + (head + "# adc: AD9226\n# operator: bench 3\nsin,cos\n" + rows(2000)).replace("\n", "\r\n"))
-    val (code, err) = run("explain", f, "--quiet", "--no-rtl")
+    val (code, err) = runCli("explain", f, "--quiet", "--no-rtl")
     withClue(err) { code shouldBe 0 }
   }
 
@@ -80,6 +83,10 @@ class BadInputSpec extends AnyFlatSpec with Matchers {
     os.makeDir.all(dir / "a"); os.makeDir.all(dir / "b"); os.copy.over(good, dir / "a" / "x.csv"); os.copy.over(good, dir / "b" / "x.csv")
     "explain" }, (dir / "a" / "x.csv").toString, (dir / "b" / "x.csv").toString, "--json-dir", (dir / "j").toString)
   bad("an unknown option", "--foo")("explain", good.toString, "--foo")
+  bad("a --model that is a JSON list", "the model must be a JSON object")("explain", good.toString, "--quiet", "--model", rec("list.json", "[1]"))
+  bad("a --model whose effects are no list", "effects must be a list")("explain", good.toString, "--quiet", "--model", rec("eff5.json", """{"effects": 5}"""))
+  bad("calibration metadata harmonics beyond what 36 points support", "metadata harmonics '100' must be an integer in 0..16")(
+    "explain", rec("calh.csv", "# moire-calibration v1\n# harmonics: 100\n" + calRows), "--quiet")
 
   behavior of "simulate"
   private val existing = dir / "existing.csv"
@@ -98,7 +105,107 @@ class BadInputSpec extends AnyFlatSpec with Matchers {
   bad("an unknown ADC format", "--adc", Seq(existing))(sim("--adc", "gray"): _*)
   bad("an output through a file", "is a file, not a folder", Seq(good))("simulate", "--out", (good / "x.csv").toString, "--samples", "100")
 
+  bad("--motion constant:NaN", "--motion 'constant:NaN'", Seq(existing))(sim("--motion", "constant:NaN"): _*)
+  bad("--lines-per-rev -3", "--lines-per-rev must be above 0", Seq(existing))(sim("--lines-per-rev", "-3"): _*)
+  bad("an effect parameter NaN", "order 'NaN' is not a finite number", Seq(existing))(sim("--effect", "harmonic:order=NaN"): _*)
+  bad("--adc-bits 99", "bits must be within 4..24", Seq(existing))(sim("--adc-bits", "99"): _*)
+  bad("a --model that is not JSON", "not valid JSON", Seq(existing))(sim("--model", rec("nj.json", "not json")): _*)
+
+  behavior of "calibrate"
+  private val calOut = dir / "cal-out"
+  it should "read a calibration file with a byte-order mark and CRLF line ends" in {
+    val f = rec("calbom.csv", "\uFEFF" + ("# moire-calibration v1\n" + calRows).replace("\n", "\r\n"))
+    val (code, err) = runCli("calibrate", "--input", f, "--out", calOut.toString)
+    withClue(err) { code shouldBe 0 }
+  }
+  private def calib(args: String*): Seq[String] = Seq("calibrate", "--input", cal.toString, "--out", calOut.toString) ++ args
+  bad("a missing input", "no such file")("calibrate", "--input", (dir / "none.csv").toString, "--out", calOut.toString)
+  bad("a duplicated metadata key", "metadata key 'table' appears twice")(
+    "calibrate", "--input", rec("caldup.csv", "# moire-calibration v1\n# table: a\n# table: b\n" + calRows), "--out", calOut.toString)
+  bad("an error of NaN", "error_arcsec is NaN")("calibrate", "--input", rec("calnan.csv", "# moire-calibration v1\nangle_deg,error_arcsec\n0,1\n10,NaN\n"))
+  bad("an angle outside [0, 360]", "angle_deg 400.0 is outside [0, 360]")("calibrate", "--input", rec("cal400.csv", "# moire-calibration v1\nangle_deg,error_arcsec\n400,1\n"))
+  bad("a repeated angle", "angle 0.0 repeats line 3")("calibrate", "--input", rec("calrep.csv", "# moire-calibration v1\nangle_deg,error_arcsec\n0,1\n0,2\n"))
+  bad("--harmonics 0", "--harmonics (m) must be in 1..32, got 0")(calib("--harmonics", "0"): _*)
+  bad("--max-order 100 on 36 points", "36 points cannot determine 100 harmonics")(calib("--max-order", "100"): _*)
+  bad("--max-order 0", "--max-order must be at least 1, got 0")(calib("--max-order", "0"): _*)
+  bad("--lines 1000", "--lines must be a power of two")(calib("--lines", "1000"): _*)
+  bad("--subdivision 3", "--subdivision must be a power of two")(calib("--subdivision", "3"): _*)
+  bad("an output folder that is a file", "is a file, not a folder", Seq(aFile))("calibrate", "--input", cal.toString, "--out", aFile.toString)
+
+  behavior of "record (options, no board needed)"
+  private val port = (dir / "no-such-port").toString
+  private def recd(args: String*): Seq[String] = Seq("record", "--port", port, "--out", (dir / "r.csv").toString) ++ args
+  bad("no --seconds and no --burst", "give --seconds S")(recd(): _*)
+  bad("--seconds NaN", "--seconds must be in (0, 86400], got NaN")(recd("--seconds", "NaN"): _*)
+  bad("--baud 5", "--baud must be in 300..12000000, got 5")(recd("--seconds", "1", "--baud", "5"): _*)
+  bad("--adc-clock-hz Infinity", "--adc-clock-hz must be a positive number, got Infinity")(recd("--seconds", "1", "--adc-clock-hz", "Infinity"): _*)
+  bad("--listen-only without the board's figures", "--listen-only sends no commands")(recd("--seconds", "1", "--listen-only"): _*)
+  bad("--timeout-ms 0", "--timeout-ms must be in 10..60000, got 0")(recd("--seconds", "1", "--timeout-ms", "0"): _*)
+  bad("--burst 0", "--burst must be in 1..")(recd("--burst", "0"): _*)
+  bad("an unknown burst trigger", "--trigger 'wobble'")(recd("--burst", "100", "--trigger", "wobble"): _*)
+  bad("an output through a file (before the port is opened)", "is a file, not a folder", Seq(aFile))(
+    "record", "--port", port, "--seconds", "1", "--out", (aFile / "r.csv").toString)
+  bad("a serial port that does not exist", "no such serial port")(recd("--seconds", "1"): _*)
+  bad("no --port", "Missing argument: --port")("record", "--seconds", "1", "--out", (dir / "r.csv").toString)
+
+  behavior of "board-reg"
+  private def reg(args: String*): Seq[String] = Seq("board-reg", "--port", port) ++ args
+  bad("a write without a value", "must be NAME=VALUE")(reg("--write", "decimation"): _*)
+  bad("a write to an unknown register", "register 'nosuch' is unknown")(reg("--write", "nosuch=1"): _*)
+  bad("a write to a read-only register", "id is read-only")(reg("--write", "id=1"): _*)
+  bad("a read of an unknown register", "register 'nosuch' is unknown")(reg("--read", "nosuch"): _*)
+  bad("a missing coefficient file", "no such file")(reg("--coefficients", (dir / "none.json").toString): _*)
+  bad("a coefficient entry that is no object", "registers[0]: expected an object")(
+    reg("--coefficients", rec("badreg.json", """{"format": "moire-harmonic-coefficients v1", "registers": [5]}""")): _*)
+  bad("--timeout-ms -4", "--timeout-ms must be in 10..60000, got -4")(reg("--timeout-ms", "-4"): _*)
+
+  behavior of "emit"
+  private val emitOut = dir / "emit"
+  bad("--angle-width -5", "--angle-width must be in 8..48 (or left out for the default), got -5")("emit", "--angle-width", "-5", "--out", emitOut.toString)
+  bad("--frac-bits -7", "--frac-bits must be in 1..17")("emit", "--frac-bits", "-7", "--out", emitOut.toString)
+  bad("--iterations 99", "--iterations must be in 4..40, got 99")("emit", "--iterations", "99", "--out", emitOut.toString)
+  bad("--width NaN", "--width: 'NaN' is not a valid int")("emit", "--width", "NaN", "--out", emitOut.toString)
+  bad("an output folder that is a file (before elaboration)", "is a file, not a folder", Seq(aFile))("emit", "--out", aFile.toString)
+
+  behavior of "board"
+  private val boardOut = dir / "board"
+  bad("--clock-hz 12345", "--clock-hz must be in 1000000..200000000, got 12345")("board", "de2-115", "--clock-hz", "12345", "--out", boardOut.toString)
+  bad("an unknown --design", "--design: 'foo' is not a board design")("board", "ulx3s", "--design", "foo", "--out", boardOut.toString)
+  bad("--decimation 0", "--decimation must be in 1..16777216, got 0")("board", "de2-115", "--decimation", "0", "--out", boardOut.toString)
+  bad("--lines 1000 (compensated)", "--lines (fringe periods per turn) must be a power of two")(
+    "board", "de2-115", "--design", "compensated", "--lines", "1000", "--out", boardOut.toString)
+  bad("--harmonics 99 (compensated)", "--harmonics (m) must be in 1..32, got 99")(
+    "board", "ulx3s", "--design", "compensated", "--harmonics", "99", "--out", boardOut.toString)
+  bad("an output folder that is a file", "is a file, not a folder", Seq(aFile))("board", "de2-115", "--out", aFile.toString)
+  bad("an unknown board", "board 'kv260' is unknown")("board", "kv260", "--out", boardOut.toString)
+
+  behavior of "cost (fails before yosys runs)"
+  bad("an unknown --design", "--design: 'nosuch' is not a design")("cost", "--design", "nosuch")
+  bad("--angle-width -5", "--angle-width must be in 8..48")("cost", "--angle-width", "-5")
+  bad("a --json path through a file", "is a file, not a folder", Seq(aFile))("cost", "--json", (aFile / "x.json").toString)
+  bad("a sweep folder that is a file", "is a file, not a folder", Seq(aFile))("cost", "--sweep", "--out", aFile.toString)
+
+  behavior of "timing (fails before any tool runs)"
+  bad("an unknown --design", "--design: 'nosuch' is not a design")("timing", "--design", "nosuch")
+  bad("--speeds 5", "--speeds: '5' is not an ECP5 speed grade")("timing", "--design", "cordic", "--speeds", "5")
+  bad("--target-mhz NaN", "--target-mhz: NaN is outside 0..1000 MHz")("timing", "--design", "cordic", "--target-mhz", "NaN")
+  bad("--target-mhz Infinity", "--target-mhz: Infinity is outside 0..1000 MHz")("timing", "--design", "cordic", "--target-mhz", "Infinity")
+  bad("--target-mhz -3", "--target-mhz: -3.0 is outside 0..1000 MHz")("timing", "--design", "cordic", "--target-mhz", "-3")
+  bad("a --json path through a file", "is a file, not a folder", Seq(aFile))("timing", "--design", "cordic", "--json", (aFile / "t.json").toString)
+  bad("a --cache that is a file", "is a file, not a folder", Seq(aFile))("timing", "--design", "cordic", "--cache", aFile.toString)
+
   behavior of "replay"
   bad("an output that is its input", "is an input of this command", Seq(good))("replay", good.toString, "--out", good.toString)
   bad("a missing recording", "no such file")("replay", (dir / "none.csv").toString)
+  bad("an unknown --design", "--design: 'nosuch' is not a replayable design")("replay", good.toString, "--design", "nosuch")
+  bad("--counts 3", "--counts (M) must be a power of two")("replay", good.toString, "--counts", "3")
+  bad("an output through a file", "is a file, not a folder", Seq(aFile))("replay", good.toString, "--out", (aFile / "x.csv").toString)
+
+  behavior of "explain-bench"
+  bad("--samples 0", "--samples must be in 10000..")("explain-bench", "--samples", "0")
+
+  "BadInputSpec" should s"cover at least 60 kinds of bad input (has $kinds)" in {
+    info(s"$kinds kinds of bad input")
+    kinds should be >= 60
+  }
 }

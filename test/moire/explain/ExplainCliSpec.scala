@@ -30,9 +30,12 @@ class ExplainCliSpec extends AnyFlatSpec with Matchers {
     pngs should contain allOf ("rec_residual_time.png", "rec_residual_phase.png", "rec_residual_spectrum.png", "rec_effect_1_channel_skew.png")
   }
 
-  "explain-bench" should "print the time and the samples per second (small recording, not timed)" in {
-    val line = ExplainCmd.bench(40000, Some(os.temp.dir().toString))
-    line should fullyMatch regex """explain-bench: 40000 samples explained in [0-9.]+ s .* = [0-9]+ samples/s; .*findings: .*"""
+  "explain-bench" should "print the time, samples per second and peak heap of reading and of explain (small recording, not timed)" in {
+    val lines = Seq.newBuilder[String]
+    ExplainCmd.bench(40000, Some(os.temp.dir().toString), None, lines += _)
+    val Seq(read, all) = lines.result()
+    read should fullyMatch regex """explain-bench: read and checked 40000 rows \([0-9]+ MB file\) in [0-9.]+ s; peak heap [0-9]+ MB of [0-9]+ MB \([0-9.]+ MB per million samples\)"""
+    all should fullyMatch regex """explain-bench: 40000 samples explained in [0-9.]+ s .* = [0-9]+ samples/s; peak heap [0-9]+ MB of [0-9]+ MB \([0-9.]+ MB per million samples\); .*findings: .*"""
   }
 
   "explain on calibration data" should "write a calibration report and its plots" in {

@@ -47,7 +47,8 @@ class PhysicsModelSpec extends AnyFlatSpec with Matchers {
   "bad effect options" should "be one-line usage errors" in {
     intercept[moire.explain.ExplainError](EffectSpec.parse("skew:skew_s=1")).getMessage should include("'skew' is not an effect")
     intercept[moire.explain.ExplainError](EffectSpec.parse("channel_skew:skew=1")).getMessage should include("key in skew_s")
-    intercept[moire.explain.ExplainError](EffectSpec.parse("channel_skew:skew_s=abc")).getMessage should include("'abc' is not a number")
+    intercept[moire.explain.ExplainError](EffectSpec.parse("channel_skew:skew_s=abc")).getMessage should include("'abc' is not a finite number")
+    intercept[moire.explain.ExplainError](EffectSpec.parse("harmonic:order=NaN")).getMessage should include("'NaN' is not a finite number")
     intercept[moire.explain.ExplainError](PhysicsModel(base, Motion.Constant(1), 1e6, 10, Adc(12), None,
       Seq(EffectSpec("amplitude_modulation", Map("depth" -> 0.01)))).generate()).getMessage should include("lines_per_rev")
   }

@@ -26,6 +26,10 @@ case class CordicConfig(
   def params: CordicParams = {
     val m = CordicMode.parse(mode).fold(e => throw new UsageError(e), identity)
     val r = Rounding.parse(rounding).fold(e => throw new UsageError(e), identity)
+    // -1 means "the default"; any other negative value is a mistake, not the default
+    for ((opt, v, allowed) <- Seq(("frac-bits", fracBits, s"1..${width - 1}"), ("angle-width", angleWidth, "8..48"),
+      ("angle-guard-bits", angleGuardBits, "0..8")) if v < -1)
+      throw new UsageError(s"--$opt must be in $allowed (or left out for the default), got $v")
     try CordicParams(m, iterations, width, fracBits, angleWidth, guardBits, angleGuardBits, pipelineEvery, r,
       !noGainCompensation.value, peakTable, taper.value)
     catch { case e: IllegalArgumentException => throw new UsageError("--" + e.getMessage.stripPrefix("requirement failed: ")) }
@@ -81,6 +85,7 @@ object Main {
 
   @main(doc = "Reproduce the papers' accuracy tables; exit code 0 only when every row holds.")
   def accuracy(@arg(doc = "also write the rows as JSON to this file") json: Option[String] = None): Unit = {
+    json.foreach(f => moire.files.SafeWrite.checkFile(os.Path(f, os.pwd)))   // before the work, not after it
     val rows = Reproduce.rows(s => System.err.println(s"accuracy: $s ..."))
     AccuracyTable.print(rows)
     json.foreach { f =>
@@ -183,10 +188,11 @@ object Main {
               @arg(doc = "do not compare a recording's board outputs (position column) with the RTL") noRtl: Flag = Flag()): Unit =
     moire.explain.ExplainCmd.explainArgs(files.value, jsonDir, plots, model, quiet.value, subdiv, noRtl.value)
 
-  @main(doc = "Benchmark: simulate and explain one recording, print the time and samples per second.")
-  def explainBench(@arg(doc = "samples in the recording") samples: Int = 1000000,
-                   @arg(doc = "folder for the recording, JSON and plots (default: a temporary folder)") out: Option[String] = None): Unit =
-    println(moire.explain.ExplainCmd.bench(samples, out))
+  @main(doc = "Benchmark: simulate and explain one recording; print the time, samples per second and peak heap (also per million samples) of reading and of the whole explain.")
+  def explainBench(@arg(doc = "samples in the recording (default 1000000)") samples: Int = 1000000,
+                   @arg(doc = "folder for the recording, JSON and plots (default: a temporary folder)") out: Option[String] = None,
+                   @arg(doc = "explain this moire-recording v1 file instead of a simulated one (--samples is then ignored)") recording: Option[String] = None): Unit =
+    moire.explain.ExplainCmd.bench(samples, out, recording, println(_))
 
   @main(doc = "Write a board project: de2-115 (SystemVerilog, .qsf, .sdc, .qpf, flash.sh for Quartus) or ulx3s (Verilog, .lpf, build.sh for the open ECP5 flow).")
   def board(@arg(doc = "board name: de2-115 | ulx3s (also accepted as the first word after board)") name: String,
@@ -270,6 +276,12 @@ object Main {
       return 0
     }
     try {
+      // runRaw hands back what a command threw (runEither would print it with its class name)
+      if (!help) parser.runRaw(argv.toSeq, allowPositional = false) match {
+        case mainargs.Result.Success(_) => return 0
+        case mainargs.Result.Failure.Exception(t) => throw t
+        case _ => () // a parse error: worded by runEither below, which fails the same way before running anything
+      }
       parser.runEither(argv.toSeq, allowPositional = false) match {
         case Left(msg) if help =>
           val at = msg.indexOf("Expected Signature:")
@@ -285,9 +297,17 @@ object Main {
       // Last resort: what a library let through still becomes one line in words, never a class name.
       case e: java.io.IOException => System.err.println(s"moire: ${moire.files.SafeWrite.reason(e)}"); 2
       case e: IllegalArgumentException =>
-        System.err.println(s"moire: ${Option(e.getMessage).getOrElse("invalid value").stripPrefix("requirement failed: ")}"); 2
+        System.err.println(s"moire: ${plain(Option(e.getMessage).getOrElse("invalid value").stripPrefix("requirement failed: "))}"); 2
       case _: OutOfMemoryError =>
         System.err.println("moire: out of memory; give the JVM more (e.g. JAVA_OPTS=-Xmx8g) or a shorter recording"); 2
+      case e: Exception =>
+        if (sys.env.contains("MOIRE_DEBUG")) e.printStackTrace()
+        System.err.println(s"moire: internal error: ${plain(Option(e.getMessage).getOrElse("no message"))} (MOIRE_DEBUG=1 shows where)"); 2
     }
   }
+
+  private val className = """\b(?:[a-z][\w]*\.)+[A-Z][\w$]*(?:Exception|Error)?(?::\s*)?""".r
+  /** The first line of a message, without Java class names. */
+  def plain(msg: String): String =
+    className.replaceAllIn(msg.linesIterator.find(_.trim.nonEmpty).getOrElse(""), "").trim match { case "" => "no message"; case s => s }
 }

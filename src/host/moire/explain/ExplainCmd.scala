@@ -22,6 +22,7 @@ object ExplainCmd {
     if (o.noise < 0) throw new ExplainError(s"--noise must be 0 or more (full-scale rms), got ${o.noise}")
     if (o.samples < 1) throw new ExplainError(s"--samples must be at least 1, got ${o.samples}")
     if (!(o.amplitude > 0)) throw new ExplainError(s"--amplitude must be above 0, got ${o.amplitude}")
+    o.linesPerRev.foreach(l => if (!(l > 0)) throw new ExplainError(s"--lines-per-rev must be above 0, got $l"))
     val fmt = AdcFormat.parse(o.adc).fold(e => throw new ExplainError(s"--adc: $e"), identity)
     val d = try PhysicsModel(SignalParams(o.amplitude, o.offsetSin, o.offsetCos, o.gainSin, o.gainCos, o.phaseErrorDeg, Nil, o.noise, o.seed),
       PhysicsModel.parseMotion(o.motion), o.sampleRateHz, o.samples, Adc(o.adcBits, fmt), o.linesPerRev, o.effects.map(EffectSpec.parse))
@@ -37,7 +38,7 @@ object ExplainCmd {
 
   def simulate(o: SimOptions): String = {
     val m = model(o)
-    val (rec, _) = m.generate()
+    val (rec, _) = try m.generate() catch { case e: IllegalArgumentException => throw new ExplainError(e.getMessage.stripPrefix("requirement failed: ")) }
     val path = os.Path(o.out, os.pwd)
     Recording.write(path, rec)
     s"wrote $path (${rec.length} samples, ${m.effects.map(_.effect).mkString(", ") match { case "" => "default model only"; case s => s }})"
@@ -47,11 +48,7 @@ object ExplainCmd {
   def explain(files: Seq[String], jsonDir: Option[String], plotDir: Option[String], modelFile: Option[String], quiet: Boolean,
               rtl: Option[Seq[String]] = Some(Nil)): Seq[Report] = {
     if (files.isEmpty) throw new ExplainError("explain: name at least one recording file")
-    val givenEffects = modelFile.map { f =>
-      val text = readText(f)
-      val v = try ujson.read(text) catch { case e: Exception => throw new ExplainError(s"$f: not valid JSON") }
-      v.obj.get("effects").map(_.arr.toSeq.map(EffectSpec.fromJson(_, f))).getOrElse(Nil)
-    }.getOrElse(Nil)
+    val givenEffects = modelFile.map(f => PhysicsModel.effectsFromJson(PhysicsModel.jsonObject(readText(f), f), f, Nil)).getOrElse(Nil)
     val paths = files.map(f => os.Path(f, os.pwd))
     // Outputs are checked before the long work: writable folders, no two reports under one name.
     val outDirs = (jsonDir ++ plotDir).map(d => os.Path(d, os.pwd))
@@ -156,31 +153,58 @@ object ExplainCmd {
     else throw new ExplainError(s"$p:1: first line must be '${Recording.Magic}' or '${Calibration.Magic}', got '${first.take(40)}'")
   }
 
-  /** Simulates a recording with five effects (skew, bandwidth, harmonic, stuck bit, interference) and explains it;
-    * prints the time and samples per second.
+  /** explain-bench's range of --samples: a few fringe periods of the ramp up to the 2^31-sample limit of an array. */
+  val BenchMinSamples = 10000
+  val BenchMaxSamples = 1 << 30
+
+  /** Simulates a recording with five effects (skew, bandwidth, harmonic, stuck bit, interference), or takes
+    * `recording`, and explains it; `say` gets two lines: reading (with the per-file checks) and the whole
+    * explain, each with its time, the peak heap and the peak heap per million samples.
     */
-  def bench(samples: Int, out: Option[String]): String = {
+  def bench(samples: Int, out: Option[String], recording: Option[String], say: String => Unit): Unit = {
+    if (recording.isEmpty && (samples < BenchMinSamples || samples > BenchMaxSamples))
+      throw new ExplainError(s"--samples must be in $BenchMinSamples..$BenchMaxSamples, got $samples")
+    out.foreach(d => moire.files.SafeWrite.checkFolder(os.Path(d, os.pwd)))
+    val dir = out.map(os.Path(_, os.pwd)).getOrElse(os.temp.dir(prefix = "moire-bench"))
+    val file = recording.map { f =>
+      val p = os.Path(f, os.pwd)
+      if (!os.isFile(p)) throw new ExplainError(s"$f: no such file")
+      p
+    }.getOrElse(benchRecording(samples, dir / "bench.csv"))
+    val mb = os.size(file) / 1048576.0
+    val maxMb = Runtime.getRuntime.maxMemory / 1048576.0
+    val (n, readS, readPeak) = peakHeap { val r = Recording.read(file); checkSignals(file, r); r.length }
+    def perM(peak: Double) = peak / (n / 1e6)
+    say(f"explain-bench: read and checked $n rows ($mb%.0f MB file) in $readS%.1f s; peak heap $readPeak%.0f MB of $maxMb%.0f MB " +
+      f"(${perM(readPeak)}%.1f MB per million samples)")
+    val (rep, s, peak) = peakHeap(explain(Seq(file.toString), Some((dir / "json").toString), Some((dir / "plots").toString), None, quiet = false).head)
+    say(f"explain-bench: $n samples explained in $s%.1f s (read, fit, JSON, plots) = ${n / s}%.0f samples/s; " +
+      f"peak heap $peak%.0f MB of $maxMb%.0f MB (${perM(peak)}%.1f MB per million samples); ${Runtime.getRuntime.availableProcessors} cores; " +
+      s"findings: ${rep.findings.map(_.effect).mkString(", ")}")
+  }
+
+  /** Writes the bench's simulated recording; its arrays are garbage once this returns. */
+  private def benchRecording(samples: Int, file: os.Path): os.Path = {
     val m = PhysicsModel(SignalParams(amplitude = 0.9, phaseErrorDeg = 1.0, noiseRms = 0.0007, seed = 7),
       moire.signal.Motion.Ramp(20e3, 250e3, samples / 10e6), 10e6, samples, Adc(12), None,
       Seq(EffectSpec("channel_skew", Map("skew_s" -> 20e-9)), EffectSpec("bandwidth", Map("cutoff_hz" -> 600e3)),
         EffectSpec("harmonic", Map("order" -> 3, "amplitude_rel" -> 0.001), "sin"),
         EffectSpec("adc_bit_fault", Map("bit" -> 2, "stuck_at" -> 0), "cos"),
         EffectSpec("interference", Map("frequency_hz" -> 50e3, "amplitude_fs" -> 3e-4))))
-    val (rec, _) = m.generate()
-    val dir = out.map(os.Path(_, os.pwd)).getOrElse(os.temp.dir(prefix = "moire-bench"))
-    val file = dir / "bench.csv"
-    Recording.write(file, rec)
-    val bytes = os.size(file)
-    // peak heap of the explain step alone: the generator's arrays are dropped and collected first
+    Recording.write(file, m.generate()._1)
+    file
+  }
+
+  /** The result of `body`, its seconds and the peak heap (MB, the sum of the heap pools' peaks, an upper
+    * bound) while it ran, counted from a collected heap.
+    */
+  def peakHeap[T](body: => T): (T, Double, Double) = {
     val pools = java.lang.management.ManagementFactory.getMemoryPoolMXBeans.asScala.filter(_.getType == java.lang.management.MemoryType.HEAP)
     System.gc()
     pools.foreach(_.resetPeakUsage())
     val t0 = System.nanoTime()
-    val rep = explain(Seq(file.toString), Some((dir / "json").toString), Some((dir / "plots").toString), None, quiet = false).head
+    val r = body
     val s = (System.nanoTime() - t0) / 1e9
-    val peakMb = pools.map(_.getPeakUsage.getUsed).sum / 1048576.0
-    val maxMb = Runtime.getRuntime.maxMemory / 1048576.0
-    f"explain-bench: $samples samples (${bytes / 1048576.0}%.0f MB file) explained in $s%.1f s (read, fit, JSON, plots) = ${samples / s}%.0f samples/s; " +
-      f"peak heap $peakMb%.0f MB of $maxMb%.0f MB; ${Runtime.getRuntime.availableProcessors} cores; findings: ${rep.findings.map(_.effect).mkString(", ")}"
+    (r, s, pools.map(_.getPeakUsage.getUsed).sum / 1048576.0)
   }
 }

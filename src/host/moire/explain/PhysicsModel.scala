@@ -146,7 +146,7 @@ object PhysicsModel {
   /** `constant:HZ`, `ramp:HZ0:HZ1:SECONDS` or `oscillate:PERIODS:RATE_HZ`. */
   def parseMotion(s: String): Motion = {
     val parts = s.split(":").map(_.trim)
-    def num(i: Int) = parts.lift(i).flatMap(_.toDoubleOption).getOrElse(
+    def num(i: Int) = parts.lift(i).flatMap(_.toDoubleOption).filter(v => !v.isNaN && !v.isInfinite).getOrElse(
       throw new ExplainError(s"--motion '$s': expected constant:HZ, ramp:HZ0:HZ1:SECONDS or oscillate:PERIODS:RATE_HZ"))
     parts.head match {
       case "constant" => Motion.Constant(num(1))
@@ -157,9 +157,10 @@ object PhysicsModel {
   }
 
   def motionFromJson(v: ujson.Value, where: String): Motion = {
-    def n(k: String, d: Option[Double] = None) = v.obj.get(k).flatMap(_.numOpt).orElse(d)
+    val o = v.objOpt.getOrElse(throw new ExplainError(s"$where: motion must be a JSON object"))
+    def n(k: String, d: Option[Double] = None) = o.get(k).flatMap(_.numOpt).orElse(d)
       .getOrElse(throw new ExplainError(s"$where: motion.$k must be a number"))
-    v.obj.get("kind").flatMap(_.strOpt) match {
+    o.get("kind").flatMap(_.strOpt) match {
       case Some("constant") => Motion.Constant(n("hz"), n("start", Some(0)))
       case Some("ramp") => Motion.Ramp(n("hz0"), n("hz1"), n("duration_s"), n("start", Some(0)))
       case Some("oscillate") => Motion.Oscillate(n("periods_peak"), n("rate_hz"), n("start", Some(0)))
@@ -168,17 +169,26 @@ object PhysicsModel {
   }
 
   /** Reads a model JSON (the format `json` writes); missing keys take the defaults of `d`. */
-  def fromJson(text: String, where: String, d: PhysicsModel): PhysicsModel = {
+  /** The object of a model file, or one line saying why the text is not one. */
+  def jsonObject(text: String, where: String): collection.Map[String, ujson.Value] = {
     val v = try ujson.read(text) catch { case e: Exception => throw new ExplainError(s"$where: not valid JSON (${e.getMessage.linesIterator.next()})") }
-    val o = v.objOpt.getOrElse(throw new ExplainError(s"$where: the model must be a JSON object"))
+    v.objOpt.getOrElse(throw new ExplainError(s"$where: the model must be a JSON object"))
+  }
+
+  /** The `effects` list of a model file's object (`default` when it has none). */
+  def effectsFromJson(o: collection.Map[String, ujson.Value], where: String, default: Seq[EffectSpec]): Seq[EffectSpec] =
+    o.get("effects").map(_.arrOpt.getOrElse(throw new ExplainError(s"$where: effects must be a list")).toSeq
+      .map(EffectSpec.fromJson(_, where))).getOrElse(default)
+
+  def fromJson(text: String, where: String, d: PhysicsModel): PhysicsModel = {
+    val o = jsonObject(text, where)
     def n(k: String, dv: Double) = o.get(k).map(x => x.numOpt.getOrElse(throw new ExplainError(s"$where: $k must be a number"))).getOrElse(dv)
     val b = d.base
     val base = b.copy(amplitude = n("amplitude", b.amplitude), offsetSin = n("offset_sin", b.offsetSin), offsetCos = n("offset_cos", b.offsetCos),
       gainSin = n("gain_sin", b.gainSin), gainCos = n("gain_cos", b.gainCos), phaseErrorDeg = n("phase_error_deg", b.phaseErrorDeg),
       noiseRms = n("noise_rms", b.noiseRms), seed = n("seed", b.seed.toDouble).toLong)
     val fmt = o.get("adc").flatMap(_.strOpt).map(s => AdcFormat.parse(s).fold(e => throw new ExplainError(s"$where: $e"), identity)).getOrElse(d.adc.format)
-    val effects = o.get("effects").map(_.arrOpt.getOrElse(throw new ExplainError(s"$where: effects must be a list")).toSeq
-      .map(EffectSpec.fromJson(_, where))).getOrElse(d.effects)
+    val effects = effectsFromJson(o, where, d.effects)
     try PhysicsModel(base, o.get("motion").map(motionFromJson(_, where)).getOrElse(d.motion), n("sample_rate_hz", d.sampleRateHz),
       n("samples", d.samples).toInt, Adc(n("adc_bits", d.adc.bits).toInt, fmt),
       o.get("lines_per_rev").flatMap(_.numOpt).orElse(d.linesPerRev), effects)

@@ -9,6 +9,7 @@ object Calibrate {
                           byDirection: Seq[(String, HarmonicFitResult)], reversal: Option[Reversal], files: Seq[os.Path])
 
   def run(input: os.Path, out: os.Path, p: HarmonicParams, maxOrderOpt: Int): Result = {
+    moire.files.SafeWrite.checkFolder(out)   // before the work, not after it
     val data = CalibrationData.read(input)
     val distinct = data.points.map(a => math.round(a.angleDeg * 1e6)).distinct.size
     val maxOrder = if (maxOrderOpt < 0) HarmonicFit.defaultMaxOrder(distinct) else maxOrderOpt
@@ -45,11 +46,9 @@ object Calibrate {
     val pf = out / s"$stem.png"
     val curves = if (byDir.nonEmpty) byDir.map { case (d, f) => CalibrationPlot.Curve(d, data.of(d), f) }
       else Seq(CalibrationPlot.Curve("", data.points, fit))
-    try {
-      moire.files.SafeWrite.text(jf, ujson.write(json, indent = 2) + "\n")
-      moire.files.SafeWrite.text(rf, listing)
-      CalibrationPlot.write(pf, s"${data.file}: ${p.harmonics} largest harmonics up to order $maxOrder", curves)
-    } catch { case e: java.io.IOException => throw new CalibrationError(s"cannot write into $out ($e)") }
+    // the three files as one: a failed write is one FileError naming the file, all three old files kept
+    moire.files.SafeWrite.all(Seq(jf -> (t => os.write(t, ujson.write(json, indent = 2) + "\n")), rf -> (t => os.write(t, listing)),
+      pf -> CalibrationPlot.png(s"${data.file}: ${p.harmonics} largest harmonics up to order $maxOrder", curves)))
     Result(data, maxOrder, fit, byDir, reversal, Seq(jf, rf, pf))
   }
 

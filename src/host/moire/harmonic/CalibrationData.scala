@@ -45,13 +45,13 @@ object CalibrationData {
 
   def read(path: os.Path): CalibrationData = {
     if (!os.isFile(path)) throw new CalibrationError(s"$path: no such file")
-    val text = try os.read(path) catch { case e: java.io.IOException => throw new CalibrationError(s"$path: cannot read ($e)") }
+    val text = try os.read(path) catch { case e: java.io.IOException => throw new CalibrationError(s"$path: cannot read (${moire.files.SafeWrite.reason(e)})") }
     parse(path.last, text)
   }
 
   def parse(file: String, text: String): CalibrationData = {
     def fail(line: Int, msg: String) = throw new CalibrationError(s"$file:$line: $msg")
-    val lines = text.split("\n", -1).toSeq.map(_.stripSuffix("\r"))
+    val lines = text.stripPrefix("\uFEFF").split("\n", -1).toSeq.map(_.stripSuffix("\r"))
     if (lines.isEmpty || lines.head.trim != magic) fail(1, s"first line must be '$magic'")
     val meta = scala.collection.mutable.LinkedHashMap[String, String]()
     var header: Option[Seq[String]] = None
@@ -62,7 +62,9 @@ object CalibrationData {
         val kv = l.stripPrefix("#").trim
         val at = kv.indexOf(':')
         if (!l.startsWith("# ") || at <= 0) fail(n, s"metadata must read '# key: value', got '$l'")
-        meta(kv.substring(0, at).trim) = kv.substring(at + 1).trim
+        val key = kv.substring(0, at).trim
+        if (meta.contains(key)) fail(n, s"metadata key '$key' appears twice")
+        meta(key) = kv.substring(at + 1).trim
       } else header match {
         case None =>
           val h = l.split(",", -1).toSeq.map(_.trim.toLowerCase)

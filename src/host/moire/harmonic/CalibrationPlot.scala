@@ -8,7 +8,10 @@ object CalibrationPlot {
   /** One direction's data and fit ("" when the file has no direction column). */
   final case class Curve(direction: String, points: Seq[CalPoint], fit: HarmonicFitResult)
 
-  def write(path: os.Path, title: String, curves: Seq[Curve]): Unit = {
+  def write(path: os.Path, title: String, curves: Seq[Curve]): Unit = moire.files.SafeWrite(path)(png(title, curves))
+
+  /** The plot, as a writer of a PNG file at the path it is given. */
+  def png(title: String, curves: Seq[Curve]): os.Path => Unit = {
     System.setProperty("java.awt.headless", "true")
     val chart = new XYChartBuilder().width(1000).height(600).title(title)
       .xAxisTitle("angle (deg)").yAxisTitle("position error (arcsec)").build()
@@ -26,7 +29,6 @@ object CalibrationPlot {
       val r = chart.addSeries(s"residual$tag", byLine.map(_._1.angleDeg).toArray, byLine.map(_._2).toArray)
       r.setMarker(SeriesMarkers.DIAMOND)
     }
-    os.makeDir.all(path / os.up)
-    moire.files.SafeWrite(path)(t => { val o = new java.io.FileOutputStream(t.toIO); try BitmapEncoder.saveBitmap(chart, o, BitmapEncoder.BitmapFormat.PNG) finally o.close() })
+    t => { val o = new java.io.FileOutputStream(t.toIO); try BitmapEncoder.saveBitmap(chart, o, BitmapEncoder.BitmapFormat.PNG) finally o.close() }
   }
 }

@@ -23,6 +23,7 @@ object BoardReg {
     val reads = o.reads.map(r => Registers.parse(r).fold(e => throw new StreamError(s"--read: $e"), identity))
     val coefs = o.coefficients.map(f => loadCoefficients(os.Path(f, os.pwd)))
     if (o.baud < 300 || o.baud > 12000000) throw new StreamError(s"--baud must be in 300..12000000, got ${o.baud}")
+    if (o.timeoutMs < 10 || o.timeoutMs > 60000) throw new StreamError(s"--timeout-ms must be in 10..60000, got ${o.timeoutMs}")
     val link = SerialLink.open(o.port, o.baud)
     try {
       val c = new BoardClient(link, o.timeoutMs)
@@ -82,8 +83,9 @@ object BoardReg {
       val regs = j.obj.get("registers").flatMap(_.arrOpt).getOrElse(throw new StreamError(s"$path: no 'registers' list"))
       regs.zipWithIndex.map { case (r, i) =>
         val where = s"$path: registers[$i]"
-        val a = r.obj.get("addr").flatMap(_.numOpt).getOrElse(throw new StreamError(s"$where: 'addr' missing"))
-        val d = r.obj.get("data").flatMap(_.strOpt).getOrElse(throw new StreamError(s"$where: 'data' missing"))
+        val o = r.objOpt.getOrElse(throw new StreamError(s"$where: expected an object {\"addr\": N, \"data\": \"0x...\"}, got ${ujson.write(r).take(40)}"))
+        val a = o.get("addr").flatMap(_.numOpt).filter(v => v == math.rint(v)).getOrElse(throw new StreamError(s"$where: 'addr' missing or not an integer"))
+        val d = o.get("data").flatMap(_.strOpt).getOrElse(throw new StreamError(s"$where: 'data' missing"))
         place(where, a.toLong, hex(where, d))
       }.toSeq
     } else text.linesIterator.zipWithIndex.flatMap { case (l, i) =>

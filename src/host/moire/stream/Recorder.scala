@@ -58,6 +58,7 @@ object Recorder {
         "--counts-per-period" -> o.countsPerPeriod).collect { case (k, None) => k }
       if (missing.nonEmpty) throw new StreamError(s"--listen-only sends no commands, so give ${missing.mkString(", ")} by hand")
     }
+    moire.files.SafeWrite.checkFile(os.Path(o.out, os.pwd))   // before the port is opened and the capture runs
   }
 
   /** Opens the port and records; `say` gets the summary lines, `warn` the notes and warnings (stderr). */

@@ -39,6 +39,7 @@ object Emit {
     * Verilog files, the top's first.
     */
   def write[M <: RawModule](gen: => M, dir: os.Path, target: Target = Target.Verilog): (M, Seq[os.Path]) = {
+    moire.files.SafeWrite.checkFolder(dir)   // before the elaboration, not after it
     var top: Option[M] = None
     val tmp = os.temp.dir(prefix = "moire-emit-")
     try {
@@ -47,8 +48,8 @@ object Emit {
       val first = s"${top.get.desiredName}.sv"
       // Verilog files that hold a module (not firtool's extern_modules.sv, macro definitions only)
       val files = os.walk(tmp).filter(f => os.isFile(f) && Seq("sv", "v").contains(f.ext) && """(?m)^\s*module\s""".r.findFirstIn(os.read(f)).nonEmpty)
-      os.makeDir.all(dir)
-      (top.get, files.sortBy(f => (f.last != first, f.last)).map { f => val d = dir / f.last; os.copy.over(f, d); d })
+      (top.get, files.sortBy(f => (f.last != first, f.last)).map { f =>
+        val d = dir / f.last; moire.files.SafeWrite(d)(t => os.copy(f, t)); d })
     } finally os.remove.all(tmp)
   }
 }

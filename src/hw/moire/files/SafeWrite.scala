@@ -15,16 +15,31 @@ object SafeWrite {
   @volatile var beforeRename: os.Path => Unit = _ => ()
 
   /** Writes `target` through `write`, which fills the temporary path it is given. */
-  def apply(target: os.Path)(write: os.Path => Unit): Unit = {
-    checkFile(target)
-    val tmp = target / os.up / s".${target.last}.tmp-${ProcessHandle.current().pid()}-${Thread.currentThread().getId}"
+  def apply(target: os.Path)(write: os.Path => Unit): Unit = all(Seq(target -> write))
+
+  /** Writes several files as one: every temporary file is complete before the first rename, so a failed
+    * write changes none of them.
+    */
+  def all(writes: Seq[(os.Path, os.Path => Unit)]): Unit = {
+    if (writes.isEmpty) return
+    val targets = writes.map(_._1)
+    targets.groupBy(identity).collectFirst { case (t, ts) if ts.size > 1 => throw new FileError(s"$t: named twice as an output of one command") }
+    targets.foreach(checkFile)
+    val tmps = targets.map(t => t / os.up / s".${t.last}.tmp-${ProcessHandle.current().pid()}-${Thread.currentThread().getId}")
+    var at = targets.head; var renamed = 0
     try {
-      write(tmp)
-      beforeRename(target)
-      Files.move(tmp.toNIO, target.toNIO, StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.ATOMIC_MOVE)
+      for (((t, write), tmp) <- writes.zip(tmps)) { at = t; write(tmp) }
+      for (t <- targets) { at = t; beforeRename(t) }
+      for ((t, tmp) <- targets.zip(tmps)) {
+        at = t
+        Files.move(tmp.toNIO, t.toNIO, StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.ATOMIC_MOVE)
+        renamed += 1
+      }
     } catch {
-      case e: IOException => throw new FileError(s"$target: cannot write (${reason(e)}); nothing was changed")
-    } finally try Files.deleteIfExists(tmp.toNIO) catch { case _: IOException => () }
+      case e: IOException =>
+        val kept = if (renamed == 0) "nothing was changed" else s"${targets.take(renamed).mkString(", ")} already replaced, the rest kept"
+        throw new FileError(s"$at: cannot write (${reason(e)}); $kept")
+    } finally tmps.foreach(tmp => try Files.deleteIfExists(tmp.toNIO) catch { case _: IOException => () })
   }
 
   def text(target: os.Path, s: String): Unit = apply(target)(t => os.write(t, s))
