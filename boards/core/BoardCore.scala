@@ -79,7 +79,9 @@ class BoardCore(val p: BoardParams) extends Module {
       h.io.in.bits := m.io.out.bits.position.asUInt(hp.countBits - 1, 0)
       // theta - f(theta), kept multi-turn: the subdivider's position minus f rounded to counts
       val late = ShiftRegister(m.io.out.bits, hp.latency)
-      val fCounts = ((h.io.out.bits.f +& (BigInt(1) << (hp.outFrac - 1)).S) >> hp.outFrac).asSInt
+      val fRounded = h.io.out.bits.f +& (BigInt(1) << (hp.outFrac - 1)).S
+      moire.emit.Unused("f_fraction", fRounded(hp.outFrac - 1, 0)) // rounded away: whole counts only
+      val fCounts = (fRounded >> hp.outFrac).asSInt
       val o = Wire(Valid(new SubdivOut(p.subdiv)))
       o.valid := h.io.out.valid
       o.bits := late
