@@ -26,6 +26,18 @@ object Describe {
     case Term.Drift =>
       val names = Seq("offset_sin_per_s", "offset_cos_per_s", "gain_sin_per_s", "gain_cos_per_s")
       (names.zip(b).toMap, names.zip(sd).toMap, "against time: offset and amplitude", "both")
+    case Term.Contrast =>
+      val names = Seq("offset_sin_per_period", "offset_cos_per_period", "gain_sin_per_period", "gain_cos_per_period")
+      val span = { val x = e.travel; x.max - x.min }
+      (names.zip(b).toMap + ("travel_periods" -> span), names.zip(sd).toMap + ("travel_periods" -> 0.0), "against position: offset and amplitude", "both")
+    case Term.Warmup(tau) =>
+      // the basis is the part still to come, exp(-t / tau): a step s of the offset is -b; the amplitudes are fitted at
+      // their final value A (1 + g), so a relative gain step g is -b / (1 + b)
+      def gain(x: Double) = -x / (1 + x)
+      (Map("offset_sin_step_fs" -> -b(0), "offset_cos_step_fs" -> -b(1), "gain_sin_step_rel" -> gain(b(2)), "gain_cos_step_rel" -> gain(b(3)),
+        "time_constant_s" -> tau),
+        Map("offset_sin_step_fs" -> sd(0), "offset_cos_step_fs" -> sd(1), "gain_sin_step_rel" -> sd(2), "gain_cos_step_rel" -> sd(3),
+          "time_constant_s" -> Double.NaN), f"against time: offset and amplitude settling with a time constant of ${tau}%.3g s", "both")
     case Term.Am =>
       val (a, sa) = amp(b(0), b(1), sd(0), sd(1)); val (ph, sph) = deg(b(0), -b(1), a, sa)
       (Map("depth" -> a, "phase_deg" -> ph), Map("depth" -> sa, "phase_deg" -> sph), "against mechanical angle: amplitude", "both")
@@ -78,6 +90,13 @@ object Describe {
         f"harmonic ${g("order").toInt} of the fringe on ${if (c.channel == "both") "both channels" else s"the ${c.channel} channel"}: ${100 * g("amplitude_rel")}%.3f %% of the fundamental"
       case "drift" =>
         f"offsets drift ${g("offset_sin_per_s")}%.3g / ${g("offset_cos_per_s")}%.3g full scale per second (sin/cos), amplitudes ${100 * g("gain_sin_per_s")}%.3g / ${100 * g("gain_cos_per_s")}%.3g %% per second"
+      case "contrast_along_travel" =>
+        val l = g("travel_periods")
+        f"contrast changes along the travel: amplitudes ${100 * g("gain_sin_per_period") * l}%.3g / ${100 * g("gain_cos_per_period") * l}%.3g %%, offsets ${g("offset_sin_per_period") * l}%.3g / ${g("offset_cos_per_period") * l}%.3g full scale over the ${l}%.0f periods travelled (sin/cos)"
+      case "warmup" =>
+        f"warm-up: offsets settle by ${g("offset_sin_step_fs")}%.3g / ${g("offset_cos_step_fs")}%.3g full scale, amplitudes by ${100 * g("gain_sin_step_rel")}%.3g / ${100 * g("gain_cos_step_rel")}%.3g %% (sin/cos) with a time constant of ${g("time_constant_s")}%.3g s"
+      case "coarse_quantization" =>
+        f"the codes use only ${g("effective_bits").toInt} of the ${g("format_bits").toInt} bits: quantization steps of ${g("step_lsb").toInt} LSB, whose error is not white noise"
       case "amplitude_modulation" => f"amplitude follows the mechanical angle: ${100 * g("depth")}%.2f %% modulation once per revolution"
       case "adc_nonlinearity" => f"ADC integral nonlinearity: bow ${g("inl2_lsb")}%.2f LSB, S-shape ${g("inl3_lsb")}%.2f LSB at full scale"
       case "crosstalk" => f"capacitive crosstalk: sin gets ${g("sin_from_cos_tau_s") * 1e9}%.2f ns x d(cos)/dt, cos gets ${g("cos_from_sin_tau_s") * 1e9}%.2f ns x d(sin)/dt"

@@ -24,6 +24,11 @@ object EffectSpec {
     ("clipping", Seq("high_fs", "low_fs"), "amplifier saturation levels in full-scale units (channel=sin|cos|both)"),
     ("adc_nonlinearity", Seq("inl2_lsb", "inl3_lsb"), "INL = inl2 T2(v) + inl3 T3(v) LSB, Chebyshev bow and S shape over full scale"),
     ("crosstalk", Seq("sin_from_cos_tau_s", "cos_from_sin_tau_s"), "capacitive coupling: channel += tau * d(other channel)/dt"),
+    ("contrast_along_travel", Seq("offset_sin_per_period", "offset_cos_per_period", "gain_sin_per_period", "gain_cos_per_period"),
+      "offsets (full scale) and gains (relative) changing linearly with the position along the travel (beam walk, scale contamination), per fringe period from the start"),
+    ("warmup", Seq("offset_sin_step_fs", "offset_cos_step_fs", "gain_sin_step_rel", "gain_cos_step_rel", "time_constant_s"),
+      "offsets and gains settling by step * (1 - exp(-t / time_constant_s)) after switch-on"),
+    ("coarse_quantization", Seq("effective_bits"), "the codes use only the top effective_bits of the ADC word (a narrower converter in a wider format)"),
     ("interference", Seq("frequency_hz", "amplitude_fs", "phase_deg"), "a fixed-frequency pickup (mains, switching supply) on both channels")
   )
   val calibrationEffects: Seq[(String, Seq[String], String)] = Seq(

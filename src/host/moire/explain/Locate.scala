@@ -93,7 +93,7 @@ object Locate {
       val pins = new Array[Int](1 << bits); codes.foreach(c => pins(c) += 1)
       val frac = (0 until bits).map(b => pins.indices.filter(c => ((c >> b) & 1) == 1).map(pins(_).toLong).sum.toDouble / n)
       val hist = new Array[Int](1 << bits); codes.foreach(c => hist(adc.fromPins(c) + adc.half) += 1)
-      val stuck = (0 until bits - 2).filter(b => frac(b) == 0.0 || frac(b) == 1.0)
+      val stuck = (e.coarseBits until bits - 2).filter(b => frac(b) == 0.0 || frac(b) == 1.0)
       val hi = hist.lastIndexWhere(_ > 0); val lo = hist.indexWhere(_ > 0)
       def pile(c: Int, nb: Int) = hist(c).toDouble / math.max(1, if (nb >= 0 && nb < hist.length) hist(nb) else 0)
       val pileHi = pile(hi, hi - 1); val pileLo = pile(lo, lo + 1)

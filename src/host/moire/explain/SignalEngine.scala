@@ -12,8 +12,19 @@ final class SignalEngine(val rec: Recording) {
   val lsb: Double = rec.adc.lsb
   val ys: Array[Double] = rec.values(rec.sin)
   val yc: Array[Double] = rec.values(rec.cos)
+  /** Low bits that no sample of either channel uses (a narrower converter in a wider code format, a scope's 8 bits
+    * in 16): the quantization step is 2^coarseBits LSB and its error is not white noise.
+    */
+  val coarseBits: Int = {
+    val m = (1 << rec.adc.bits) - 1
+    var or = 0; var i = 0
+    while (i < n) { or |= (rec.adc.fromPins(rec.sin(i)) & m) | (rec.adc.fromPins(rec.cos(i)) & m); i += 1 }
+    if (or == 0) 0 else math.min(rec.adc.bits - 4, Integer.numberOfTrailingZeros(or))
+  }
+  /** The quantization step in full-scale units. */
+  val step: Double = lsb * (1 << coarseBits)
   val railLo: Double = -1.0
-  val railHi: Double = (rec.adc.half - 1) * lsb
+  val railHi: Double = (rec.adc.half - (1 << coarseBits)) * lsb
   val tc: Array[Double] = Array.tabulate(n)(i => (i - 0.5 * (n - 1)) / fs)
   val ones: Array[Double] = Array.fill(n)(1.0)
   val lnN: Double = math.log(2.0 * n)
@@ -143,10 +154,27 @@ final class SignalEngine(val rec: Recording) {
     case Term.Crosstalk =>
       val w = Array.tabulate(n)(i => 2 * math.Pi * freq(i))
       IndexedSeq(Col(mul(vc, w), null), Col(null, mul(vs, w)))
+    case Term.Contrast =>
+      val x = travel
+      IndexedSeq(Col(x, null), Col(null, x), Col(mul(us, x), null), Col(null, mul(uc, x)))
+    case Term.Warmup(tau) =>
+      val w = warmupBasis(tau)
+      IndexedSeq(Col(w, null), Col(null, w), Col(mul(us, w), null), Col(null, mul(uc, w)))
     case Term.Interference(hz) =>
       val a = Array.tabulate(n)(i => math.sin(2 * math.Pi * hz * i / fs)); val b = Array.tabulate(n)(i => math.cos(2 * math.Pi * hz * i / fs))
       IndexedSeq(Col(a, null), Col(b, null), Col(null, a), Col(null, b))
   }
+
+  /** Position along the travel in fringe periods, centred on the record's mean position. */
+  def travel: Array[Double] = {
+    var m = 0.0; var i = 0
+    while (i < n) { m += phase(i); i += 1 }
+    m /= n
+    Array.tabulate(n)(i => phase(i) - m)
+  }
+
+  /** exp(-t / tau) from the first sample: the part of a warm-up still to come. */
+  def warmupBasis(tau: Double): Array[Double] = Array.tabulate(n)(i => math.exp(-i / fs / tau))
 
   private def mul(a: Array[Double], b: Array[Double]): Array[Double] = {
     val o = new Array[Double](n); var i = 0

@@ -9,6 +9,10 @@ object Term {
   case object Inl extends Term { val name = "adc_nonlinearity"; val params = 2 }
   case object Crosstalk extends Term { val name = "crosstalk"; val params = 2 }
   final case class Interference(hz: Double) extends Term { val name = "interference"; val params = 5 }
+  /** Offsets and amplitudes changing along the travel (beam walk, scale contamination): linear in the fringe position. */
+  case object Contrast extends Term { val name = "contrast_along_travel"; val params = 4 }
+  /** Warm-up: offsets and amplitudes approaching their final values as 1 - exp(-t / tauS) (tauS fitted: 5 parameters). */
+  final case class Warmup(tauS: Double) extends Term { val name = "warmup"; val params = 5 }
 }
 
 /** A stuck (stuckAt 0/1) or bridged (wired-AND with bit `bridgedTo`) data line on channel 0 = sin, 1 = cos. */
