@@ -3,34 +3,91 @@ package moire.explain
 import org.hipparchus.distribution.continuous.{ChiSquaredDistribution, NormalDistribution}
 import org.hipparchus.linear.{Array2DRowRealMatrix, LUDecomposition}
 
-/** Replication (issue 12, "no stories" (b)): a candidate is refitted on each half of the recording (only its own
-  * parameters and the default part; the trajectory and all other effects stay fixed, so this costs a few linear fits),
-  * and its fold estimates must agree within their uncertainties. Jitter must also agree across speed bands.
+/** Replication (issue 12, "no stories" (b)): after the joint refit that accepts a candidate, its own parameters (and
+  * the default part) are refitted separately on each half of the recording with the trajectory and all other effects
+  * fixed (a few linear fits or one-parameter profiles), and the halves' estimates must agree within their
+  * uncertainties. Jitter must also agree across speed bands; an interference line must keep its frequency.
   *
   * Agreement: the fold estimates' chi-square about their weighted mean, (k-1) p degrees of freedom, must stay below
   * its 99.73 % point, the two-sided 3 sd of one parameter. A real effect fails this once in 370; structure that
   * follows the motion, the contrast or the quantization rather than the catalogued physics differs between halves
   * by many sd in a long recording and fails it.
+  *
+  * The fit model is an approximation (a piecewise trajectory, first-order filters), so an effect thousands of sd
+  * strong agrees between the halves only as well as the model fits: each fold's uncertainty has a floor of
+  * `ModelRel` of the parameter's size. It matters only above 100 sd per fold; a story near the threshold (a few sd)
+  * is judged by its noise alone, and one whose halves differ by tens of percent still fails.
   */
 object Replicate {
   val PValue = 0.0027
+  val ModelRel = 0.01
   val SpeedBands = 3
 
-  /** None when the candidate replicates (or cannot be refitted on folds: faults, clipping), else where and how large. */
-  def why(e: SignalEngine, c: Cand, cands: Candidates): Option[String] = {
+  /** None when the effect that `e.spec` has beyond `prev` replicates (or cannot be refitted on folds: faults,
+    * clipping), else where and how large.
+    */
+  def why(e: SignalEngine, prev: ModelSpec): Option[String] = {
     val halves = folds(e.n)
-    val newTerm = c.spec.terms.diff(e.spec.terms).headOption
-    newTerm match {
+    val sp = e.spec
+    lazy val cands = new Candidates(e)
+    sp.terms.diff(prev.terms).headOption match {
+      case Some(t: Term.Interference) => interferenceWhy(e, t, halves)
       case Some(t) => agree(linearFolds(e, t, halves), "halves", t.name)
       case None =>
-        if (c.spec.jitter && !e.spec.jitter) jitterWhy(e, halves)
-        else if (c.spec.hasSkew && !e.spec.hasSkew)
-          agree(profileFolds(e, cands, halves, c.spec.skewS, x => c.spec.copy(skewS = x), math.max(math.abs(c.spec.skewS), 1e-10)), "halves", "skew")
-        else c.spec.bw.find { case (ch, _) => !e.spec.bw.contains(ch) } match {
-          case Some((ch, fc)) => agree(profileFolds(e, cands, halves, 1 / fc, x => c.spec.copy(bw = c.spec.bw + (ch -> 1 / x)), 1 / fc), "halves", "1 / cut-off")
+        if (sp.jitter && !prev.jitter) jitterWhy(e, halves)
+        else if (sp.hasSkew && !prev.hasSkew)
+          agree(profileFolds(e, cands, halves, sp.skewS, x => sp.copy(skewS = x), math.max(math.abs(sp.skewS), 1e-10)), "halves", "skew")
+        else sp.bw.find { case (ch, _) => !prev.bw.contains(ch) } match {
+          case Some((ch, fc)) => agree(profileFolds(e, cands, halves, 1 / fc, x => sp.copy(bw = sp.bw + (ch -> 1 / x)), 1 / fc), "halves", "1 / cut-off")
           case None => None
         }
     }
+  }
+
+  /** The residual with the term's own fitted part added back (what the term alone has to explain). */
+  private def target(e: SignalEngine, t: Term): (Array[Double], Array[Double]) = {
+    val cols = e.termCols(t); val at = e.termIndex(t)
+    val b = e.sol.beta.slice(at, at + cols.size)
+    val ps = LinearFit.combine(cols, b, sinCh = true, e.n); val pc = LinearFit.combine(cols, b, sinCh = false, e.n)
+    (Array.tabulate(e.n)(i => e.resS(i) + ps(i)), Array.tabulate(e.n)(i => e.resC(i) + pc(i)))
+  }
+
+  /** An interference line: on each half its frequency (searched near the full-record value) and its amplitude on each
+    * channel. A line whose frequency or amplitude differs between the halves is not a fixed-frequency pickup.
+    */
+  def interferenceWhy(e: SignalEngine, t: Term.Interference, halves: Seq[Array[Int]]): Option[String] = {
+    val (ys, yc) = target(e, t)
+    val cands = new Candidates(e)
+    val ests = halves.map { idx =>
+      val m = idx.length; val st = math.max(1, m / 50000)
+      def power(hz: Double): Double = {
+        var a = 0.0; var b = 0.0; var c = 0.0; var d = 0.0; var k = 0
+        while (k < m) {
+          val i = idx(k); val x = 2 * math.Pi * hz * i / e.fs; val sx = math.sin(x); val cx = math.cos(x)
+          a += ys(i) * sx; b += ys(i) * cx; c += yc(i) * sx; d += yc(i) * cx; k += st
+        }
+        -(a * a + b * b + c * c + d * d)
+      }
+      val half = e.fs / m
+      val hz = cands.minimize(power, t.hz - half, t.hz + half, grid = 8, golden = 16)
+      val cols = e.baseCols(e.s1, e.s2, e.c1, e.c2).map(c => Col(pick(c.s, idx), pick(c.c, idx))) ++
+        e.termCols(Term.Interference(hz)).map(c => Col(pick(c.s, idx), pick(c.c, idx)))
+      val fy = pick(ys, idx); val fc = pick(yc, idx)
+      val sol = LinearFit.solve(cols, fy, fc)
+      if (!sol.ok) None
+      else {
+        val ps = LinearFit.combine(cols, sol.beta, sinCh = true, m); val pc = LinearFit.combine(cols, sol.beta, sinCh = false, m)
+        var rss = 0.0; var i = 0
+        while (i < m) { val a = fy(i) - ps(i); val b = fc(i) - pc(i); rss += a * a + b * b; i += 1 }
+        val v = rss / (2.0 * m)
+        val as = math.hypot(sol.beta(6), sol.beta(7)); val ac = math.hypot(sol.beta(8), sol.beta(9))
+        // Cramer-Rao bound of a sinusoid's frequency in white noise, both channels' power together
+        val sdF = e.fs / (2 * math.Pi) * math.sqrt(24 * v / ((as * as + ac * ac) * m.toDouble * m * m))
+        val sdA = math.sqrt(v * sol.inv(6)(6))
+        Some(Est(Array(hz, as, ac), Array(Array(sdF * sdF, 0, 0), Array(0, sdA * sdA, 0), Array(0, 0, sdA * sdA))))
+      }
+    }
+    agree(ests, "halves", "frequency (Hz) and amplitudes (full scale)")
   }
 
   /** Contiguous halves of the record. */
@@ -41,12 +98,13 @@ object Replicate {
 
   private def pick(a: Array[Double], idx: Array[Int]): Array[Double] = if (a == null) null else idx.map(a(_))
 
-  /** The term's coefficients refitted with the default part on each fold of the current residual. */
+  /** The term's coefficients refitted with the default part on each fold of what the term explains. */
   def linearFolds(e: SignalEngine, t: Term, fs: Seq[Array[Int]]): Seq[Option[Est]] = {
     val cols = e.baseCols(e.s1, e.s2, e.c1, e.c2) ++ e.termCols(t)
+    val (ts, tc) = target(e, t)
     fs.map { idx =>
       val cf = cols.map(c => Col(pick(c.s, idx), pick(c.c, idx)))
-      val ys = pick(e.resS, idx); val yc = pick(e.resC, idx)
+      val ys = pick(ts, idx); val yc = pick(tc, idx)
       val sol = LinearFit.solve(cf, ys, yc)
       if (!sol.ok) None
       else {
@@ -105,9 +163,11 @@ object Replicate {
 
   /** None when the fold estimates agree; else the fold values, the chi-square and its equivalent in sd. */
   def agree(ests: Seq[Option[Est]], what: String, name: String): Option[String] = {
-    val ok = ests.flatten
-    if (ok.size < 2) return None
-    val p = ok.head.theta.length
+    val ok0 = ests.flatten
+    if (ok0.size < 2) return None
+    val p = ok0.head.theta.length
+    val size = Array.tabulate(p)(a => ok0.map(x => math.abs(x.theta(a))).sum / ok0.size)
+    val ok = ok0.map(x => x.copy(cov = Array.tabulate(p, p)((a, b) => x.cov(a)(b) + (if (a == b) math.pow(ModelRel * size(a), 2) else 0.0))))
     val ws = ok.map(x => inv(x.cov))
     if (ws.exists(_.isEmpty)) return None
     val wSum = Array.tabulate(p, p)((a, b) => ws.map(_.get(a)(b)).sum)

@@ -17,12 +17,9 @@ final case class Snapshot(label: String, resS: Array[Double], resC: Array[Double
 object SignalExplain {
   /** Accept an effect only when it lowers BIC by more than this (strong evidence on the Kass-Raftery scale). */
   val Threshold = 10.0
-  /** Candidates checked per round before the search stops (each check refits on the halves). */
-  val MaxTries = 6
+  /** Candidates refitted per round before the search stops (each costs a joint refit and its replication). */
+  val MaxTries = 3
 
-  /** Why the record cannot support a candidate that lowers BIC (None: it is a finding). */
-  def doubt(e: SignalEngine, c: Cand, cands: Candidates): Option[String] =
-    Quantization.why(e, c).orElse(Identify.why(e, c)).orElse(Replicate.why(e, c, cands))
 
   final case class Result(report: Report, engine: SignalEngine, before: Snapshot, steps: Seq[(Finding, Snapshot, Snapshot)])
 
@@ -80,38 +77,42 @@ object SignalExplain {
         rejected += Located(s"${c.effect} (${c.channel})", s"structure of this shape lowers BIC by ${"%.0f".format(dbic(c))}, but not physically: " +
           Plausible.why(c, e.fs, e.n).get, c.params, significant = true)
       }
-      // The strongest candidates in turn: the first that the record can support (quantization, identifiability,
-      // replication on the halves) is the finding; the others are unexplained structure.
-      val best = ok.filter(c => dbic(c) > Threshold).sortBy(c => -dbic(c)).take(MaxTries).find { c =>
-        val w = doubt(e, c, cands)
-        w.foreach { why =>
-          if (!rejected.exists(_.where.startsWith(c.effect + " ")))
-            rejected += Located(s"${c.effect} (${c.channel}): ${c.where}", s"structure of this shape lowers BIC by ${"%.0f".format(dbic(c))}, but $why",
-              c.params, significant = true)
+      // The strongest candidates in turn: the first that the record can support is the finding. Quantization and
+      // identifiability are checked on the candidate; replication on the halves after the joint refit that accepts it
+      // (before it, the trajectory and the default part still hold part of the effect, differently in each half).
+      val ordered = ok.filter(c => dbic(c) > Threshold).sortBy(c => -dbic(c)).iterator
+      def reject(c: Cand, why: String): Unit =
+        if (!rejected.exists(_.where.startsWith(c.effect + " ")))
+          rejected += Located(s"${c.effect} (${c.channel}): ${c.where}", s"structure of this shape lowers BIC by ${"%.0f".format(dbic(c))}, but $why",
+            c.params, significant = true)
+      var accepted = false; var tries = 0
+      while (!accepted && tries < MaxTries && ordered.hasNext) {
+        val c = ordered.next()
+        Quantization.why(e, c).orElse(Identify.why(e, c)) match {
+          case Some(why) => reject(c, why)
+          case None =>
+            tries += 1
+            val snapB = Snapshot(s"before ${c.effect}", e.resS.clone(), e.resC.clone())
+            val rmsB = e.rms
+            val prev = e.spec
+            e.spec = c.spec; e.converge(); settle(e)
+            val c1 = demote(e, c)
+            lap("refit")
+            // no finding when the joint refit does not lower the criterion, or the effect does not replicate
+            val why = if (!(bic0 - e.bic > 0)) Some("") else Replicate.why(e, prev)
+            lap("replicate")
+            why match {
+              case Some(w) =>
+                if (w.nonEmpty) reject(c, w)
+                e.spec = prev; e.converge(); settle(e)
+              case None =>
+                val snapA = Snapshot(s"after ${c.effect}", e.resS.clone(), e.resC.clone())
+                steps += ((Finding(c1.effect, c1.channel, "", c1.params, c1.unc, bic0 - e.bic, rmsB, e.rms, c1.where), snapB, snapA))
+                round += 1; accepted = true
+            }
         }
-        w.isEmpty
       }
-      lap("checks")
-      if (SignalEngine.debug) all.sortBy(c => -dbic(c)).take(6).foreach(c => System.err.println(f"  candidate ${c.effect}%s ${c.channel}%s ${c.params}%s dBIC ${dbic(c)}%.1f"))
-      best match {
-        case Some(c) if dbic(c) > Threshold =>
-          val snapB = Snapshot(s"before ${c.effect}", e.resS.clone(), e.resC.clone())
-          val rmsB = e.rms
-          val prev = e.spec
-          e.spec = c.spec; e.converge(); settle(e)
-          val c1 = demote(e, c)
-          lap("refit")
-          if (!(bic0 - e.bic > 0)) {
-            // The joint refit did not lower the criterion: no finding; back to the model before it.
-            e.spec = prev; e.converge(); settle(e); done = true
-          } else {
-            val snapA = Snapshot(s"after ${c.effect}", e.resS.clone(), e.resC.clone())
-            val f = Finding(c1.effect, c1.channel, "", c1.params, c1.unc, bic0 - e.bic, rmsB, e.rms, c1.where)
-            steps += ((f, snapB, snapA))
-            round += 1
-          }
-        case _ => done = true
-      }
+      if (!accepted) done = true
     }
     val cands = new Candidates(e)
     val fin = steps.result().map { case (f, b, a) =>
