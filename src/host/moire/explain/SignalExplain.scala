@@ -1,6 +1,6 @@
 package moire.explain
 
-import moire.recording.Recording
+import moire.recording.{Recording, Reference}
 
 /** One accepted effect, as reported. `before`/`after` are the residuals around its acceptance (for plots). */
 final case class Finding(effect: String, channel: String, summary: String, params: Map[String, Double], unc: Map[String, Double],
@@ -44,7 +44,7 @@ object SignalExplain {
     val timing = sys.props.contains("moire.timing")
     var tl = t0
     def lap(what: String): Unit = if (timing) { val now = System.nanoTime(); System.err.println(f"$what ${(now - tl) / 1e6}%.0f ms"); tl = now }
-    val e = new SignalEngine(rec)
+    val e = new SignalEngine(rec, Reference.of(rec).fold(m => throw new ExplainError(s"$file: $m"), identity))
     progress.phase("default fit", 4)
     e.init(); progress.step(4)
     val givenModel = specOf(model)
@@ -67,7 +67,8 @@ object SignalExplain {
       // Candidates whose parameters the recording cannot support are not findings; what still fits that way after
       // the last accepted effect is unexplained structure (earlier rounds' rejects may be another effect's shadow).
       rejected.clear()
-      val (ok, impossible) = all.filter(c => !dbic(c).isNaN).partition(c => Plausible.why(c, e.fs, e.n).isEmpty)
+      val (ok, impossible) = all.filter(c => !dbic(c).isNaN && Identifiable.why(c, e).isEmpty)
+        .partition(c => Plausible.why(c, e.fs, e.n).isEmpty)
       impossible.filter(c => dbic(c) > Threshold && !rejected.exists(_.where.startsWith(c.effect + " "))).foreach { c =>
         rejected += Located(s"${c.effect} (${c.channel})", s"structure of this shape lowers BIC by ${"%.0f".format(dbic(c))}, but not physically: " +
           Plausible.why(c, e.fs, e.n).get, c.params, significant = true)
@@ -99,9 +100,13 @@ object SignalExplain {
       val g = refresh(f, e)
       (g.copy(summary = Describe.summary(Cand(g.effect, g.channel, e.spec, 0, 0, g.params, g.unc, g.where), cands.fMin, cands.fMax)), b, a)
     }
-    val unexplained = Locate.all(e).filter(_.significant) ++ rejected
+    val left = Locate.all(e).filter(_.significant)
+    // with a free motion that bends within a period, what is left cannot be told from the motion: not tested, not unexplained
+    val confounded = Identifiable.motionConfounded(e)
+    val unexplained = (if (confounded) Nil else left) ++ rejected
     val report = Report(file, "signals", baseRms, baseBic, baseParams, located, fin.map(_._1), unexplained, e.rms, e.bic,
-      rec.length, (System.nanoTime() - t0) / 1e9, notes(e), Coverage.untested(e, cands.fMin, cands.fMax))
+      rec.length, (System.nanoTime() - t0) / 1e9, notes(e), Coverage.untested(e, cands.fMin, cands.fMax) ++
+        (if (confounded) Identifiable.leftOver(left) else Nil))
     Result(report, e, before, fin)
   }
 
@@ -172,11 +177,12 @@ object SignalExplain {
   def notes(e: SignalEngine): Seq[String] = {
     val sd = math.sqrt(math.min(e.noise.varS, e.noise.varC)) / e.lsb
     (if (sd < 0.5) Seq(f"noise is $sd%.2f LSB rms, below 0.5 LSB: the quantization error is not white noise here, so structure below about 1 LSB may be quantization, not physics") else Nil) ++
-      (if (e.typicalHz * 4 > e.fs) Seq("fewer than 4 samples per fringe period: the phase trajectory is poorly sampled") else Nil)
+      (if (e.typicalHz * 4 > e.fs && e.reference.isEmpty) Seq("fewer than 4 samples per fringe period: the phase trajectory is poorly sampled") else Nil) ++
+      RefReport.notes(e)
   }
 
   def baselineParams(e: SignalEngine): Map[String, Double] = Map(
     "offset_sin_fs" -> e.base(0), "offset_cos_fs" -> e.base(3), "amplitude_sin_fs" -> e.ampS, "amplitude_cos_fs" -> e.ampC,
     "phase_error_deg" -> e.phaseErrorDeg, "noise_sin_fs" -> math.sqrt(e.noise.varS), "noise_cos_fs" -> math.sqrt(e.noise.varC),
-    "typical_fringe_hz" -> e.typicalHz, "trajectory_segments" -> e.traj.nseg)
+    "typical_fringe_hz" -> e.typicalHz, "trajectory_segments" -> e.traj.nseg.toDouble) ++ RefReport.params(e)
 }
