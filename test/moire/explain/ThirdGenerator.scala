@@ -22,6 +22,32 @@ object ThirdGenerator {
                           unevenHz: Double = 7.0, periodUm: Double = 20.0, h3: Double = 0.0, bits: Int = 12, amp: Double = 0.8,
                           noiseLsb: Double = 0.8, refNm: Double = 1.0, seed: Long = 1)
 
+  /** An optical disk of `lines` lines per turn mounted off the axis by `ecc` of its reading radius: the head reads
+    * the angle theta + atan2(ecc sin(theta - eccDeg), 1 + ecc cos(theta - eccDeg)); the reference is `ref_deg`.
+    */
+  final case class Disk(n: Int = 30000, fs: Double = 100e3, turnsPerS: Double = 4.0, unevenRel: Double = 0.1, unevenHz: Double = 5.3,
+                        lines: Int = 256, ecc: Double = 0.0, eccDeg: Double = 120, bits: Int = 12, amp: Double = 0.8,
+                        noiseLsb: Double = 0.7, refBits: Int = 22, seed: Long = 1)
+
+  def disk(s: Disk): String = {
+    val rnd = new Random(s.seed); val noise = s.noiseLsb / (1 << (s.bits - 1))
+    val sb = new StringBuilder
+    sb.append(s"# moire-recording v1\n# sample_rate_hz: ${s.fs}\n# adc_bits: ${s.bits}\n# lines_per_rev: ${s.lines}\n")
+    sb.append("# source: third generator (optical disk off its axis)\nsin,cos,ref_deg\n")
+    val q = 360.0 / (1 << s.refBits); val w = 2 * math.Pi * s.unevenHz
+    for (i <- 0 until s.n) {
+      val t = i / s.fs
+      val th = 2 * math.Pi * s.turnsPerS * (t + s.unevenRel / w * math.sin(w * t))
+      val x = th - math.toRadians(s.eccDeg)
+      val a = s.lines * (th + math.atan2(s.ecc * math.sin(x), 1 + s.ecc * math.cos(x)))
+      sb.append(code(0.004 + s.amp * math.sin(a) + noise * rnd.nextGaussian(), s.bits)).append(',')
+        .append(code(-0.006 + 0.98 * s.amp * math.cos(a + 0.012) + noise * rnd.nextGaussian(), s.bits)).append(',')
+      val r = math.floor(math.toDegrees(th) / q) * q
+      sb.append(String.format(java.util.Locale.ROOT, "%.7f", Double.box(r - 360 * math.floor(r / 360)))).append('\n')
+    }
+    sb.toString
+  }
+
   private def angle(s: Rotary, t: Double): Double = {
     val w = 2 * math.Pi * s.unevenHz
     2 * math.Pi * s.turnsPerS * (t - s.unevenRel / w * (math.cos(w * t + 0.7) - math.cos(0.7)))
@@ -34,10 +60,10 @@ object ThirdGenerator {
     (0.012 + 1.01 * m * math.sin(a), -0.008 + 0.99 * m * math.cos(a + math.toRadians(0.6)))
   }
 
-  /** The true 2nd harmonic of the mechanical angle relative to the fundamental, mean of the two channels,
+  /** The true harmonic `order` of the mechanical angle relative to the fundamental, mean of the two channels,
     * from a dense integral over one turn of `field`.
     */
-  def truthH2(s: Rotary): Double = {
+  def truthH(s: Rotary, order: Int): Double = {
     val m = 4096
     def coef(ch: Int, k: Int): Double = {
       var a = 0.0; var b = 0.0
@@ -47,7 +73,7 @@ object ThirdGenerator {
       }
       math.hypot(a, b) * 2 / m
     }
-    0.5 * (coef(0, 2) / coef(0, 1) + coef(1, 2) / coef(1, 1))
+    0.5 * (coef(0, order) / coef(0, 1) + coef(1, order) / coef(1, 1))
   }
 
   private def code(v: Double, bits: Int): Int = {

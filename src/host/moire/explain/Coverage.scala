@@ -19,7 +19,7 @@ object Coverage {
       if (rec.linesPerRev.isEmpty && !refs.exists(_ != "position"))
         Some("amplitude modulation and eccentricity with the mechanical angle: no lines_per_rev and no reference column")
       else None,
-      if (e.reference.isDefined) None
+      if (e.reference.isDefined) Identifiable.referenceNoise(e, fMin, fMax)
       else if (Identifiable.motionConfounded(e)) Some(Identifiable.untested(e))
       else Some(s"effects confounded with non-uniform motion (a harmonic of the mechanical angle, eccentricity): not identifiable " +
         s"without a reference column (${ReferenceColumns.mkString(", ")}); the motion is fitted from the signals" +

@@ -11,7 +11,7 @@ object Identifiable {
   val MinPeriodsPerSegment = 2.0
   /** Effects whose shape a free trajectory over a few periods can share. */
   val Confounded: Set[String] = Set("harmonic", "drift", "interference", "amplitude_modulation", "adc_nonlinearity",
-    "crosstalk", "channel_skew", "bandwidth", "jitter")
+    "crosstalk", "channel_skew", "bandwidth", "jitter", "eccentricity", "angle_harmonic")
 
   /** Fringe periods one trajectory segment spans (the travel over the record divided by the segments). */
   def periodsPerSegment(e: SignalEngine): Double = {
@@ -23,8 +23,22 @@ object Identifiable {
   /** True when the motion is free and too flexible within a period to tell distortion from it. */
   def motionConfounded(e: SignalEngine): Boolean = e.reference.isEmpty && periodsPerSegment(e) < MinPeriodsPerSegment
 
-  def why(c: Cand, e: SignalEngine): Option[String] =
-    if (Confounded(c.effect) && motionConfounded(e)) Some(untested(e)) else None
+  def why(c: Cand, e: SignalEngine, fMin: Double, fMax: Double): Option[String] =
+    if (Confounded(c.effect) && motionConfounded(e)) Some(untested(e))
+    else if (c.effect == "jitter") referenceNoise(e, fMin, fMax)
+    else None
+
+  /** Speed range (fastest / slowest fringe frequency) needed to tell clock jitter from the reference's own noise. */
+  val JitterSpeedRange = 3.0
+
+  /** With a reference, its noise (quantization) moves the modelled phase: residual noise that grows with the signal's
+    * slope, like jitter; only a wide speed range tells them apart (jitter grows with speed, reference noise does not).
+    */
+  def referenceNoise(e: SignalEngine, fMin: Double, fMax: Double): Option[String] =
+    if (e.reference.isDefined && !(fMax > JitterSpeedRange * fMin))
+      Some(f"jitter: not identifiable from the reference's own noise: the fringe frequency spans ${fMin}%.4g .. ${fMax}%.4g Hz " +
+        f"(a factor of ${JitterSpeedRange}%.0f is needed)")
+    else None
 
   def untested(e: SignalEngine): String =
     f"${Confounded.toSeq.sorted.mkString(", ")}: not identifiable without a reference: the record covers " +

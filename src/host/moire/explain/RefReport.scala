@@ -10,7 +10,7 @@ object RefReport {
       val check = r.kFixed.filter(k => r.rawSlope != 0 && math.abs(math.abs(r.rawSlope) / k - 1) > 0.1).map(k =>
         f"; the signals move ${math.abs(r.rawSlope)}%.6g periods per ${r.ref.unit} against the metadata's $k%.6g: check the scale keys").getOrElse("")
       Seq(f"reference ${r.ref.describe}: fringe phase = k ref + offset + k lag d(ref)/dt with k = ${r.k}%.6g periods per ${r.ref.unit} " +
-        f"($kFrom)$lag; the signals follow it within ${rms * 360}%.3g degree of fringe phase rms (${rms}%.3g of a period)$check")
+        f"($kFrom)$lag, the reference smoothed over ${2 * r.halfWidth + 1} samples; the signals follow it within ${rms * 360}%.3g degree of fringe phase rms (${rms}%.3g of a period)$check")
     case None => e.referenceRefused.map(r => s"reference ${e.refColumn.map(_.column).getOrElse("")}: $r").toSeq
   }
 

@@ -96,8 +96,9 @@ final class RefTrajectory(val ref: Reference, val fs: Double, val kFixed: Option
 }
 
 object RefTrajectory {
-  /** Half width of the smoothing window, samples. */
+  /** Half width of the smoothing window, samples; `HalfWidths` are the ones tried. */
   val HalfWidth = 8
+  val HalfWidths: Seq[Int] = Seq(8, 32, 128)
   /** A reference the signals follow less well than this (rms phase, fringe periods) is not used. */
   val MaxPhaseRms = 0.05
 

@@ -70,9 +70,11 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
       refit(4, refineTraj = true)
     }
     refColumn.foreach { r =>
-      val rt = new RefTrajectory(r, fs, r.periodsPerUnit)
-      rt.start(raw)
-      start(rt, new Array[Double](n))
+      // the smoothing of the reference: the window with the lowest BIC (a noisy reference wants a wide one)
+      def fit(h: Int): RefTrajectory = { val rt = new RefTrajectory(r, fs, r.periodsPerUnit, h); rt.start(raw); start(rt, new Array[Double](n)); rt }
+      val hs = RefTrajectory.HalfWidths.filter(h => h == RefTrajectory.HalfWidths.head || 8 * h <= n)
+      val best = if (hs.size == 1) hs.head else hs.minBy { h => fit(h); if (SignalEngine.debug) System.err.println(f"reference smoothing $h: BIC $bic%.1f"); bic }
+      val rt = fit(best)
       val rms = phaseRms
       if (rms <= RefTrajectory.MaxPhaseRms) reference = Some(rt)
       else referenceRefused = Some(f"the signals follow ${r.column} only within ${rms * 360}%.1f degree of fringe phase rms " +
@@ -86,6 +88,11 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
       free(best)
     }
   }
+
+  /** Fringe periods per turn, when the reference names turns (from its k and its turns per unit). */
+  def periodsPerTurn: Option[Double] = reference.flatMap(r => r.ref.turnsPerUnit.map(t => math.abs(r.k) / t))
+  /** Mechanical angle (radians) per sample from a reference that names turns. */
+  lazy val mechAngle: Option[Array[Double]] = reference.flatMap(r => r.ref.turnsPerUnit.map(t => r.x.map(v => 2 * math.Pi * t * (v + r.xMid))))
 
   /** Rms of the fringe phase residual (periods): how well the signals follow the phase model. */
   def phaseRms: Double = {
@@ -160,7 +167,8 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
       IndexedSeq(Col(tc, null), Col(null, tc), Col(mul(us, tc), null), Col(null, mul(uc, tc)))
     case Term.Am =>
       val l = rec.linesPerRev.getOrElse(1.0)
-      val ca = Array.tabulate(n)(i => math.cos(2 * math.Pi * phase(i) / l)); val sa = Array.tabulate(n)(i => math.sin(2 * math.Pi * phase(i) / l))
+      val th = mechAngle.getOrElse(Array.tabulate(n)(i => 2 * math.Pi * phase(i) / l))
+      val ca = th.map(math.cos); val sa = th.map(math.sin)
       IndexedSeq(Col(mul(us, ca), mul(uc, ca)), Col(mul(us, sa), mul(uc, sa)))
     case Term.Inl =>
       def t2(p: Array[Double]) = Array.tabulate(n)(i => (2 * p(i) * p(i) - 1) * lsb)
@@ -169,6 +177,10 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
     case Term.Crosstalk =>
       val w = Array.tabulate(n)(i => 2 * math.Pi * freq(i))
       IndexedSeq(Col(mul(vc, w), null), Col(null, mul(vs, w)))
+    case Term.AngleHarm(m) =>
+      val th = mechAngle.get
+      val ca = Array.tabulate(n)(i => 2 * math.Pi * math.cos(m * th(i))); val sa = Array.tabulate(n)(i => 2 * math.Pi * math.sin(m * th(i)))
+      IndexedSeq(Col(mul(gS, ca), mul(gC, ca)), Col(mul(gS, sa), mul(gC, sa)))
     case Term.Interference(hz) =>
       val a = Array.tabulate(n)(i => math.sin(2 * math.Pi * hz * i / fs)); val b = Array.tabulate(n)(i => math.cos(2 * math.Pi * hz * i / fs))
       IndexedSeq(Col(a, null), Col(b, null), Col(null, a), Col(null, b))

@@ -29,6 +29,8 @@ object SignalExplain {
       case "adc_nonlinearity" => sp.copy(terms = sp.terms :+ Term.Inl)
       case "crosstalk" => sp.copy(terms = sp.terms :+ Term.Crosstalk)
       case "interference" => sp.copy(terms = sp.terms :+ Term.Interference(e.p("frequency_hz", 50)))
+      case "eccentricity" => sp.copy(terms = sp.terms :+ Term.AngleHarm(1))
+      case "angle_harmonic" => sp.copy(terms = sp.terms :+ Term.AngleHarm(e.p("order", 2).toInt))
       case "channel_skew" => sp.copy(hasSkew = true, skewS = e.p("skew_s", 0.0))
       case "bandwidth" => sp.copy(bw = sp.bw + (e.channel -> e.p("cutoff_hz", 1e6)))
       case "jitter" => sp.copy(jitter = true)
@@ -67,7 +69,7 @@ object SignalExplain {
       // Candidates whose parameters the recording cannot support are not findings; what still fits that way after
       // the last accepted effect is unexplained structure (earlier rounds' rejects may be another effect's shadow).
       rejected.clear()
-      val (ok, impossible) = all.filter(c => !dbic(c).isNaN && Identifiable.why(c, e).isEmpty)
+      val (ok, impossible) = all.filter(c => !dbic(c).isNaN && Identifiable.why(c, e, cands.fMin, cands.fMax).isEmpty)
         .partition(c => Plausible.why(c, e.fs, e.n).isEmpty)
       impossible.filter(c => dbic(c) > Threshold && !rejected.exists(_.where.startsWith(c.effect + " "))).foreach { c =>
         rejected += Located(s"${c.effect} (${c.channel})", s"structure of this shape lowers BIC by ${"%.0f".format(dbic(c))}, but not physically: " +
@@ -130,6 +132,7 @@ object SignalExplain {
   private def termMatches(t: Term, f: Finding): Boolean = t match {
     case Term.Harm(k, ch) => f.params.get("order").contains(k.toDouble) && ch == f.channel
     case Term.Interference(hz) => f.params.get("frequency_hz").contains(hz)
+    case Term.AngleHarm(m) => m == 1 || f.params.get("order").contains(m.toDouble)
     case _ => true
   }
 

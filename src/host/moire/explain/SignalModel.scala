@@ -9,6 +9,8 @@ object Term {
   case object Inl extends Term { val name = "adc_nonlinearity"; val params = 2 }
   case object Crosstalk extends Term { val name = "crosstalk"; val params = 2 }
   final case class Interference(hz: Double) extends Term { val name = "interference"; val params = 5 }
+  /** Fringe phase modulated at `order` times the mechanical angle (the read angle's error): order 1 is eccentricity. */
+  final case class AngleHarm(order: Int) extends Term { val name: String = if (order == 1) "eccentricity" else "angle_harmonic"; val params = 2 }
 }
 
 /** A stuck (stuckAt 0/1) or bridged (wired-AND with bit `bridgedTo`) data line on channel 0 = sin, 1 = cos. */
