@@ -18,7 +18,14 @@ class ReferenceSpec extends AnyFlatSpec with Matchers {
 
   /** Findings other than harmonics the generator's formula really has (above 1e-5 of the fundamental). */
   private def stories(r: Report, s: ThirdGenerator.Rotary): Seq[Finding] = r.findings.filterNot(f =>
-    f.effect == "harmonic" && f.channel == "both" && ThirdGenerator.truthH(s, f.params("order").toInt) > 1e-5)
+    f.effect == "harmonic" && ThirdGenerator.truthH(s, f.params("order").toInt) > 1e-5)
+
+  /** The 2nd harmonic and its sd: from the finding on both channels, or the mean of one-channel findings. */
+  private def h2(r: Report): Option[(Double, Double)] = {
+    val fs = r.findings.filter(f => f.effect == "harmonic" && f.params("order") == 2.0)
+    if (fs.isEmpty) None
+    else Some((fs.map(_.params("amplitude_rel")).sum / fs.size, math.sqrt(fs.map(f => math.pow(f.unc("amplitude_rel"), 2)).sum) / fs.size))
+  }
 
   "explain with a ref_deg column" should "report the 2nd harmonic of an eccentric magnet at 0.5, 1, 2, 4 % in order, each within 3 sd of the truth, at 8, 10, 12 and 14 bits" in {
     for (bits <- Seq(8, 10, 12, 14)) {
@@ -26,13 +33,12 @@ class ReferenceSpec extends AnyFlatSpec with Matchers {
         val s = ThirdGenerator.Rotary(ecc = ecc, bits = bits, seed = bits)
         val r = run(ThirdGenerator.rotary(s))
         val truth = ThirdGenerator.truthH(s, 2)
-        val h2 = r.findings.find(f => f.effect == "harmonic" && f.params("order") == 2.0)
         withClue(s"$bits bits, eccentricity $ecc: ${describe(r)}") {
-          h2 shouldBe defined
+          h2(r) shouldBe defined
           stories(r, s) shouldBe empty
           r.unexplained shouldBe empty
         }
-        val (a, sd) = (h2.get.params("amplitude_rel"), h2.get.unc("amplitude_rel"))
+        val (a, sd) = h2(r).get
         info(f"$bits%2d bits, eccentricity ${100 * ecc}%.1f %%: 2nd harmonic ${100 * a}%.4f +- ${100 * sd}%.4f %% (truth ${100 * truth}%.4f %%, " +
           f"${(a - truth) / sd}%+.2f sd); ${r.notes.find(_.startsWith("reference")).map(_.replaceAll(".*follows? it within ", "follows within ")).getOrElse("")}")
         withClue(s"$bits bits, eccentricity $ecc") { math.abs(a - truth) should be <= 3 * sd }

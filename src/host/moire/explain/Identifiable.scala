@@ -11,7 +11,7 @@ object Identifiable {
   val MinPeriodsPerSegment = 2.0
   /** Effects whose shape a free trajectory over a few periods can share. */
   val Confounded: Set[String] = Set("harmonic", "drift", "interference", "amplitude_modulation", "adc_nonlinearity",
-    "crosstalk", "channel_skew", "bandwidth", "jitter", "eccentricity", "angle_harmonic")
+    "crosstalk", "channel_skew", "bandwidth", "jitter", "eccentricity", "angle_harmonic", "warmup", "contrast_along_travel")
 
   /** Fringe periods one trajectory segment spans (the travel over the record divided by the segments). */
   def periodsPerSegment(e: SignalEngine): Double = {
