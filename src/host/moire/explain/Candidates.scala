@@ -42,7 +42,8 @@ final class Candidates(e: SignalEngine) {
     add(linear(Term.Drift).map(_._1))
     add(warmup())
     add(linear(Term.Contrast).map(_._1))
-    if (rec.linesPerRev.isDefined) add(linear(Term.Am).map(_._1))
+    if (rec.linesPerRev.isDefined || mechanical) add(linear(Term.Am).map(_._1))
+    if (mechanical) for (m <- 1 to 2) add(linear(Term.AngleHarm(m)).map(_._1))
     add(linear(Term.Inl).map(_._1))
     add(linear(Term.Crosstalk).map(_._1))
     add(interference())
@@ -53,7 +54,11 @@ final class Candidates(e: SignalEngine) {
     clips().foreach(c => out += c)
     out.result()
   }
-  def steps: Int = 18 + 3 + (if (rec.linesPerRev.isDefined) 1 else 0) + 3 + 1 + 3 + 1
+  def steps: Int = 18 + 3 + (if (rec.linesPerRev.isDefined || mechanical) 1 else 0) + (if (mechanical) 2 else 0) + 3 + 1 + 3 + 1
+  /** The reference names the mechanical angle and a turn holds enough fringe periods to tell its modulation from
+    * harmonics of the fringe (with one period per turn they are the same thing).
+    */
+  def mechanical: Boolean = e.periodsPerTurn.exists(_ >= 3) && e.mechAngle.isDefined
 
   // ---- nonlinear: skew and bandwidth, by profile likelihood over one parameter ----
 

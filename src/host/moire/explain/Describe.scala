@@ -46,6 +46,15 @@ object Describe {
     case Term.Crosstalk =>
       (Map("sin_from_cos_tau_s" -> b(0), "cos_from_sin_tau_s" -> b(1)), Map("sin_from_cos_tau_s" -> sd(0), "cos_from_sin_tau_s" -> sd(1)),
         "against speed: amplitude of each channel", "both")
+    case Term.AngleHarm(m) =>
+      // b(0) cos + b(1) sin of m x the mechanical angle, in fringe periods = A sin(m angle + phase)
+      val (a, sa) = amp(b(0), b(1), sd(0), sd(1)); val (ph, sph) = deg(b(1), b(0), a, sa)
+      val p = e.periodsPerTurn.getOrElse(Double.NaN); val arcsec = 1296000 / p
+      val common = Map("phase_deg" -> ph, "phase_error_deg" -> 360 * a, "angle_error_arcsec" -> arcsec * a)
+      val cu = Map("phase_deg" -> sph, "phase_error_deg" -> 360 * sa, "angle_error_arcsec" -> arcsec * sa)
+      if (m == 1) (common + ("eccentricity_rel" -> 2 * math.Pi * a / p), cu + ("eccentricity_rel" -> 2 * math.Pi * sa / p),
+        "against mechanical angle (reference): fringe phase, once per turn", "both")
+      else (common + ("order" -> m), cu + ("order" -> 0.0), s"against mechanical angle (reference): fringe phase, $m times per turn", "both")
     case Term.Interference(hz) =>
       val (a, sa) = amp(b(0), b(1), sd(0), sd(1)); val (c, sc) = amp(b(2), b(3), sd(2), sd(3))
       (Map("frequency_hz" -> hz, "amplitude_sin_fs" -> a, "amplitude_cos_fs" -> c, "amplitude_fs" -> 0.5 * (a + c)),
@@ -97,6 +106,11 @@ object Describe {
         f"warm-up: offsets settle by ${g("offset_sin_step_fs")}%.3g / ${g("offset_cos_step_fs")}%.3g full scale, amplitudes by ${100 * g("gain_sin_step_rel")}%.3g / ${100 * g("gain_cos_step_rel")}%.3g %% (sin/cos) with a time constant of ${g("time_constant_s")}%.3g s"
       case "coarse_quantization" =>
         f"the codes use only ${g("effective_bits").toInt} of the ${g("format_bits").toInt} bits: quantization steps of ${g("step_lsb").toInt} LSB, whose error is not white noise"
+      case "eccentricity" =>
+        f"eccentricity of the disk or magnet: the read angle is off by ${g("angle_error_arcsec")}%.3g arcsec once per turn " +
+          f"(${100 * g("eccentricity_rel")}%.3g %% of the reading radius; ${g("phase_error_deg")}%.3g degree of fringe phase)"
+      case "angle_harmonic" =>
+        f"harmonic ${g("order").toInt} of the mechanical angle in the read angle: ${g("angle_error_arcsec")}%.3g arcsec (${g("phase_error_deg")}%.3g degree of fringe phase)"
       case "amplitude_modulation" => f"amplitude follows the mechanical angle: ${100 * g("depth")}%.2f %% modulation once per revolution"
       case "adc_nonlinearity" => f"ADC integral nonlinearity: bow ${g("inl2_lsb")}%.2f LSB, S-shape ${g("inl3_lsb")}%.2f LSB at full scale"
       case "crosstalk" => f"capacitive crosstalk: sin gets ${g("sin_from_cos_tau_s") * 1e9}%.2f ns x d(cos)/dt, cos gets ${g("cos_from_sin_tau_s") * 1e9}%.2f ns x d(sin)/dt"

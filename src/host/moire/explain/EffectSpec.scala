@@ -19,6 +19,8 @@ object EffectSpec {
     ("bandwidth", Seq("cutoff_hz"), "first-order read-head amplifier low-pass (channel=sin|cos|both)"),
     ("drift", Seq("offset_sin_per_s", "offset_cos_per_s", "gain_sin_per_s", "gain_cos_per_s"), "offsets (full scale) and gains (relative) changing linearly with time"),
     ("amplitude_modulation", Seq("depth", "phase_deg"), "amplitude * (1 + depth cos(mechanical angle + phase)); needs lines_per_rev"),
+    ("eccentricity", Seq("eccentricity_rel", "phase_deg"), "disk or magnet off the axis by eccentricity_rel of the reading radius: the read angle is off by eccentricity_rel sin(angle + phase) radians once per turn; needs lines_per_rev (explain: a reference naming turns)"),
+    ("angle_harmonic", Seq("order", "amplitude_arcsec", "phase_deg"), "read angle off by amplitude_arcsec sin(order angle + phase), a harmonic of the mechanical angle; needs lines_per_rev (explain: a reference naming turns)"),
     ("jitter", Seq("jitter_s"), "sampling clock jitter, seconds rms, common to both channels"),
     ("adc_bit_fault", Seq("bit", "stuck_at", "bridged_to"), "data line stuck at 0/1, or wired-AND with another bit (channel=sin|cos)"),
     ("clipping", Seq("high_fs", "low_fs"), "amplifier saturation levels in full-scale units (channel=sin|cos|both)"),

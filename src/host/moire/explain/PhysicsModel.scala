@@ -33,8 +33,8 @@ final case class PhysicsModel(
   })
 
   def validate(): Unit = {
-    if (all("amplitude_modulation").nonEmpty && linesPerRev.isEmpty)
-      throw new ExplainError("amplitude_modulation needs lines_per_rev (--lines-per-rev)")
+    for (name <- Seq("amplitude_modulation", "eccentricity", "angle_harmonic") if all(name).nonEmpty && linesPerRev.isEmpty)
+      throw new ExplainError(s"$name needs lines_per_rev (--lines-per-rev)")
     effects.foreach { e =>
       if (EffectSpec.calibrationEffects.exists(_._1 == e.effect)) throw new ExplainError(s"${e.effect} applies to calibration data, not to signals")
       if (e.effect == "harmonic" && e.p("order", 2) < 2) throw new ExplainError("harmonic order must be >= 2")
@@ -77,13 +77,21 @@ final case class PhysicsModel(
     val clip = all("clipping")
     val inl = all("adc_nonlinearity"); val inl2 = inl.map(_.p("inl2_lsb", 0.0)).sum; val inl3 = inl.map(_.p("inl3_lsb", 0.0)).sum
     val faults = all("adc_bit_fault")
-    val plain = skew == 0 && jitter == 0 && bw.isEmpty && drift.isEmpty && am.isEmpty && xt.isEmpty && inter.isEmpty && ct.isEmpty && warm.isEmpty
+    // read-angle errors of the mechanical angle (eccentricity, its harmonics), in turns
+    val angleErr = all("eccentricity").map(e => (1, e.p("eccentricity_rel", 0.0) / (2 * math.Pi), e.p("phase_deg", 0.0))) ++
+      all("angle_harmonic").map(e => (e.p("order", 2).toInt, e.p("amplitude_arcsec", 0.0) / 1296000, e.p("phase_deg", 0.0)))
+    def periods(t: Double): Double = {
+      val q = motion.periods(t)
+      if (angleErr.isEmpty) q
+      else { val l = linesPerRev.get; val th = 2 * math.Pi * q / l; q + l * angleErr.map { case (m, a, p) => a * math.sin(m * th + math.toRadians(p)) }.sum }
+    }
+    val plain = skew == 0 && jitter == 0 && bw.isEmpty && drift.isEmpty && am.isEmpty && xt.isEmpty && inter.isEmpty && ct.isEmpty && warm.isEmpty && angleErr.isEmpty
     val eps = 1e-6
 
     /** One channel's value: fringe through the low-pass and the slow effects. */
     def channel(isSin: Boolean, t: Double): Double = {
       val f = motion.frequency(t)
-      var ph = motion.periods(t); var g = 1.0
+      var ph = periods(t); var g = 1.0
       (if (isSin) bwS else bwC).foreach { fc => val u = f / fc; g /= math.sqrt(1 + u * u); ph -= math.atan(u) / (2 * math.Pi) }
       val o = if (isSin) p.offsetSin else p.offsetCos
       def raw(q: Double) = { val a = SignalSim.analog(p, q); (if (isSin) a._1 else a._2) - o }

@@ -13,14 +13,15 @@ import org.hipparchus.linear.{Array2DRowRealMatrix, LUDecomposition}
   * follows the motion, the contrast or the quantization rather than the catalogued physics differs between halves
   * by many sd in a long recording and fails it.
   *
-  * The fit model is an approximation (a piecewise trajectory, first-order filters), so an effect thousands of sd
-  * strong agrees between the halves only as well as the model fits: each fold's uncertainty has a floor of
-  * `ModelRel` of the parameter's size. It matters only above 100 sd per fold; a story near the threshold (a few sd)
-  * is judged by its noise alone, and one whose halves differ by tens of percent still fails.
+  * The fit model is an approximation (a piecewise trajectory or a smoothed reference, first-order filters), so an
+  * effect hundreds of sd strong agrees between the halves only as well as the model fits: each fold's uncertainty
+  * has a floor, `ModelRel` of the effect's size in the signal expressed in each parameter's units (an interference
+  * line's frequency has none). It matters only above 50 sd per fold; a story near the threshold (a few sd) is
+  * judged by its noise alone, and one whose halves differ by tens of percent still fails.
   */
 object Replicate {
   val PValue = 0.0027
-  val ModelRel = 0.01
+  val ModelRel = 0.02
   val SpeedBands = 3
 
   /** None when the effect that `e.spec` has beyond `prev` replicates (or cannot be refitted on folds: faults,
@@ -58,6 +59,8 @@ object Replicate {
   def interferenceWhy(e: SignalEngine, t: Term.Interference, halves: Seq[Array[Int]]): Option[String] = {
     val (ys, yc) = target(e, t)
     val cands = new Candidates(e)
+    val at = e.termIndex(t); val b = e.sol.beta
+    val floorA = ModelRel * 0.5 * (math.hypot(b(at), b(at + 1)) + math.hypot(b(at + 2), b(at + 3)))
     val ests = halves.map { idx =>
       val m = idx.length; val st = math.max(1, m / 50000)
       def power(hz: Double): Double = {
@@ -84,7 +87,7 @@ object Replicate {
         // Cramer-Rao bound of a sinusoid's frequency in white noise, both channels' power together
         val sdF = e.fs / (2 * math.Pi) * math.sqrt(24 * v / ((as * as + ac * ac) * m.toDouble * m * m))
         val sdA = math.sqrt(v * sol.inv(6)(6))
-        Some(Est(Array(hz, as, ac), Array(Array(sdF * sdF, 0, 0), Array(0, sdA * sdA, 0), Array(0, 0, sdA * sdA))))
+        Some(Est(Array(hz, as, ac), Array(Array(sdF * sdF, 0, 0), Array(0, sdA * sdA, 0), Array(0, 0, sdA * sdA)), Array(0.0, floorA, floorA)))
       }
     }
     agree(ests, "halves", "frequency (Hz) and amplitudes (full scale)")
@@ -93,8 +96,8 @@ object Replicate {
   /** Contiguous halves of the record. */
   def folds(n: Int): Seq[Array[Int]] = Seq(Array.range(0, n / 2), Array.range(n / 2, n))
 
-  /** A fold's estimate of a parameter vector and its covariance (None when the fold cannot determine it). */
-  final case class Est(theta: Array[Double], cov: Array[Array[Double]])
+  /** A fold's estimate of a parameter vector, its covariance and the model-error floor of each parameter's sd. */
+  final case class Est(theta: Array[Double], cov: Array[Array[Double]], floor: Array[Double])
 
   private def pick(a: Array[Double], idx: Array[Int]): Array[Double] = if (a == null) null else idx.map(a(_))
 
@@ -102,6 +105,11 @@ object Replicate {
   def linearFolds(e: SignalEngine, t: Term, fs: Seq[Array[Int]]): Seq[Option[Est]] = {
     val cols = e.baseCols(e.s1, e.s2, e.c1, e.c2) ++ e.termCols(t)
     val (ts, tc) = target(e, t)
+    // the term's size in the signal (rms over the record), in the units of each of its parameters
+    val tcols = e.termCols(t); val at = e.termIndex(t)
+    val rms = tcols.map(c => math.sqrt(((if (c.s == null) 0.0 else e.sumSq(c.s)) + (if (c.c == null) 0.0 else e.sumSq(c.c))) / e.n))
+    val size = math.sqrt(tcols.indices.map(j => math.pow(e.sol.beta(at + j) * rms(j), 2)).sum)
+    val floor = rms.map(r => if (r > 0) ModelRel * size / r else 0.0).toArray
     fs.map { idx =>
       val cf = cols.map(c => Col(pick(c.s, idx), pick(c.c, idx)))
       val ys = pick(ts, idx); val yc = pick(tc, idx)
@@ -114,7 +122,7 @@ object Replicate {
         while (i < m) { val a = ys(i) - ps(i); val b = yc(i) - pc(i); rss += a * a + b * b; i += 1 }
         val v = rss / math.max(1, 2 * m - cols.size)
         val k = cols.size
-        Some(Est(sol.beta.slice(6, k), Array.tabulate(k - 6, k - 6)((a, b) => sol.inv(a + 6)(b + 6) * v)))
+        Some(Est(sol.beta.slice(6, k), Array.tabulate(k - 6, k - 6)((a, b) => sol.inv(a + 6)(b + 6) * v), floor))
       }
     }
   }
@@ -125,7 +133,7 @@ object Replicate {
       val st = math.max(1, idx.length / 50000)
       val x = cands.minimize(v => cands.profile(spec(v), st, idx), x0 - span, x0 + span, grid = 8, golden = 10)
       val sd = cands.curvatureSd(v => cands.profile(spec(v), 1, idx) * idx.length / e.n, x, math.max(span * 0.05, 1e-15))
-      if (sd.isNaN || sd <= 0) None else Some(Est(Array(x), Array(Array(sd * sd))))
+      if (sd.isNaN || sd <= 0) None else Some(Est(Array(x), Array(Array(sd * sd)), Array(ModelRel * math.abs(x0))))
     }
 
   /** Jitter: the same jitter on both halves and in every speed band (noise growing with slope wherever it can show). */
@@ -140,7 +148,7 @@ object Replicate {
         val p = a(i) * a(i) / (nz.varS + nz.jitter2 * a(i) * a(i)); val q = b(i) * b(i) / (nz.varC + nz.jitter2 * b(i) * b(i))
         info += 0.5 * (p * p + q * q); i += 1
       }
-      if (info <= 0) None else Some(Est(Array(nz.jitter2), Array(Array(1 / info))))
+      if (info <= 0) None else Some(Est(Array(nz.jitter2), Array(Array(1 / info)), Array(ModelRel * e.noise.jitter2)))
     }
     val f = e.freq.map(math.abs); val q = f.clone(); java.util.Arrays.sort(q)
     val edges = (0 to SpeedBands).map(b => if (b == SpeedBands) Double.PositiveInfinity else q(b * e.n / SpeedBands))
@@ -166,8 +174,7 @@ object Replicate {
     val ok0 = ests.flatten
     if (ok0.size < 2) return None
     val p = ok0.head.theta.length
-    val size = Array.tabulate(p)(a => ok0.map(x => math.abs(x.theta(a))).sum / ok0.size)
-    val ok = ok0.map(x => x.copy(cov = Array.tabulate(p, p)((a, b) => x.cov(a)(b) + (if (a == b) math.pow(ModelRel * size(a), 2) else 0.0))))
+    val ok = ok0.map(x => x.copy(cov = Array.tabulate(p, p)((a, b) => x.cov(a)(b) + (if (a == b) x.floor(a) * x.floor(a) else 0.0))))
     val ws = ok.map(x => inv(x.cov))
     if (ws.exists(_.isEmpty)) return None
     val wSum = Array.tabulate(p, p)((a, b) => ws.map(_.get(a)(b)).sum)

@@ -1,6 +1,6 @@
 package moire.explain
 
-import moire.recording.Recording
+import moire.recording.{Recording, Reference}
 
 /** One accepted effect, as reported. `before`/`after` are the residuals around its acceptance (for plots). */
 final case class Finding(effect: String, channel: String, summary: String, params: Map[String, Double], unc: Map[String, Double],
@@ -34,6 +34,8 @@ object SignalExplain {
       case "contrast_along_travel" => sp.copy(terms = sp.terms :+ Term.Contrast)
       case "warmup" => sp.copy(terms = sp.terms :+ Term.Warmup(e.p("time_constant_s", 1.0)))
       case "interference" => sp.copy(terms = sp.terms :+ Term.Interference(e.p("frequency_hz", 50)))
+      case "eccentricity" => sp.copy(terms = sp.terms :+ Term.AngleHarm(1))
+      case "angle_harmonic" => sp.copy(terms = sp.terms :+ Term.AngleHarm(e.p("order", 2).toInt))
       case "channel_skew" => sp.copy(hasSkew = true, skewS = e.p("skew_s", 0.0))
       case "bandwidth" => sp.copy(bw = sp.bw + (e.channel -> e.p("cutoff_hz", 1e6)))
       case "jitter" => sp.copy(jitter = true)
@@ -49,7 +51,7 @@ object SignalExplain {
     val timing = sys.props.contains("moire.timing")
     var tl = t0
     def lap(what: String): Unit = if (timing) { val now = System.nanoTime(); System.err.println(f"$what ${(now - tl) / 1e6}%.0f ms"); tl = now }
-    val e = new SignalEngine(rec)
+    val e = new SignalEngine(rec, Reference.of(rec).fold(m => throw new ExplainError(s"$file: $m"), identity))
     progress.phase("default fit", 4)
     e.init(); progress.step(4)
     val givenModel = specOf(model)
@@ -72,7 +74,8 @@ object SignalExplain {
       // Candidates whose parameters the recording cannot support are not findings; what still fits that way after
       // the last accepted effect is unexplained structure (earlier rounds' rejects may be another effect's shadow).
       rejected.clear()
-      val (ok, impossible) = all.filter(c => !dbic(c).isNaN).partition(c => Plausible.why(c, e.fs, e.n).isEmpty)
+      val (ok, impossible) = all.filter(c => !dbic(c).isNaN && Identifiable.why(c, e, cands.fMin, cands.fMax).isEmpty)
+        .partition(c => Plausible.why(c, e.fs, e.n).isEmpty)
       impossible.filter(c => dbic(c) > Threshold && !rejected.exists(_.where.startsWith(c.effect + " "))).foreach { c =>
         rejected += Located(s"${c.effect} (${c.channel})", s"structure of this shape lowers BIC by ${"%.0f".format(dbic(c))}, but not physically: " +
           Plausible.why(c, e.fs, e.n).get, c.params, significant = true)
@@ -119,7 +122,10 @@ object SignalExplain {
       val g = refresh(f, e)
       (g.copy(summary = Describe.summary(Cand(g.effect, g.channel, e.spec, 0, 0, g.params, g.unc, g.where), cands.fMin, cands.fMax)), b, a)
     }
-    val unexplained = Locate.all(e).filter(_.significant) ++ rejected
+    val left = Locate.all(e).filter(_.significant)
+    // with a free motion that bends within a period, what is left cannot be told from the motion: not tested, not unexplained
+    val confounded = Identifiable.motionConfounded(e)
+    val unexplained = (if (confounded) Nil else left) ++ rejected
     val coarse = if (e.coarseBits == 0) Nil else {
       val p = Map("effective_bits" -> (rec.adc.bits - e.coarseBits).toDouble, "format_bits" -> rec.adc.bits.toDouble, "step_lsb" -> (1 << e.coarseBits).toDouble)
       val c = Cand("coarse_quantization", "both", e.spec, 0, 0, p, p.map { case (k, _) => k -> 0.0 }, "")
@@ -127,7 +133,8 @@ object SignalExplain {
         s"code histogram: the low ${e.coarseBits} bits never change on either channel"))
     }
     val report = Report(file, "signals", baseRms, baseBic, baseParams, located, coarse ++ fin.map(_._1), unexplained, e.rms, e.bic,
-      rec.length, (System.nanoTime() - t0) / 1e9, notes(e), Coverage.untested(e, cands.fMin, cands.fMax))
+      rec.length, (System.nanoTime() - t0) / 1e9, notes(e), Coverage.untested(e, cands.fMin, cands.fMax) ++
+        (if (confounded) Identifiable.leftOver(left) else Nil))
     Result(report, e, before, fin)
   }
 
@@ -151,6 +158,7 @@ object SignalExplain {
   private def termMatches(t: Term, f: Finding): Boolean = t match {
     case Term.Harm(k, ch) => f.params.get("order").contains(k.toDouble) && ch == f.channel
     case Term.Interference(hz) => f.params.get("frequency_hz").contains(hz)
+    case Term.AngleHarm(m) => m == 1 || f.params.get("order").contains(m.toDouble)
     case _ => true
   }
 
@@ -199,11 +207,12 @@ object SignalExplain {
     val sd = math.sqrt(math.min(e.noise.varS, e.noise.varC)) / e.step
     val unit = if (e.coarseBits == 0) "LSB" else s"steps of ${1 << e.coarseBits} LSB"
     (if (sd < 0.5) Seq(f"noise is $sd%.2f $unit rms, below 0.5: the quantization error is not white noise here; value-bound structure below ${Quantization.biasBound(e) / e.step}%.2f of a step is taken for quantization, not physics") else Nil) ++
-      (if (e.typicalHz * 4 > e.fs) Seq("fewer than 4 samples per fringe period: the phase trajectory is poorly sampled") else Nil)
+      (if (e.typicalHz * 4 > e.fs && e.reference.isEmpty) Seq("fewer than 4 samples per fringe period: the phase trajectory is poorly sampled") else Nil) ++
+      RefReport.notes(e)
   }
 
   def baselineParams(e: SignalEngine): Map[String, Double] = Map(
     "offset_sin_fs" -> e.base(0), "offset_cos_fs" -> e.base(3), "amplitude_sin_fs" -> e.ampS, "amplitude_cos_fs" -> e.ampC,
     "phase_error_deg" -> e.phaseErrorDeg, "noise_sin_fs" -> math.sqrt(e.noise.varS), "noise_cos_fs" -> math.sqrt(e.noise.varC),
-    "typical_fringe_hz" -> e.typicalHz, "trajectory_segments" -> e.traj.nseg)
+    "typical_fringe_hz" -> e.typicalHz, "trajectory_segments" -> e.traj.nseg.toDouble) ++ RefReport.params(e)
 }
