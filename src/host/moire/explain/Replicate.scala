@@ -101,12 +101,26 @@ object Replicate {
 
   private def pick(a: Array[Double], idx: Array[Int]): Array[Double] = if (a == null) null else idx.map(a(_))
 
-  /** The term's coefficients refitted with the default part on each fold of what the term explains. */
+  /** The term's coefficients refitted with the default part on each fold of what the term explains. A warm-up's
+    * time constant stays free on each fold (one column: its fitted shape's derivative by the time constant), since
+    * the later half sees only the tail, whose size depends on it.
+    */
   def linearFolds(e: SignalEngine, t: Term, fs: Seq[Array[Int]]): Seq[Option[Est]] = {
-    val cols = e.baseCols(e.s1, e.s2, e.c1, e.c2) ++ e.termCols(t)
+    val tcols = e.termCols(t); val at = e.termIndex(t)
+    val nuisance = t match {
+      case Term.Warmup(tau) =>
+        val b = e.sol.beta.slice(at, at + tcols.size); val h = 0.05
+        val up = e.termCols(Term.Warmup(tau * (1 + h))); val dn = e.termCols(Term.Warmup(tau * (1 - h)))
+        def d(sinCh: Boolean) = {
+          val p = LinearFit.combine(up, b, sinCh, e.n); val q = LinearFit.combine(dn, b, sinCh, e.n)
+          Array.tabulate(e.n)(i => (p(i) - q(i)) / (2 * h))
+        }
+        IndexedSeq(Col(d(true), d(false)))
+      case _ => IndexedSeq.empty
+    }
+    val cols = e.baseCols(e.s1, e.s2, e.c1, e.c2) ++ tcols ++ nuisance
     val (ts, tc) = target(e, t)
     // the term's size in the signal (rms over the record), in the units of each of its parameters
-    val tcols = e.termCols(t); val at = e.termIndex(t)
     val rms = tcols.map(c => math.sqrt(((if (c.s == null) 0.0 else e.sumSq(c.s)) + (if (c.c == null) 0.0 else e.sumSq(c.c))) / e.n))
     val size = math.sqrt(tcols.indices.map(j => math.pow(e.sol.beta(at + j) * rms(j), 2)).sum)
     val floor = rms.map(r => if (r > 0) ModelRel * size / r else 0.0).toArray
@@ -121,7 +135,7 @@ object Replicate {
         var rss = 0.0; var i = 0
         while (i < m) { val a = ys(i) - ps(i); val b = yc(i) - pc(i); rss += a * a + b * b; i += 1 }
         val v = rss / math.max(1, 2 * m - cols.size)
-        val k = cols.size
+        val k = 6 + tcols.size
         Some(Est(sol.beta.slice(6, k), Array.tabulate(k - 6, k - 6)((a, b) => sol.inv(a + 6)(b + 6) * v), floor))
       }
     }
