@@ -187,9 +187,11 @@ final class Candidates(e: SignalEngine) {
     val idx = (0 until n by st).toArray
     def pick(a: Array[Double]) = if (a == null) null else idx.map(a(_))
     val ys = pick(resS); val yc = pick(resC); val base = baseCols(s1, s2, c1, c2).map(c => Col(pick(c.s), pick(c.c)))
-    // -2 ln L (white noise) of the warm-up at log10(tau), from the subsample, scaled to all samples
+    val uS = pick(us); val uC = pick(uc)
+    // -2 ln L (white noise) of the warm-up at log10(tau), from the subsample (its columns built there), scaled to all samples
     def f(lt: Double): Double = {
-      val cols = base ++ termCols(Term.Warmup(math.pow(10, lt))).map(c => Col(pick(c.s), pick(c.c)))
+      val tau = math.pow(10, lt)
+      val cols = base ++ warmupCols(idx.map(i => math.exp(-i / fs / tau)), uS, uC)
       val sol = LinearFit.solve(cols, ys, yc)
       val rs = LinearFit.combine(cols, sol.beta, sinCh = true, ys.length); val rc = LinearFit.combine(cols, sol.beta, sinCh = false, ys.length)
       var rss = 0.0; var i = 0

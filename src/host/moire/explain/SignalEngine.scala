@@ -191,9 +191,7 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
     case Term.Contrast =>
       val x = travel
       IndexedSeq(Col(x, null), Col(null, x), Col(mul(us, x), null), Col(null, mul(uc, x)))
-    case Term.Warmup(tau) =>
-      val w = warmupBasis(tau)
-      IndexedSeq(Col(w, null), Col(null, w), Col(mul(us, w), null), Col(null, mul(uc, w)))
+    case Term.Warmup(tau) => warmupCols(warmupBasis(tau), us, uc)
     case Term.AngleHarm(m) =>
       val th = mechAngle.get
       val ca = Array.tabulate(n)(i => 2 * math.Pi * math.cos(m * th(i))); val sa = Array.tabulate(n)(i => 2 * math.Pi * math.sin(m * th(i)))
@@ -213,6 +211,9 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
 
   /** exp(-t / tau) from the first sample: the part of a warm-up still to come. */
   def warmupBasis(tau: Double): Array[Double] = Array.tabulate(n)(i => math.exp(-i / fs / tau))
+  /** A warm-up's columns from its basis w and the fundamentals u, v (all samples, or a subsample's). */
+  def warmupCols(w: Array[Double], u: Array[Double], v: Array[Double]): IndexedSeq[Col] =
+    IndexedSeq(Col(w, null), Col(null, w), Col(Array.tabulate(w.length)(i => u(i) * w(i)), null), Col(null, Array.tabulate(w.length)(i => v(i) * w(i))))
 
   private def mul(a: Array[Double], b: Array[Double]): Array[Double] = {
     val o = new Array[Double](n); var i = 0
