@@ -40,7 +40,10 @@ final class Candidates(e: SignalEngine) {
     }
     for (k <- 2 to 7; ch <- Seq("sin", "cos", "both")) add(linear(Term.Harm(k, ch)).map(_._1))
     add(linear(Term.Drift).map(_._1))
-    if (rec.linesPerRev.isDefined) add(linear(Term.Am).map(_._1))
+    add(warmup())
+    add(linear(Term.Contrast).map(_._1))
+    if (rec.linesPerRev.isDefined || mechanical) add(linear(Term.Am).map(_._1))
+    if (mechanical) for (m <- 1 to 2) add(linear(Term.AngleHarm(m)).map(_._1))
     add(linear(Term.Inl).map(_._1))
     add(linear(Term.Crosstalk).map(_._1))
     add(interference())
@@ -51,12 +54,18 @@ final class Candidates(e: SignalEngine) {
     clips().foreach(c => out += c)
     out.result()
   }
-  def steps: Int = 18 + 1 + (if (rec.linesPerRev.isDefined) 1 else 0) + 3 + 1 + 3 + 1
+  def steps: Int = 18 + 3 + (if (rec.linesPerRev.isDefined || mechanical) 1 else 0) + (if (mechanical) 2 else 0) + 3 + 1 + 3 + 1
+  /** The reference names the mechanical angle and a turn holds enough fringe periods to tell its modulation from
+    * harmonics of the fringe (with one period per turn they are the same thing).
+    */
+  def mechanical: Boolean = e.periodsPerTurn.exists(_ >= 3) && e.mechAngle.isDefined
 
   // ---- nonlinear: skew and bandwidth, by profile likelihood over one parameter ----
 
-  /** -2 ln L (white noise per channel) of the default part refitted with modified fundamentals, on every stride-th sample, scaled to n. */
-  def profile(sp: ModelSpec, stride: Int): Double = {
+  /** -2 ln L (white noise per channel) of the default part refitted with modified fundamentals, on every stride-th sample
+    * (of `idx` when given: a fold), scaled to n.
+    */
+  def profile(sp: ModelSpec, stride: Int, idx: Array[Int] = null): Double = {
     val fcB = sp.bw.getOrElse("both", Double.PositiveInfinity); val fcS = sp.bw.getOrElse("sin", Double.PositiveInfinity)
     val fcC = sp.bw.getOrElse("cos", Double.PositiveInfinity); val w = 2 * math.Pi * sp.skewS
     val ms = new Array[Double](10); val mc = new Array[Double](10)
@@ -64,8 +73,9 @@ final class Candidates(e: SignalEngine) {
       m(0) += 1; m(1) += x1; m(2) += x2; m(3) += x1 * x1; m(4) += x1 * x2; m(5) += x2 * x2
       m(6) += y; m(7) += y * x1; m(8) += y * x2; m(9) += y * y
     }
-    var i = 0; var cnt = 0
-    while (i < n) {
+    var k = 0; var cnt = 0; val end = if (idx == null) n else idx.length
+    while (k < end) {
+      val i = if (idx == null) k else idx(k)
       val f = freq(i); var gs = 1.0; var gc = 1.0; var ls = -0.5 * w * f; var lc = 0.5 * w * f
       if (!fcB.isInfinite) { val u = f / fcB; val g = 1 / math.sqrt(1 + u * u); gs *= g; gc *= g }
       var lagS = 0.0; var lagC = 0.0
@@ -75,7 +85,7 @@ final class Candidates(e: SignalEngine) {
       val cls = math.cos(ls); val sls = math.sin(ls); val clc = math.cos(lc); val slc = math.sin(lc)
       acc(ms, gs * (sn(i) * cls + cs(i) * sls), gs * (cs(i) * cls - sn(i) * sls), repS(i) - termPredS(i))
       acc(mc, gc * (sn(i) * clc + cs(i) * slc), gc * (cs(i) * clc - sn(i) * slc), repC(i) - termPredC(i))
-      cnt += 1; i += stride
+      cnt += 1; k += stride
     }
     def rss(m: Array[Double]): Double = {
       val a = Array(Array(m(0), m(1), m(2), 0, m(6)), Array(m(1), m(3), m(4), 0, m(7)), Array(m(2), m(4), m(5), 0, m(8)), Array(0.0, 0, 0, 1, 0))
@@ -170,6 +180,31 @@ final class Candidates(e: SignalEngine) {
     Some(Cand("jitter", "both", spec.copy(jitter = true), nz.m2ll, 1, p, u, where))
   }
 
+  /** Warm-up: the time constant by a log grid and golden section on every stride-th sample, then the full linear fit. */
+  def warmup(): Option[Cand] = {
+    if (spec.terms.exists(_.isInstanceOf[Term.Warmup])) return None
+    val span = n / fs; val st = stride
+    val idx = (0 until n by st).toArray
+    def pick(a: Array[Double]) = if (a == null) null else idx.map(a(_))
+    val ys = pick(resS); val yc = pick(resC); val base = baseCols(s1, s2, c1, c2).map(c => Col(pick(c.s), pick(c.c)))
+    val uS = pick(us); val uC = pick(uc)
+    // -2 ln L (white noise) of the warm-up at log10(tau), from the subsample (its columns built there), scaled to all samples
+    def f(lt: Double): Double = {
+      val tau = math.pow(10, lt)
+      val cols = base ++ warmupCols(idx.map(i => math.exp(-i / fs / tau)), uS, uC)
+      val sol = LinearFit.solve(cols, ys, yc)
+      val rs = LinearFit.combine(cols, sol.beta, sinCh = true, ys.length); val rc = LinearFit.combine(cols, sol.beta, sinCh = false, ys.length)
+      var rss = 0.0; var i = 0
+      while (i < ys.length) { val a = ys(i) - rs(i); val b = yc(i) - rc(i); rss += a * a + b * b; i += 1 }
+      2.0 * n * math.log(math.max(1e-300, rss / (2.0 * ys.length)))
+    }
+    val lo = math.log10(span / 100); val hi = math.log10(3 * span)
+    val lt = minimize(f, lo, hi, grid = 12, golden = 12)
+    val sdLog = curvatureSd(f, lt, 0.05)
+    val tau = math.pow(10, lt)
+    linear(Term.Warmup(tau)).map { case (c, _) => c.copy(unc = c.unc + ("time_constant_s" -> tau * math.log(10) * sdLog)) }
+  }
+
   /** Fixed-frequency pickup: strongest line of the residual spectrum, refined by least squares. */
   def interference(): Option[Cand] = {
     val m = Integer.highestOneBit(math.min(n, 1 << 20))
@@ -208,7 +243,7 @@ final class Candidates(e: SignalEngine) {
         }
         i += 1
       }
-      for (b <- 0 until bits) {
+      for (b <- coarseBits until bits) {
         if (m1(b) == 0 && p1(b) > need) out ++= faultCand(Fault(ch, b, 0, -1))
         else if (m1(b) == n && n - p1(b) > need) out ++= faultCand(Fault(ch, b, 1, -1))
         if (b + 1 < bits && diffM(b) == 0 && diffP(b) > need && m1(b) > 0 && m1(b) < n) out ++= faultCand(Fault(ch, b, -1, b + 1))

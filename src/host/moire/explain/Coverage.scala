@@ -5,7 +5,7 @@ package moire.explain
   */
 object Coverage {
   /** The reference columns a recording may carry. */
-  val ReferenceColumns: Seq[String] = Seq("ref_deg", "ref_turns", "ref_counts", "ref_um", "position")
+  val ReferenceColumns: Seq[String] = moire.recording.Reference.Columns
 
   def untested(e: SignalEngine, fMin: Double, fMax: Double): Seq[String] = {
     val seconds = e.n / e.fs
@@ -19,10 +19,11 @@ object Coverage {
       if (rec.linesPerRev.isEmpty && !refs.exists(_ != "position"))
         Some("amplitude modulation and eccentricity with the mechanical angle: no lines_per_rev and no reference column")
       else None,
-      if (refs.isEmpty)
-        Some(s"effects confounded with non-uniform motion (a harmonic of the mechanical angle, eccentricity): not identifiable " +
-          s"without a reference column (${ReferenceColumns.mkString(", ")}); the motion is fitted from the signals")
-      else Some(s"reference column ${refs.mkString(", ")} present but not used by this version: the motion is fitted from the signals")
+      if (e.reference.isDefined) Identifiable.referenceNoise(e, fMin, fMax)
+      else if (Identifiable.motionConfounded(e)) Some(Identifiable.untested(e))
+      else Some(s"effects confounded with non-uniform motion (a harmonic of the mechanical angle, eccentricity): not identifiable " +
+        s"without a reference column (${ReferenceColumns.mkString(", ")}); the motion is fitted from the signals" +
+        e.referenceRefused.map(r => s"; the reference: $r").getOrElse(""))
     ).flatten
   }
 }

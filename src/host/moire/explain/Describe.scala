@@ -26,6 +26,18 @@ object Describe {
     case Term.Drift =>
       val names = Seq("offset_sin_per_s", "offset_cos_per_s", "gain_sin_per_s", "gain_cos_per_s")
       (names.zip(b).toMap, names.zip(sd).toMap, "against time: offset and amplitude", "both")
+    case Term.Contrast =>
+      val names = Seq("offset_sin_per_period", "offset_cos_per_period", "gain_sin_per_period", "gain_cos_per_period")
+      val span = { val x = e.travel; x.max - x.min }
+      (names.zip(b).toMap + ("travel_periods" -> span), names.zip(sd).toMap + ("travel_periods" -> 0.0), "against position: offset and amplitude", "both")
+    case Term.Warmup(tau) =>
+      // the basis is the part still to come, exp(-t / tau): a step s of the offset is -b; the amplitudes are fitted at
+      // their final value A (1 + g), so a relative gain step g is -b / (1 + b)
+      def gain(x: Double) = -x / (1 + x)
+      (Map("offset_sin_step_fs" -> -b(0), "offset_cos_step_fs" -> -b(1), "gain_sin_step_rel" -> gain(b(2)), "gain_cos_step_rel" -> gain(b(3)),
+        "time_constant_s" -> tau),
+        Map("offset_sin_step_fs" -> sd(0), "offset_cos_step_fs" -> sd(1), "gain_sin_step_rel" -> sd(2), "gain_cos_step_rel" -> sd(3),
+          "time_constant_s" -> Double.NaN), f"against time: offset and amplitude settling with a time constant of ${tau}%.3g s", "both")
     case Term.Am =>
       val (a, sa) = amp(b(0), b(1), sd(0), sd(1)); val (ph, sph) = deg(b(0), -b(1), a, sa)
       (Map("depth" -> a, "phase_deg" -> ph), Map("depth" -> sa, "phase_deg" -> sph), "against mechanical angle: amplitude", "both")
@@ -34,6 +46,15 @@ object Describe {
     case Term.Crosstalk =>
       (Map("sin_from_cos_tau_s" -> b(0), "cos_from_sin_tau_s" -> b(1)), Map("sin_from_cos_tau_s" -> sd(0), "cos_from_sin_tau_s" -> sd(1)),
         "against speed: amplitude of each channel", "both")
+    case Term.AngleHarm(m) =>
+      // b(0) cos + b(1) sin of m x the mechanical angle, in fringe periods = A sin(m angle + phase)
+      val (a, sa) = amp(b(0), b(1), sd(0), sd(1)); val (ph, sph) = deg(b(1), b(0), a, sa)
+      val p = e.periodsPerTurn.getOrElse(Double.NaN); val arcsec = 1296000 / p
+      val common = Map("phase_deg" -> ph, "phase_error_deg" -> 360 * a, "angle_error_arcsec" -> arcsec * a)
+      val cu = Map("phase_deg" -> sph, "phase_error_deg" -> 360 * sa, "angle_error_arcsec" -> arcsec * sa)
+      if (m == 1) (common + ("eccentricity_rel" -> 2 * math.Pi * a / p), cu + ("eccentricity_rel" -> 2 * math.Pi * sa / p),
+        "against mechanical angle (reference): fringe phase, once per turn", "both")
+      else (common + ("order" -> m), cu + ("order" -> 0.0), s"against mechanical angle (reference): fringe phase, $m times per turn", "both")
     case Term.Interference(hz) =>
       val (a, sa) = amp(b(0), b(1), sd(0), sd(1)); val (c, sc) = amp(b(2), b(3), sd(2), sd(3))
       (Map("frequency_hz" -> hz, "amplitude_sin_fs" -> a, "amplitude_cos_fs" -> c, "amplitude_fs" -> 0.5 * (a + c)),
@@ -78,6 +99,18 @@ object Describe {
         f"harmonic ${g("order").toInt} of the fringe on ${if (c.channel == "both") "both channels" else s"the ${c.channel} channel"}: ${100 * g("amplitude_rel")}%.3f %% of the fundamental"
       case "drift" =>
         f"offsets drift ${g("offset_sin_per_s")}%.3g / ${g("offset_cos_per_s")}%.3g full scale per second (sin/cos), amplitudes ${100 * g("gain_sin_per_s")}%.3g / ${100 * g("gain_cos_per_s")}%.3g %% per second"
+      case "contrast_along_travel" =>
+        val l = g("travel_periods")
+        f"contrast changes along the travel: amplitudes ${100 * g("gain_sin_per_period") * l}%.3g / ${100 * g("gain_cos_per_period") * l}%.3g %%, offsets ${g("offset_sin_per_period") * l}%.3g / ${g("offset_cos_per_period") * l}%.3g full scale over the ${l}%.0f periods travelled (sin/cos)"
+      case "warmup" =>
+        f"warm-up: offsets settle by ${g("offset_sin_step_fs")}%.3g / ${g("offset_cos_step_fs")}%.3g full scale, amplitudes by ${100 * g("gain_sin_step_rel")}%.3g / ${100 * g("gain_cos_step_rel")}%.3g %% (sin/cos) with a time constant of ${g("time_constant_s")}%.3g s"
+      case "coarse_quantization" =>
+        f"the codes use only ${g("effective_bits").toInt} of the ${g("format_bits").toInt} bits: quantization steps of ${g("step_lsb").toInt} LSB, whose error is not white noise"
+      case "eccentricity" =>
+        f"eccentricity of the disk or magnet: the read angle is off by ${g("angle_error_arcsec")}%.3g arcsec once per turn " +
+          f"(${100 * g("eccentricity_rel")}%.3g %% of the reading radius; ${g("phase_error_deg")}%.3g degree of fringe phase)"
+      case "angle_harmonic" =>
+        f"harmonic ${g("order").toInt} of the mechanical angle in the read angle: ${g("angle_error_arcsec")}%.3g arcsec (${g("phase_error_deg")}%.3g degree of fringe phase)"
       case "amplitude_modulation" => f"amplitude follows the mechanical angle: ${100 * g("depth")}%.2f %% modulation once per revolution"
       case "adc_nonlinearity" => f"ADC integral nonlinearity: bow ${g("inl2_lsb")}%.2f LSB, S-shape ${g("inl3_lsb")}%.2f LSB at full scale"
       case "crosstalk" => f"capacitive crosstalk: sin gets ${g("sin_from_cos_tau_s") * 1e9}%.2f ns x d(cos)/dt, cos gets ${g("cos_from_sin_tau_s") * 1e9}%.2f ns x d(sin)/dt"

@@ -19,11 +19,18 @@ object EffectSpec {
     ("bandwidth", Seq("cutoff_hz"), "first-order read-head amplifier low-pass (channel=sin|cos|both)"),
     ("drift", Seq("offset_sin_per_s", "offset_cos_per_s", "gain_sin_per_s", "gain_cos_per_s"), "offsets (full scale) and gains (relative) changing linearly with time"),
     ("amplitude_modulation", Seq("depth", "phase_deg"), "amplitude * (1 + depth cos(mechanical angle + phase)); needs lines_per_rev"),
+    ("eccentricity", Seq("eccentricity_rel", "phase_deg"), "disk or magnet off the axis by eccentricity_rel of the reading radius: the read angle is off by eccentricity_rel sin(angle + phase) radians once per turn; needs lines_per_rev (explain: a reference naming turns)"),
+    ("angle_harmonic", Seq("order", "amplitude_arcsec", "phase_deg"), "read angle off by amplitude_arcsec sin(order angle + phase), a harmonic of the mechanical angle; needs lines_per_rev (explain: a reference naming turns)"),
     ("jitter", Seq("jitter_s"), "sampling clock jitter, seconds rms, common to both channels"),
     ("adc_bit_fault", Seq("bit", "stuck_at", "bridged_to"), "data line stuck at 0/1, or wired-AND with another bit (channel=sin|cos)"),
     ("clipping", Seq("high_fs", "low_fs"), "amplifier saturation levels in full-scale units (channel=sin|cos|both)"),
     ("adc_nonlinearity", Seq("inl2_lsb", "inl3_lsb"), "INL = inl2 T2(v) + inl3 T3(v) LSB, Chebyshev bow and S shape over full scale"),
     ("crosstalk", Seq("sin_from_cos_tau_s", "cos_from_sin_tau_s"), "capacitive coupling: channel += tau * d(other channel)/dt"),
+    ("contrast_along_travel", Seq("offset_sin_per_period", "offset_cos_per_period", "gain_sin_per_period", "gain_cos_per_period"),
+      "offsets (full scale) and gains (relative) changing linearly with the position along the travel (beam walk, scale contamination), per fringe period from the start"),
+    ("warmup", Seq("offset_sin_step_fs", "offset_cos_step_fs", "gain_sin_step_rel", "gain_cos_step_rel", "time_constant_s"),
+      "offsets and gains settling by step * (1 - exp(-t / time_constant_s)) after switch-on"),
+    ("coarse_quantization", Seq("effective_bits"), "the codes use only the top effective_bits of the ADC word (a narrower converter in a wider format)"),
     ("interference", Seq("frequency_hz", "amplitude_fs", "phase_deg"), "a fixed-frequency pickup (mains, switching supply) on both channels")
   )
   val calibrationEffects: Seq[(String, Seq[String], String)] = Seq(

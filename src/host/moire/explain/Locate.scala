@@ -93,13 +93,14 @@ object Locate {
       val pins = new Array[Int](1 << bits); codes.foreach(c => pins(c) += 1)
       val frac = (0 until bits).map(b => pins.indices.filter(c => ((c >> b) & 1) == 1).map(pins(_).toLong).sum.toDouble / n)
       val hist = new Array[Int](1 << bits); codes.foreach(c => hist(adc.fromPins(c) + adc.half) += 1)
-      val stuck = (0 until bits - 2).filter(b => frac(b) == 0.0 || frac(b) == 1.0)
+      val stuck = (e.coarseBits until bits - 2).filter(b => frac(b) == 0.0 || frac(b) == 1.0)
       val hi = hist.lastIndexWhere(_ > 0); val lo = hist.indexWhere(_ > 0)
       def pile(c: Int, nb: Int) = hist(c).toDouble / math.max(1, if (nb >= 0 && nb < hist.length) hist(nb) else 0)
-      val pileHi = pile(hi, hi - 1); val pileLo = pile(lo, lo + 1)
+      val q = 1 << e.coarseBits // the neighbouring code a coarse converter can reach
+      val pileHi = pile(hi, hi - q); val pileLo = pile(lo, lo + q)
       val chi = if (ch == "sin") 0 else 1
       val faulty = e.spec.faults.filter(_.ch == chi).map(_.bit).toSet; val clipped = e.spec.clips.exists(_.ch == chi)
-      val sig = stuck.exists(b => !faulty.contains(b)) || (!clipped && ((pileHi > 8 && hist(hi) > 50 && hi < hist.length - 1) || (pileLo > 8 && hist(lo) > 50 && lo > 0)))
+      val sig = stuck.exists(b => !faulty.contains(b)) || (!clipped && ((pileHi > 8 && hist(hi) > 50 && hi < hist.length - q) || (pileLo > 8 && hist(lo) > 50 && lo > 0)))
       out += Located(s"code histogram, $ch channel",
         (if (stuck.nonEmpty) s"bits ${stuck.mkString(",")} never change; " else "") +
           f"signed codes ${lo - adc.half}..${hi - adc.half}, ${hist(hi)} samples at the top code (${pileHi}%.1f x its neighbour), ${hist(lo)} at the bottom (${pileLo}%.1f x)",

@@ -33,12 +33,15 @@ final case class PhysicsModel(
   })
 
   def validate(): Unit = {
-    if (all("amplitude_modulation").nonEmpty && linesPerRev.isEmpty)
-      throw new ExplainError("amplitude_modulation needs lines_per_rev (--lines-per-rev)")
+    for (name <- Seq("amplitude_modulation", "eccentricity", "angle_harmonic") if all(name).nonEmpty && linesPerRev.isEmpty)
+      throw new ExplainError(s"$name needs lines_per_rev (--lines-per-rev)")
     effects.foreach { e =>
       if (EffectSpec.calibrationEffects.exists(_._1 == e.effect)) throw new ExplainError(s"${e.effect} applies to calibration data, not to signals")
       if (e.effect == "harmonic" && e.p("order", 2) < 2) throw new ExplainError("harmonic order must be >= 2")
       if (e.effect == "bandwidth" && !(e.p("cutoff_hz") > 0)) throw new ExplainError("bandwidth needs cutoff_hz > 0")
+      if (e.effect == "warmup" && !(e.p("time_constant_s") > 0)) throw new ExplainError("warmup needs time_constant_s > 0")
+      if (e.effect == "coarse_quantization" && !(e.p("effective_bits") >= 4 && e.p("effective_bits") <= adc.bits))
+        throw new ExplainError(s"coarse_quantization effective_bits must be in 4..${adc.bits}")
       if (e.effect == "adc_bit_fault") {
         val b = e.p("bit"); if (!(b >= 0 && b < adc.bits)) throw new ExplainError(s"adc_bit_fault bit must be in 0..${adc.bits - 1}")
         if (e.channel == "both") throw new ExplainError("adc_bit_fault needs channel=sin or channel=cos")
@@ -62,23 +65,40 @@ final case class PhysicsModel(
     def d(k: String) = drift.map(_.p(k, 0.0)).sum
     val (dos, doc, dgs, dgc) = (d("offset_sin_per_s"), d("offset_cos_per_s"), d("gain_sin_per_s"), d("gain_cos_per_s"))
     val am = all("amplitude_modulation")
+    val ct = all("contrast_along_travel"); def cp(k: String) = ct.map(_.p(k, 0.0)).sum
+    val (cos0, coc, cgs, cgc) = (cp("offset_sin_per_period"), cp("offset_cos_per_period"), cp("gain_sin_per_period"), cp("gain_cos_per_period"))
+    val x0 = motion.periods(0)
+    val warm = all("warmup"); def wp(k: String) = warm.map(_.p(k, 0.0)).sum
+    val (wos, woc, wgs, wgc) = (wp("offset_sin_step_fs"), wp("offset_cos_step_fs"), wp("gain_sin_step_rel"), wp("gain_cos_step_rel"))
+    val wtau = warm.map(_.p("time_constant_s", 1.0)).headOption.getOrElse(1.0)
+    val coarse = all("coarse_quantization").map(_.p("effective_bits", adc.bits.toDouble).toInt).headOption.filter(_ < adc.bits)
     val xt = all("crosstalk"); val tauSC = xt.map(_.p("sin_from_cos_tau_s", 0.0)).sum; val tauCS = xt.map(_.p("cos_from_sin_tau_s", 0.0)).sum
     val inter = all("interference")
     val clip = all("clipping")
     val inl = all("adc_nonlinearity"); val inl2 = inl.map(_.p("inl2_lsb", 0.0)).sum; val inl3 = inl.map(_.p("inl3_lsb", 0.0)).sum
     val faults = all("adc_bit_fault")
-    val plain = skew == 0 && jitter == 0 && bw.isEmpty && drift.isEmpty && am.isEmpty && xt.isEmpty && inter.isEmpty
+    // read-angle errors of the mechanical angle (eccentricity, its harmonics), in turns
+    val angleErr = all("eccentricity").map(e => (1, e.p("eccentricity_rel", 0.0) / (2 * math.Pi), e.p("phase_deg", 0.0))) ++
+      all("angle_harmonic").map(e => (e.p("order", 2).toInt, e.p("amplitude_arcsec", 0.0) / 1296000, e.p("phase_deg", 0.0)))
+    def periods(t: Double): Double = {
+      val q = motion.periods(t)
+      if (angleErr.isEmpty) q
+      else { val l = linesPerRev.get; val th = 2 * math.Pi * q / l; q + l * angleErr.map { case (m, a, p) => a * math.sin(m * th + math.toRadians(p)) }.sum }
+    }
+    val plain = skew == 0 && jitter == 0 && bw.isEmpty && drift.isEmpty && am.isEmpty && xt.isEmpty && inter.isEmpty && ct.isEmpty && warm.isEmpty && angleErr.isEmpty
     val eps = 1e-6
 
     /** One channel's value: fringe through the low-pass and the slow effects. */
     def channel(isSin: Boolean, t: Double): Double = {
       val f = motion.frequency(t)
-      var ph = motion.periods(t); var g = 1.0
+      var ph = periods(t); var g = 1.0
       (if (isSin) bwS else bwC).foreach { fc => val u = f / fc; g /= math.sqrt(1 + u * u); ph -= math.atan(u) / (2 * math.Pi) }
       val o = if (isSin) p.offsetSin else p.offsetCos
       def raw(q: Double) = { val a = SignalSim.analog(p, q); (if (isSin) a._1 else a._2) - o }
       var v = raw(ph) * g
       v *= 1 + (if (isSin) dgs else dgc) * t
+      val x = motion.periods(t) - x0; val w = if (warm.isEmpty) 0.0 else 1 - math.exp(-t / wtau)
+      v *= (1 + (if (isSin) cgs else cgc) * x) * (1 + (if (isSin) wgs else wgc) * w)
       am.foreach { e => v *= 1 + e.p("depth", 0.0) * math.cos(2 * math.Pi * ph / linesPerRev.get + math.toRadians(e.p("phase_deg", 0.0))) }
       val tau = if (isSin) tauSC else tauCS
       if (tau != 0) {
@@ -87,7 +107,7 @@ final case class PhysicsModel(
         v += tau * f * (if (isSin) a1._2 - a0._2 else a1._1 - a0._1) / (2 * eps)
       }
       inter.foreach { e => v += e.p("amplitude_fs", 0.0) * math.sin(2 * math.Pi * e.p("frequency_hz", 0.0) * t + math.toRadians(e.p("phase_deg", 0.0))) }
-      v + o + (if (isSin) dos else doc) * t
+      v + o + (if (isSin) dos else doc) * t + (if (isSin) cos0 else coc) * x + (if (isSin) wos else woc) * w
     }
     def finish(v0: Double, isSin: Boolean): Int = {
       var v = v0
@@ -95,7 +115,10 @@ final case class PhysicsModel(
         v = math.min(e.p("high_fs", 2.0), math.max(e.p("low_fs", -2.0), v))
       }
       if (inl2 != 0 || inl3 != 0) v += (inl2 * (2 * v * v - 1) + inl3 * (4 * v * v * v - 3 * v)) * adc.lsb
-      var code = adc.sample(v).code
+      var code = coarse match {
+        case Some(eb) => adc.pins(math.max(-adc.half, Adc(eb).signedCode(v).code << (adc.bits - eb)))
+        case None => adc.sample(v).code
+      }
       faults.filter(e => (e.channel == "sin") == isSin).foreach(e => code = PhysicsModel.fault(code, e))
       code
     }

@@ -103,9 +103,17 @@ object Plots {
           val (x2, y2) = binned(i => math.abs(dc(i)) * 1e-6, i => s.resC(i) / lsb, n, 0, hi, 24, rms = true); line(c, s"cos, ${s.label}", x2, y2)
         }
         save(c, path)
-      case "drift" =>
-        val c = chart(title, "time (s)", "mean residual (LSB)")
-        for (s <- Seq(b, a); (r, ch) <- Seq((s.resS, "sin"), (s.resC, "cos"))) { val (x, y) = binned(i => i / e.fs, i => r(i) / lsb, n, 0, n / e.fs, 48); line(c, s"$ch, ${s.label}", x, y) }
+      case "drift" | "warmup" | "contrast_along_travel" =>
+        // the amplitude left in the residual (sum r u / sum u^2 per bin), against time or the position along the travel
+        val (xf, xl): (Int => Double, String) =
+          if (f.effect == "contrast_along_travel") { val x = e.phase.clone(); (i => x(i) - x(0), "position from the start (fringe periods)") }
+          else (i => i / e.fs, "time (s)")
+        val xs = Array.tabulate(n)(xf); val lo = xs.min; val hi = xs.max + 1e-12
+        val c = chart(title, xl, "amplitude left in the residual (%)")
+        for (s <- Seq(b, a); (r, u, ch) <- Seq((s.resS, e.us, "sin"), (s.resC, e.uc, "cos"))) {
+          val (x, num) = binned(xs(_), i => r(i) * u(i), n, lo, hi, 48); val (_, den) = binned(xs(_), i => u(i) * u(i), n, lo, hi, 48)
+          line(c, s"$ch, ${s.label}", x, num.zip(den).map { case (p, q) => 100 * p / q })
+        }
         save(c, path)
       case "amplitude_modulation" =>
         val l = e.rec.linesPerRev.getOrElse(1.0)

@@ -1,19 +1,30 @@
 package moire.explain
 
-import moire.recording.Recording
+import moire.recording.{Recording, Reference}
 
 /** Fits the backward model to a recording: phase trajectory, default part, accepted effects.
   * All per-sample work is on primitive arrays; the state after `refit` is consistent
   * (prediction, residual, noise model and -2 ln L of the current `spec`).
   */
-final class SignalEngine(val rec: Recording) {
+final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = None) {
   val n: Int = rec.length
   val fs: Double = rec.sampleRateHz
   val lsb: Double = rec.adc.lsb
   val ys: Array[Double] = rec.values(rec.sin)
   val yc: Array[Double] = rec.values(rec.cos)
+  /** Low bits that no sample of either channel uses (a narrower converter in a wider code format, a scope's 8 bits
+    * in 16): the quantization step is 2^coarseBits LSB and its error is not white noise.
+    */
+  val coarseBits: Int = {
+    val m = (1 << rec.adc.bits) - 1
+    var or = 0; var i = 0
+    while (i < n) { or |= (rec.adc.fromPins(rec.sin(i)) & m) | (rec.adc.fromPins(rec.cos(i)) & m); i += 1 }
+    if (or == 0) 0 else math.min(rec.adc.bits - 4, Integer.numberOfTrailingZeros(or))
+  }
+  /** The quantization step in full-scale units. */
+  val step: Double = lsb * (1 << coarseBits)
   val railLo: Double = -1.0
-  val railHi: Double = (rec.adc.half - 1) * lsb
+  val railHi: Double = (rec.adc.half - (1 << coarseBits)) * lsb
   val tc: Array[Double] = Array.tabulate(n)(i => (i - 0.5 * (n - 1)) / fs)
   val ones: Array[Double] = Array.fill(n)(1.0)
   val lnN: Double = math.log(2.0 * n)
@@ -33,7 +44,10 @@ final class SignalEngine(val rec: Recording) {
   var sol: LinSol = _
   var termIndex: Map[Term, Int] = Map.empty
   var noise: Noise = Noise(1, 1, 0, 0)
-  var traj: Trajectory = _
+  var traj: PhaseTrack = _
+  /** The reference the phase follows (None: the trajectory is fitted from the signals), and why one was not used. */
+  var reference: Option[RefTrajectory] = None
+  var referenceRefused: Option[String] = None
   var typicalHz = 0.0
 
   def ampS: Double = math.hypot(base(1), base(2))
@@ -61,15 +75,45 @@ final class SignalEngine(val rec: Recording) {
     val blk = math.max(16, math.min(4096, n / 64))
     val speeds = (0 until n / blk).map(b => math.abs(raw((b + 1) * blk - 1) - raw(b * blk)) * fs / (blk - 1)).sorted
     typicalHz = if (speeds.isEmpty) 0.0 else speeds(speeds.size / 2)
-    // segment length: the one of 16, 6 or 2.5 fringe periods that gives the lowest BIC
-    def start(len: Int): Unit = {
-      traj = new Trajectory(n, len, fs); traj.addFit(raw, null); evalTraj()
+    def start(t: PhaseTrack, first: Array[Double]): Unit = {
+      traj = t; traj.addFit(first, null); evalTraj()
       base = Array(os, as, 0, oc, 0, ac); spec = ModelSpec(); cens = Repaired(ys, yc, null, null); repS = ys; repC = yc
       refit(4, refineTraj = true)
     }
-    val lens = Seq(16.0, 6.0, 2.5).map(p => Trajectory.segmentLength(n, fs, typicalHz, p)).distinct
-    val best = if (lens.size == 1) lens.head else lens.minBy { l => start(l); bic }
-    start(best)
+    refColumn.foreach { r =>
+      // the smoothing of the reference: the window with the lowest BIC (a noisy reference wants a wide one)
+      def fit(h: Int): RefTrajectory = { val rt = new RefTrajectory(r, fs, r.periodsPerUnit, h); rt.start(raw); start(rt, new Array[Double](n)); rt }
+      val hs = RefTrajectory.HalfWidths.filter(h => h == RefTrajectory.HalfWidths.head || 8 * h <= n)
+      val best = if (hs.size == 1) hs.head else hs.minBy { h => fit(h); if (SignalEngine.debug) System.err.println(f"reference smoothing $h: BIC $bic%.1f"); bic }
+      val rt = fit(best)
+      val rms = phaseRms
+      if (rms <= RefTrajectory.MaxPhaseRms) reference = Some(rt)
+      else referenceRefused = Some(f"the signals follow ${r.column} only within ${rms * 360}%.1f degree of fringe phase rms " +
+        f"(at most ${RefTrajectory.MaxPhaseRms * 360}%.0f): not used, the motion is fitted from the signals")
+    }
+    if (reference.isEmpty) {
+      // segment length: the one of 16, 6 or 2.5 fringe periods that gives the lowest BIC
+      def free(len: Int): Unit = start(new Trajectory(n, len, fs), raw)
+      val lens = Seq(16.0, 6.0, 2.5).map(p => Trajectory.segmentLength(n, fs, typicalHz, p)).distinct
+      val best = if (lens.size == 1) lens.head else lens.minBy { l => free(l); bic }
+      free(best)
+    }
+  }
+
+  /** Fringe periods per turn, when the reference names turns (from its k and its turns per unit). */
+  def periodsPerTurn: Option[Double] = reference.flatMap(r => r.ref.turnsPerUnit.map(t => math.abs(r.k) / t))
+  /** Mechanical angle (radians) per sample from a reference that names turns. */
+  lazy val mechAngle: Option[Array[Double]] = reference.flatMap(r => r.ref.turnsPerUnit.map(t => r.x.map(v => 2 * math.Pi * t * (v + r.xMid))))
+
+  /** Rms of the fringe phase residual (periods): how well the signals follow the phase model. */
+  def phaseRms: Double = {
+    var s = 0.0; var k = 0; var i = 0
+    while (i < n) {
+      val ww = gS(i) * gS(i) + gC(i) * gC(i)
+      if (ww > 0) { val d = (resS(i) * gS(i) + resC(i) * gC(i)) / ww / (2 * math.Pi); s += d * d; k += 1 }
+      i += 1
+    }
+    if (k == 0) 0.0 else math.sqrt(s / k)
   }
 
   private def mid(a: Array[Double]): (Double, Double) = {
@@ -134,7 +178,8 @@ final class SignalEngine(val rec: Recording) {
       IndexedSeq(Col(tc, null), Col(null, tc), Col(mul(us, tc), null), Col(null, mul(uc, tc)))
     case Term.Am =>
       val l = rec.linesPerRev.getOrElse(1.0)
-      val ca = Array.tabulate(n)(i => math.cos(2 * math.Pi * phase(i) / l)); val sa = Array.tabulate(n)(i => math.sin(2 * math.Pi * phase(i) / l))
+      val th = mechAngle.getOrElse(Array.tabulate(n)(i => 2 * math.Pi * phase(i) / l))
+      val ca = th.map(math.cos); val sa = th.map(math.sin)
       IndexedSeq(Col(mul(us, ca), mul(uc, ca)), Col(mul(us, sa), mul(uc, sa)))
     case Term.Inl =>
       def t2(p: Array[Double]) = Array.tabulate(n)(i => (2 * p(i) * p(i) - 1) * lsb)
@@ -143,10 +188,32 @@ final class SignalEngine(val rec: Recording) {
     case Term.Crosstalk =>
       val w = Array.tabulate(n)(i => 2 * math.Pi * freq(i))
       IndexedSeq(Col(mul(vc, w), null), Col(null, mul(vs, w)))
+    case Term.Contrast =>
+      val x = travel
+      IndexedSeq(Col(x, null), Col(null, x), Col(mul(us, x), null), Col(null, mul(uc, x)))
+    case Term.Warmup(tau) => warmupCols(warmupBasis(tau), us, uc)
+    case Term.AngleHarm(m) =>
+      val th = mechAngle.get
+      val ca = Array.tabulate(n)(i => 2 * math.Pi * math.cos(m * th(i))); val sa = Array.tabulate(n)(i => 2 * math.Pi * math.sin(m * th(i)))
+      IndexedSeq(Col(mul(gS, ca), mul(gC, ca)), Col(mul(gS, sa), mul(gC, sa)))
     case Term.Interference(hz) =>
       val a = Array.tabulate(n)(i => math.sin(2 * math.Pi * hz * i / fs)); val b = Array.tabulate(n)(i => math.cos(2 * math.Pi * hz * i / fs))
       IndexedSeq(Col(a, null), Col(b, null), Col(null, a), Col(null, b))
   }
+
+  /** Position along the travel in fringe periods, centred on the record's mean position. */
+  def travel: Array[Double] = {
+    var m = 0.0; var i = 0
+    while (i < n) { m += phase(i); i += 1 }
+    m /= n
+    Array.tabulate(n)(i => phase(i) - m)
+  }
+
+  /** exp(-t / tau) from the first sample: the part of a warm-up still to come. */
+  def warmupBasis(tau: Double): Array[Double] = Array.tabulate(n)(i => math.exp(-i / fs / tau))
+  /** A warm-up's columns from its basis w and the fundamentals u, v (all samples, or a subsample's). */
+  def warmupCols(w: Array[Double], u: Array[Double], v: Array[Double]): IndexedSeq[Col] =
+    IndexedSeq(Col(w, null), Col(null, w), Col(Array.tabulate(w.length)(i => u(i) * w(i)), null), Col(null, Array.tabulate(w.length)(i => v(i) * w(i))))
 
   private def mul(a: Array[Double], b: Array[Double]): Array[Double] = {
     val o = new Array[Double](n); var i = 0
@@ -185,11 +252,12 @@ final class SignalEngine(val rec: Recording) {
   def refit(iters: Int, refineTraj: Boolean): Unit = {
     var it = 0
     while (it < iters) {
-      if (it > 0 && refineTraj) {
+      if (it > 0 && refineTraj && traj.isInstanceOf[RefTrajectory]) jointStep(traj.asInstanceOf[RefTrajectory])
+      else if (it > 0 && refineTraj) {
         val d = new Array[Double](n); val w = new Array[Double](n); var i = 0
         while (i < n) {
-          val ww = vs(i) * vs(i) + vc(i) * vc(i)
-          if (ww > 0) { d(i) = (resS(i) * vs(i) + resC(i) * vc(i)) / ww / (2 * math.Pi); w(i) = ww }
+          val ww = gS(i) * gS(i) + gC(i) * gC(i)
+          if (ww > 0) { d(i) = (resS(i) * gS(i) + resC(i) * gC(i)) / ww / (2 * math.Pi); w(i) = ww }
           i += 1
         }
         traj.addFit(d, w); evalTraj()
@@ -207,10 +275,26 @@ final class SignalEngine(val rec: Recording) {
       termPredS = LinearFit.combine(cols, tb, sinCh = true, n); termPredC = LinearFit.combine(cols, tb, sinCh = false, n)
       residual()
       uv()
+      predictionSlope(tcols)
       it += 1
       noise = Noise.fit(resS, resC, if (spec.jitter) slopes() else null, cens)
       if (SignalEngine.debug) System.err.println(f"refit $it: rms $rms%.4g bic $bic%.8g")
     }
+  }
+
+  /** Gauss-Newton step of a reference map jointly with the default part and the terms (fitted in turn they converge
+    * slowly: a harmonic of the fringe and the lag share part of their shape). The offset stays where `start` put it.
+    */
+  private def jointStep(r: RefTrajectory): Unit = {
+    // the offset is left out: the fundamental's own phases (default part) already are one
+    val jc = r.basis.tail.map { b =>
+      val a = new Array[Double](n); val c = new Array[Double](n); var i = 0
+      while (i < n) { val v = 2 * math.Pi * (if (b == null) 1.0 else b(i)); a(i) = gS(i) * v; c(i) = gC(i) * v; i += 1 }
+      Col(a, c)
+    }
+    val cols = baseCols(s1, s2, c1, c2) ++ spec.terms.flatMap(termCols) ++ jc
+    val s = LinearFit.solve(cols, repS, repC)
+    if (s.ok && jc.nonEmpty) { r.addDelta(0.0 +: s.beta.takeRight(jc.size)); evalTraj() }
   }
 
   /** Refits until BIC stops falling (fault repairs and the trajectory settle over a few iterations). */
@@ -221,6 +305,27 @@ final class SignalEngine(val rec: Recording) {
   }
 
   def residual(): Unit = { var i = 0; while (i < n) { resS(i) = repS(i) - predS(i); resC(i) = repC(i) - predC(i); i += 1 } }
+
+  /** d(prediction)/d(2 pi fringe phase) per channel: the fundamental's (v), plus the harmonics' when the phase follows a
+    * reference (a free trajectory takes the difference up; a fixed map would be biased by it).
+    */
+  var gS: Array[Double] = vs; var gC: Array[Double] = vc
+  private def predictionSlope(tcols: Seq[(Term, IndexedSeq[Col])]): Unit = {
+    gS = vs; gC = vc
+    if (!traj.isInstanceOf[RefTrajectory]) return
+    gS = vs.clone(); gC = vc.clone()
+    for ((t, cols) <- tcols) t match {
+      case Term.Harm(k, _) =>
+        val at = termIndex(t)
+        for (j <- 0 until cols.size / 2) {
+          val b0 = sol.beta(at + 2 * j); val b1 = sol.beta(at + 2 * j + 1)
+          val (hs, hc, g) = if (cols(2 * j).s != null) (cols(2 * j).s, cols(2 * j + 1).s, gS) else (cols(2 * j).c, cols(2 * j + 1).c, gC)
+          var i = 0
+          while (i < n) { g(i) += k * (b0 * hc(i) - b1 * hs(i)); i += 1 }
+        }
+      case _ =>
+    }
+  }
 
   /** Fitted fundamental (u) and its derivative by the fringe phase (v) per channel. */
   def uv(): Unit = {

@@ -9,6 +9,12 @@ object Term {
   case object Inl extends Term { val name = "adc_nonlinearity"; val params = 2 }
   case object Crosstalk extends Term { val name = "crosstalk"; val params = 2 }
   final case class Interference(hz: Double) extends Term { val name = "interference"; val params = 5 }
+  /** Offsets and amplitudes changing along the travel (beam walk, scale contamination): linear in the fringe position. */
+  case object Contrast extends Term { val name = "contrast_along_travel"; val params = 4 }
+  /** Warm-up: offsets and amplitudes approaching their final values as 1 - exp(-t / tauS) (tauS fitted: 5 parameters). */
+  final case class Warmup(tauS: Double) extends Term { val name = "warmup"; val params = 5 }
+  /** Fringe phase modulated at `order` times the mechanical angle (the read angle's error): order 1 is eccentricity. */
+  final case class AngleHarm(order: Int) extends Term { val name: String = if (order == 1) "eccentricity" else "angle_harmonic"; val params = 2 }
 }
 
 /** A stuck (stuckAt 0/1) or bridged (wired-AND with bit `bridgedTo`) data line on channel 0 = sin, 1 = cos. */

@@ -1,7 +1,16 @@
 package moire.explain
 
+/** A model of the fringe phase (periods) and frequency (Hz) per sample, refined by weighted least squares. */
+trait PhaseTrack {
+  def nseg: Int
+  def params: Int
+  def eval(phase: Array[Double], freq: Array[Double]): Unit
+  /** Adds the weighted least-squares fit of the phase difference `d` (periods); weight w (null = 1). */
+  def addFit(d: Array[Double], w: Array[Double]): Unit
+}
+
 /** A smooth phase trajectory: one cubic in time per segment of `len` samples, phase in periods. */
-final class Trajectory(val n: Int, val len: Int, val fs: Double) {
+final class Trajectory(val n: Int, val len: Int, val fs: Double) extends PhaseTrack {
   val nseg: Int = math.max(1, (n + len - 1) / len)
   /** Cubic coefficients of segment s in local time x in [-1, 1]. */
   val coef: Array[Double] = new Array[Double](4 * nseg)

@@ -1,0 +1,54 @@
+package moire.explain
+
+/** Effects a recording cannot tell apart from its own motion (issue 12, Build 2 and 3). Without a reference the
+  * phase trajectory is fitted from the signals; when one of its segments spans only a few fringe periods, it can
+  * bend within a period, and structure that repeats once per period (a harmonic of the mechanical angle of a
+  * one-period-per-turn encoder, eccentricity) shows partly as motion and partly as whatever slow or periodic
+  * effect fits the rest: drift, pickup, harmonics. Those are then "not identifiable without a reference", not findings.
+  */
+object Identifiable {
+  /** A free trajectory segment must span at least this many fringe periods. */
+  val MinPeriodsPerSegment = 2.0
+  /** Effects whose shape a free trajectory over a few periods can share. */
+  val Confounded: Set[String] = Set("harmonic", "drift", "interference", "amplitude_modulation", "adc_nonlinearity",
+    "crosstalk", "channel_skew", "bandwidth", "jitter", "eccentricity", "angle_harmonic", "warmup", "contrast_along_travel")
+
+  /** Fringe periods one trajectory segment spans (the travel over the record divided by the segments). */
+  def periodsPerSegment(e: SignalEngine): Double = {
+    var s = 0.0; var i = 0
+    while (i < e.n) { s += math.abs(e.freq(i)); i += 1 }
+    s / e.fs / e.traj.nseg
+  }
+
+  /** True when the motion is free and too flexible within a period to tell distortion from it. */
+  def motionConfounded(e: SignalEngine): Boolean = e.reference.isEmpty && periodsPerSegment(e) < MinPeriodsPerSegment
+
+  def why(c: Cand, e: SignalEngine, fMin: Double, fMax: Double): Option[String] =
+    if (Confounded(c.effect) && motionConfounded(e)) Some(untested(e))
+    else if (c.effect == "jitter") referenceNoise(e, fMin, fMax)
+    else None
+
+  /** Speed range (fastest / slowest fringe frequency) needed to tell clock jitter from the reference's own noise. */
+  val JitterSpeedRange = 3.0
+
+  /** With a reference, its noise (quantization) moves the modelled phase: residual noise that grows with the signal's
+    * slope, like jitter; only a wide speed range tells them apart (jitter grows with speed, reference noise does not).
+    */
+  def referenceNoise(e: SignalEngine, fMin: Double, fMax: Double): Option[String] =
+    if (e.reference.isDefined && !(fMax > JitterSpeedRange * fMin))
+      Some(f"jitter: not identifiable from the reference's own noise: the fringe frequency spans ${fMin}%.4g .. ${fMax}%.4g Hz " +
+        f"(a factor of ${JitterSpeedRange}%.0f is needed)")
+    else None
+
+  def untested(e: SignalEngine): String =
+    f"${Confounded.toSeq.sorted.mkString(", ")}: not identifiable without a reference: the record covers " +
+      f"${periodsPerSegment(e) * e.traj.nseg}%.3g fringe periods (${periodsPerSegment(e)}%.3g per trajectory segment) and the motion " +
+      "is fitted from the signals, so a harmonic of the mechanical angle (eccentricity) or a slow change cannot be told from " +
+      s"non-uniform motion; a reference column (${moire.recording.Reference.Columns.mkString(", ")}) makes them testable"
+
+  /** Residual structure of a confounded recording, as one not-tested line (None when there is none). */
+  def leftOver(left: Seq[Located]): Seq[String] =
+    if (left.isEmpty) Nil
+    else Seq(s"residual structure (${left.map(_.where).distinct.mkString("; ")}) is not identifiable without a reference: it may be " +
+      s"non-uniform motion within a fringe period; largest: ${left.head.where}: ${left.head.summary}")
+}

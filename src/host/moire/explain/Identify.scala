@@ -1,0 +1,60 @@
+package moire.explain
+
+/** A change of offsets or amplitudes is a drift only when the record can tell time from the alternatives (issue 12,
+  * "no stories" (c)): a change along the travel (beam walk, contamination) and a change with speed. In a scan that
+  * only moves one way at an even speed, position, speed and time go together and no fit can say which it was.
+  * The test: the candidate must still lower BIC by more than the threshold when the alternative is already fitted
+  * (and a contrast change along the travel must do so beyond a drift in time).
+  */
+object Identify {
+  def why(e: SignalEngine, c: Cand): Option[String] = c.spec.terms.diff(e.spec.terms).headOption match {
+    case Some(t @ (Term.Drift | Term.Warmup(_))) =>
+      val alts = (if (e.spec.terms.contains(Term.Contrast)) Nil else Seq("a contrast change along the travel" -> e.termCols(Term.Contrast))) :+
+        ("an amplitude change with speed" -> speedCols(e))
+      beyond(e, t, alts)
+    case Some(Term.Contrast) if !e.spec.terms.exists(t => t == Term.Drift || t.isInstanceOf[Term.Warmup]) =>
+      beyond(e, Term.Contrast, Seq("a drift in time" -> e.termCols(Term.Drift)))
+    case _ => None
+  }
+
+  /** Amplitudes in proportion to the squared fringe frequency (the first order of any low-pass). */
+  private def speedCols(e: SignalEngine): IndexedSeq[Col] = {
+    var m = 0.0; var i = 0
+    while (i < e.n) { m = math.max(m, math.abs(e.freq(i))); i += 1 }
+    val u = Array.tabulate(e.n)(i => if (m > 0) (e.freq(i) / m) * (e.freq(i) / m) else 0.0)
+    IndexedSeq(Col(Array.tabulate(e.n)(i => e.us(i) * u(i)), null), Col(null, Array.tabulate(e.n)(i => e.uc(i) * u(i))))
+  }
+
+  private def m2ll(e: SignalEngine, cols: IndexedSeq[Col]): Option[Double] = {
+    val s = LinearFit.solve(cols, e.resS, e.resC)
+    if (!s.ok) None
+    else {
+      val ps = LinearFit.combine(cols, s.beta, sinCh = true, e.n); val pc = LinearFit.combine(cols, s.beta, sinCh = false, e.n)
+      val rs = Array.tabulate(e.n)(i => e.resS(i) - ps(i)); val rc = Array.tabulate(e.n)(i => e.resC(i) - pc(i))
+      Some(Noise.fit(rs, rc, null, e.cens).m2ll)
+    }
+  }
+
+  private def beyond(e: SignalEngine, t: Term, alts: Seq[(String, IndexedSeq[Col])]): Option[String] = {
+    val base = e.baseCols(e.s1, e.s2, e.c1, e.c2); val own = e.termCols(t)
+    alts.iterator.flatMap { case (name, alt) =>
+      // an alternative the record cannot fit at all (collinear with the default part) confounds nothing
+      (m2ll(e, base ++ alt), m2ll(e, base ++ alt ++ own)) match {
+        case (Some(a), Some(b)) =>
+          val gain = a - b - t.params * e.lnN
+          if (gain > SignalExplain.Threshold) None
+          else Some(f"the record cannot tell it from $name: beyond that it lowers BIC by only $gain%.1f (position and time correlate, r = ${correlation(e)}%.3f)")
+        case (Some(_), None) => Some(s"the record cannot tell it from $name: the two are collinear")
+        case _ => None
+      }
+    }.nextOption()
+  }
+
+  /** Correlation of the position along the travel with time. */
+  def correlation(e: SignalEngine): Double = {
+    val x = e.travel; val tc = e.tc
+    var sxy = 0.0; var sxx = 0.0; var syy = 0.0; var i = 0
+    while (i < e.n) { sxy += x(i) * tc(i); sxx += x(i) * x(i); syy += tc(i) * tc(i); i += 1 }
+    if (sxx > 0 && syy > 0) sxy / math.sqrt(sxx * syy) else 0.0
+  }
+}

@@ -1,0 +1,219 @@
+package moire.explain
+
+import org.hipparchus.distribution.continuous.{ChiSquaredDistribution, NormalDistribution}
+import org.hipparchus.linear.{Array2DRowRealMatrix, LUDecomposition}
+
+/** Replication (issue 12, "no stories" (b)): after the joint refit that accepts a candidate, its own parameters (and
+  * the default part) are refitted separately on each half of the recording with the trajectory and all other effects
+  * fixed (a few linear fits or one-parameter profiles), and the halves' estimates must agree within their
+  * uncertainties. Jitter must also agree across speed bands; an interference line must keep its frequency.
+  *
+  * Agreement: the fold estimates' chi-square about their weighted mean, (k-1) p degrees of freedom, must stay below
+  * its 99.73 % point, the two-sided 3 sd of one parameter. A real effect fails this once in 370; structure that
+  * follows the motion, the contrast or the quantization rather than the catalogued physics differs between halves
+  * by many sd in a long recording and fails it.
+  *
+  * The fit model is an approximation (a piecewise trajectory or a smoothed reference, first-order filters), so an
+  * effect hundreds of sd strong agrees between the halves only as well as the model fits: each fold's uncertainty
+  * has a floor, `ModelRel` of the effect's size in the signal expressed in each parameter's units (an interference
+  * line's frequency has none). It matters only above 50 sd per fold; a story near the threshold (a few sd) is
+  * judged by its noise alone, and one whose halves differ by tens of percent still fails.
+  */
+object Replicate {
+  val PValue = 0.0027
+  val ModelRel = 0.02
+  val SpeedBands = 3
+
+  /** None when the effect that `e.spec` has beyond `prev` replicates (or cannot be refitted on folds: faults,
+    * clipping), else where and how large.
+    */
+  def why(e: SignalEngine, prev: ModelSpec): Option[String] = {
+    val halves = folds(e.n)
+    val sp = e.spec
+    lazy val cands = new Candidates(e)
+    sp.terms.diff(prev.terms).headOption match {
+      case Some(t: Term.Interference) => interferenceWhy(e, t, halves)
+      case Some(t) => agree(linearFolds(e, t, halves), "halves", t.name)
+      case None =>
+        if (sp.jitter && !prev.jitter) jitterWhy(e, halves)
+        else if (sp.hasSkew && !prev.hasSkew)
+          agree(profileFolds(e, cands, halves, sp.skewS, x => sp.copy(skewS = x), math.max(math.abs(sp.skewS), 1e-10)), "halves", "skew")
+        else sp.bw.find { case (ch, _) => !prev.bw.contains(ch) } match {
+          case Some((ch, fc)) => agree(profileFolds(e, cands, halves, 1 / fc, x => sp.copy(bw = sp.bw + (ch -> 1 / x)), 1 / fc), "halves", "1 / cut-off")
+          case None => None
+        }
+    }
+  }
+
+  /** The residual with the term's own fitted part added back (what the term alone has to explain). */
+  private def target(e: SignalEngine, t: Term): (Array[Double], Array[Double]) = {
+    val cols = e.termCols(t); val at = e.termIndex(t)
+    val b = e.sol.beta.slice(at, at + cols.size)
+    val ps = LinearFit.combine(cols, b, sinCh = true, e.n); val pc = LinearFit.combine(cols, b, sinCh = false, e.n)
+    (Array.tabulate(e.n)(i => e.resS(i) + ps(i)), Array.tabulate(e.n)(i => e.resC(i) + pc(i)))
+  }
+
+  /** An interference line: on each half its frequency (searched near the full-record value) and its amplitude on each
+    * channel. A line whose frequency or amplitude differs between the halves is not a fixed-frequency pickup.
+    */
+  def interferenceWhy(e: SignalEngine, t: Term.Interference, halves: Seq[Array[Int]]): Option[String] = {
+    val (ys, yc) = target(e, t)
+    val cands = new Candidates(e)
+    val at = e.termIndex(t); val b = e.sol.beta
+    val floorA = ModelRel * 0.5 * (math.hypot(b(at), b(at + 1)) + math.hypot(b(at + 2), b(at + 3)))
+    val ests = halves.map { idx =>
+      val m = idx.length; val st = math.max(1, m / 50000)
+      def power(hz: Double): Double = {
+        var a = 0.0; var b = 0.0; var c = 0.0; var d = 0.0; var k = 0
+        while (k < m) {
+          val i = idx(k); val x = 2 * math.Pi * hz * i / e.fs; val sx = math.sin(x); val cx = math.cos(x)
+          a += ys(i) * sx; b += ys(i) * cx; c += yc(i) * sx; d += yc(i) * cx; k += st
+        }
+        -(a * a + b * b + c * c + d * d)
+      }
+      val half = e.fs / m
+      val hz = cands.minimize(power, t.hz - half, t.hz + half, grid = 8, golden = 16)
+      val cols = e.baseCols(e.s1, e.s2, e.c1, e.c2).map(c => Col(pick(c.s, idx), pick(c.c, idx))) ++
+        e.termCols(Term.Interference(hz)).map(c => Col(pick(c.s, idx), pick(c.c, idx)))
+      val fy = pick(ys, idx); val fc = pick(yc, idx)
+      val sol = LinearFit.solve(cols, fy, fc)
+      if (!sol.ok) None
+      else {
+        val ps = LinearFit.combine(cols, sol.beta, sinCh = true, m); val pc = LinearFit.combine(cols, sol.beta, sinCh = false, m)
+        var rss = 0.0; var i = 0
+        while (i < m) { val a = fy(i) - ps(i); val b = fc(i) - pc(i); rss += a * a + b * b; i += 1 }
+        val v = rss / (2.0 * m)
+        val as = math.hypot(sol.beta(6), sol.beta(7)); val ac = math.hypot(sol.beta(8), sol.beta(9))
+        // Cramer-Rao bound of a sinusoid's frequency in white noise, both channels' power together
+        val sdF = e.fs / (2 * math.Pi) * math.sqrt(24 * v / ((as * as + ac * ac) * m.toDouble * m * m))
+        val sdA = math.sqrt(v * sol.inv(6)(6))
+        Some(Est(Array(hz, as, ac), Array(Array(sdF * sdF, 0, 0), Array(0, sdA * sdA, 0), Array(0, 0, sdA * sdA)), Array(0.0, floorA, floorA)))
+      }
+    }
+    agree(ests, "halves", "frequency (Hz) and amplitudes (full scale)")
+  }
+
+  /** Contiguous halves of the record. */
+  def folds(n: Int): Seq[Array[Int]] = Seq(Array.range(0, n / 2), Array.range(n / 2, n))
+
+  /** A fold's estimate of a parameter vector, its covariance and the model-error floor of each parameter's sd. */
+  final case class Est(theta: Array[Double], cov: Array[Array[Double]], floor: Array[Double])
+
+  private def pick(a: Array[Double], idx: Array[Int]): Array[Double] = if (a == null) null else idx.map(a(_))
+
+  /** The term's coefficients refitted with the default part on each fold of what the term explains. A warm-up's
+    * time constant stays free on each fold (one column: its fitted shape's derivative by the time constant), since
+    * the later half sees only the tail, whose size depends on it.
+    */
+  def linearFolds(e: SignalEngine, t: Term, fs: Seq[Array[Int]]): Seq[Option[Est]] = {
+    val tcols = e.termCols(t); val at = e.termIndex(t)
+    val nuisance = t match {
+      case Term.Warmup(tau) =>
+        val b = e.sol.beta.slice(at, at + tcols.size); val h = 0.05
+        val up = e.termCols(Term.Warmup(tau * (1 + h))); val dn = e.termCols(Term.Warmup(tau * (1 - h)))
+        def d(sinCh: Boolean) = {
+          val p = LinearFit.combine(up, b, sinCh, e.n); val q = LinearFit.combine(dn, b, sinCh, e.n)
+          Array.tabulate(e.n)(i => (p(i) - q(i)) / (2 * h))
+        }
+        IndexedSeq(Col(d(true), d(false)))
+      case _ => IndexedSeq.empty
+    }
+    val cols = e.baseCols(e.s1, e.s2, e.c1, e.c2) ++ tcols ++ nuisance
+    val (ts, tc) = target(e, t)
+    // the term's size in the signal (rms over the record), in the units of each of its parameters
+    val rms = tcols.map(c => math.sqrt(((if (c.s == null) 0.0 else e.sumSq(c.s)) + (if (c.c == null) 0.0 else e.sumSq(c.c))) / e.n))
+    val size = math.sqrt(tcols.indices.map(j => math.pow(e.sol.beta(at + j) * rms(j), 2)).sum)
+    val floor = rms.map(r => if (r > 0) ModelRel * size / r else 0.0).toArray
+    fs.map { idx =>
+      val cf = cols.map(c => Col(pick(c.s, idx), pick(c.c, idx)))
+      val ys = pick(ts, idx); val yc = pick(tc, idx)
+      val sol = LinearFit.solve(cf, ys, yc)
+      if (!sol.ok) None
+      else {
+        val m = idx.length
+        val ps = LinearFit.combine(cf, sol.beta, sinCh = true, m); val pc = LinearFit.combine(cf, sol.beta, sinCh = false, m)
+        var rss = 0.0; var i = 0
+        while (i < m) { val a = ys(i) - ps(i); val b = yc(i) - pc(i); rss += a * a + b * b; i += 1 }
+        val v = rss / math.max(1, 2 * m - cols.size)
+        val k = 6 + tcols.size
+        Some(Est(sol.beta.slice(6, k), Array.tabulate(k - 6, k - 6)((a, b) => sol.inv(a + 6)(b + 6) * v), floor))
+      }
+    }
+  }
+
+  /** A one-parameter profile (skew, 1 / cut-off) minimised on each fold near the full-record value x0. */
+  def profileFolds(e: SignalEngine, cands: Candidates, fs: Seq[Array[Int]], x0: Double, spec: Double => ModelSpec, span: Double): Seq[Option[Est]] =
+    fs.map { idx =>
+      val st = math.max(1, idx.length / 50000)
+      val x = cands.minimize(v => cands.profile(spec(v), st, idx), x0 - span, x0 + span, grid = 8, golden = 10)
+      val sd = cands.curvatureSd(v => cands.profile(spec(v), 1, idx) * idx.length / e.n, x, math.max(span * 0.05, 1e-15))
+      if (sd.isNaN || sd <= 0) None else Some(Est(Array(x), Array(Array(sd * sd)), Array(ModelRel * math.abs(x0))))
+    }
+
+  /** Jitter: the same jitter on both halves and in every speed band (noise growing with slope wherever it can show). */
+  def jitterWhy(e: SignalEngine, halves: Seq[Array[Int]]): Option[String] = {
+    val (ds, dc) = e.slopes()
+    def est(idx: Array[Int]): Option[Est] = {
+      val a = pick(ds, idx); val b = pick(dc, idx)
+      val cens = if (e.cens == null) null else Repaired(null, null, pick(e.cens.censS, idx), pick(e.cens.censC, idx))
+      val nz = Noise.fit(pick(e.resS, idx), pick(e.resC, idx), (a, b), cens)
+      var info = 0.0; var i = 0
+      while (i < a.length) {
+        val p = a(i) * a(i) / (nz.varS + nz.jitter2 * a(i) * a(i)); val q = b(i) * b(i) / (nz.varC + nz.jitter2 * b(i) * b(i))
+        info += 0.5 * (p * p + q * q); i += 1
+      }
+      if (info <= 0) None else Some(Est(Array(nz.jitter2), Array(Array(1 / info)), Array(ModelRel * e.noise.jitter2)))
+    }
+    val f = e.freq.map(math.abs); val q = f.clone(); java.util.Arrays.sort(q)
+    val edges = (0 to SpeedBands).map(b => if (b == SpeedBands) Double.PositiveInfinity else q(b * e.n / SpeedBands))
+    val bands = (0 until SpeedBands).map(b => (0 until e.n).filter(i => f(i) >= edges(b) && f(i) < edges(b + 1)).toArray)
+    agree(halves.map(est), "halves", "jitter variance").orElse(agree(bands.map(est), "speed bands", "jitter variance"))
+      .orElse(quantizationJitter(e, ds, dc))
+  }
+
+  /** Slope-dependent noise that quantization alone could make (its error variance depends on the signal value when the
+    * analog noise is below about half a step) is not jitter.
+    */
+  private def quantizationJitter(e: SignalEngine, ds: Array[Double], dc: Array[Double]): Option[String] = {
+    val nz = Noise.fit(e.resS, e.resC, (ds, dc), e.cens)
+    var m = 0.0; var i = 0
+    while (i < e.n) { m += ds(i) * ds(i) + dc(i) * dc(i); i += 1 }
+    val jitterVar = nz.jitter2 * m / (2.0 * e.n); val q = Quantization.varianceModulation(e)
+    if (jitterVar > q) None
+    else Some(f"its extra variance ${jitterVar / (e.step * e.step)}%.3g step^2 at the mean slope is within what quantization makes (${q / (e.step * e.step)}%.3g step^2)")
+  }
+
+  /** None when the fold estimates agree; else the fold values, the chi-square and its equivalent in sd. */
+  def agree(ests: Seq[Option[Est]], what: String, name: String): Option[String] = {
+    val ok0 = ests.flatten
+    if (ok0.size < 2) return None
+    val p = ok0.head.theta.length
+    val ok = ok0.map(x => x.copy(cov = Array.tabulate(p, p)((a, b) => x.cov(a)(b) + (if (a == b) x.floor(a) * x.floor(a) else 0.0))))
+    val ws = ok.map(x => inv(x.cov))
+    if (ws.exists(_.isEmpty)) return None
+    val wSum = Array.tabulate(p, p)((a, b) => ws.map(_.get(a)(b)).sum)
+    val rhs = Array.tabulate(p)(a => ok.indices.map(f => (0 until p).map(b => ws(f).get(a)(b) * ok(f).theta(b)).sum).sum)
+    val mean = inv(wSum).map(w => Array.tabulate(p)(a => (0 until p).map(b => w(a)(b) * rhs(b)).sum)).getOrElse(return None)
+    val chi2 = ok.indices.map { f =>
+      val d = Array.tabulate(p)(a => ok(f).theta(a) - mean(a))
+      (0 until p).map(a => (0 until p).map(b => d(a) * ws(f).get(a)(b) * d(b)).sum).sum
+    }.sum
+    val dof = (ok.size - 1) * p
+    val pv = 1 - new ChiSquaredDistribution(dof).cumulativeProbability(chi2)
+    if (pv >= PValue) None
+    else {
+      val z = if (pv <= 0) Double.PositiveInfinity else -new NormalDistribution().inverseCumulativeProbability(pv / 2)
+      val vals = ok.map(x => x.theta.indices.map(a => f"${x.theta(a)}%.3g +- ${math.sqrt(x.cov(a)(a))}%.2g").mkString("(", ", ", ")")).mkString(" vs ")
+      Some(f"it does not replicate on the $what: $name $vals (chi-square $chi2%.1f for $dof, $z%.1f sd)")
+    }
+  }
+
+  private def inv(m: Array[Array[Double]]): Option[Array[Array[Double]]] = {
+    val p = m.length
+    val sc = Array.tabulate(p)(i => if (m(i)(i) > 0) 1 / math.sqrt(m(i)(i)) else 0.0)
+    if (sc.contains(0.0)) return None
+    val lu = new LUDecomposition(new Array2DRowRealMatrix(Array.tabulate(p, p)((a, b) => m(a)(b) * sc(a) * sc(b))), 1e-12)
+    if (!lu.getSolver.isNonSingular) None
+    else { val x = lu.getSolver.getInverse; Some(Array.tabulate(p, p)((a, b) => x.getEntry(a, b) * sc(a) * sc(b))) }
+  }
+}

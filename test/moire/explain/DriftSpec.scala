@@ -1,0 +1,56 @@
+package moire.explain
+
+import org.scalatest.flatspec.AnyFlatSpec
+import org.scalatest.matchers.should.Matchers
+
+/** Drift in time (linear and warm-up) and contrast along the travel, from the independent generator. */
+class DriftSpec extends AnyFlatSpec with Matchers {
+  import ExplainSupport.describe
+
+  private def run(s: FringeGenerator.Spec): Report = {
+    val r = SignalExplain.run("drift", FringeGenerator.recording(s), Nil, Progress.none).report
+    println(s"${s.motion} warm-up ${s.warmGain}/${s.warmOffset} tau ${s.warmTauS} drift ${s.driftGainPerS}/${s.driftOffsetPerS} contrast ${s.contrastPerPeriod}: " +
+      s"findings [${describe(r)}]; unexplained [${r.unexplained.map(_.where).mkString("; ")}]")
+    r
+  }
+
+  // back and forth over 60 periods, 30 times in 0.1 s: time and position can be told apart
+  private val back = FringeGenerator.Spec(n = 100000, fs = 1e6, motion = "reverse", travel = 30, rateHz = 30, noiseLsb = 2.0, bits = 12)
+
+  "explain" should "find a concealed warm-up with its time constant" in {
+    // 1.5 LSB of offset and 0.15 % of amplitude (1.2 LSB) settling with 20 ms, under 2 LSB of noise per sample
+    val r = run(back.copy(warmOffset = 1.5 / 2048, warmGain = 0.0015, warmTauS = 0.02))
+    r.findings.map(_.effect) shouldBe Seq("warmup")
+    val f = r.findings.head
+    val (tau, sd) = (f.params("time_constant_s"), f.unc("time_constant_s"))
+    println(f"warm-up time constant $tau%.4f +- $sd%.4f s (true 0.0200), offset step ${f.params("offset_sin_step_fs") * 2048}%.2f LSB (true 1.50)")
+    math.abs(tau - 0.02) should be < 3 * sd
+    sd should be < 0.01
+  }
+
+  it should "still find a linear drift (and call it linear)" in {
+    val r = run(back.copy(driftOffsetPerS = 20.0 / 2048, driftGainPerS = 0.02))
+    r.findings.map(_.effect) shouldBe Seq("drift")
+    val f = r.findings.head
+    f.params("offset_sin_per_s") * 2048 shouldBe 20.0 +- 3 * f.unc("offset_sin_per_s") * 2048
+  }
+
+  it should "call a contrast change along a one-way scan neither drift nor warm-up, and rank three sizes in order" in {
+    val sizes = Seq(-1e-5, -3e-5, -1e-4)
+    val est = sizes.map { c =>
+      val s = FringeGenerator.Spec(n = 50000, fs = 2e6, motion = "uneven", f0 = 20e3, wobble = 0.6, bits = 12, noiseLsb = 1.0, contrastPerPeriod = c)
+      val r = run(s)
+      r.findings.map(_.effect) should contain noneOf ("drift", "warmup")
+      r.findings.map(_.effect) should contain("contrast_along_travel")
+      val f = r.findings.find(_.effect == "contrast_along_travel").get
+      // the fit's amplitudes are those at the mean position: the gain per period relative to them is c / (1 + c (xm - x0))
+      val xm = (0 until s.n).map(i => FringeGenerator.periods(s, i / s.fs)).sum / s.n
+      val truth = c / (1 + c * xm)
+      val (g, sd) = (f.params("gain_sin_per_period"), f.unc("gain_sin_per_period"))
+      println(f"contrast $c%.1e per period: estimate $g%.4e +- $sd%.1e (truth $truth%.4e)")
+      math.abs(g - truth) should be < 3 * sd
+      g
+    }
+    est shouldBe est.sorted.reverse
+  }
+}

@@ -1,0 +1,64 @@
+package moire.explain
+
+import moire.recording.Recording
+
+import java.util.Random
+
+/** A third generator, independent of `simulate`, moire.signal and the fit model: a homodyne interferometer or
+  * linear scale with its own motion formulas (constant, chirp, back-and-forth, uneven: a drive plus vibration),
+  * intensity-like contrast and offset that change along the travel (beam walk), warm-up and linear drift in time,
+  * Gaussian noise, rounding to `bits`-bit offset-binary codes, optionally shifted into a wider `formatBits` word,
+  * and its own CSV text.
+  */
+object FringeGenerator {
+  /** motion: "constant" (f0), "chirp" (f0 -> f1), "reverse" (peak `travel` periods at `rateHz`), "uneven" (drive f0
+    * plus two vibrations whose speed peaks at `wobble` x f0, so it may reverse).
+    */
+  final case class Spec(n: Int = 50000, fs: Double = 2e6, motion: String = "constant", f0: Double = 20e3, f1: Double = 60e3,
+                        travel: Double = 50, rateHz: Double = 100, wobble: Double = 0.5, amp: Double = 0.8, offS: Double = 0.01,
+                        offC: Double = -0.008, gainC: Double = 1.01, phaseErrDeg: Double = 1.0, noiseLsb: Double = 1.0,
+                        bits: Int = 12, formatBits: Int = 0, seed: Long = 1,
+                        contrastPerPeriod: Double = 0.0, offsetPerPeriod: Double = 0.0,
+                        warmGain: Double = 0.0, warmOffset: Double = 0.0, warmTauS: Double = 0.01,
+                        driftGainPerS: Double = 0.0, driftOffsetPerS: Double = 0.0)
+
+  /** Fringe phase in periods at time t. */
+  def periods(s: Spec, t: Double): Double = s.motion match {
+    case "constant" => s.f0 * t
+    case "chirp" => s.f0 * t + 0.5 * (s.f1 - s.f0) * t * t / (s.n / s.fs)
+    case "reverse" => s.travel * (1 - math.cos(2 * math.Pi * s.rateHz * t))
+    case "uneven" =>
+      // vibration at 137 Hz and 311 Hz; their speed amplitudes are wobble * f0 * (0.7, 0.3)
+      val w1 = 2 * math.Pi * 137; val w2 = 2 * math.Pi * 311
+      s.f0 * t + s.wobble * s.f0 * (0.7 * math.sin(w1 * t + 0.4) / w1 + 0.3 * math.sin(w2 * t + 1.9) / w2)
+    case other => throw new IllegalArgumentException(s"motion $other")
+  }
+
+  def recording(s: Spec): Recording = Recording.parse("fringe", text(s).split("\n").toIndexedSeq)
+
+  def text(s: Spec): String = {
+    val rnd = new Random(s.seed)
+    val fb = if (s.formatBits > 0) s.formatBits else s.bits
+    val shift = fb - s.bits
+    val top = (1 << s.bits) - 1; val half = 1 << (s.bits - 1)
+    val x0 = periods(s, 0)
+    val sb = new StringBuilder(s.n * 12)
+    sb.append("# moire-recording v1\n# sample_rate_hz: ").append(s.fs).append("\n# adc_bits: ").append(fb)
+      .append("\n# adc_format: offset-binary\n# source: fringe generator\nsin,cos\n")
+    val pe = math.toRadians(s.phaseErrDeg)
+    var i = 0
+    while (i < s.n) {
+      val t = i / s.fs
+      val x = periods(s, t); val a = 2 * math.Pi * x
+      val warm = 1 - math.exp(-t / s.warmTauS)
+      val g = (1 + s.contrastPerPeriod * (x - x0)) * (1 + s.warmGain * warm + s.driftGainPerS * t)
+      val o = s.offsetPerPeriod * (x - x0) + s.warmOffset * warm + s.driftOffsetPerS * t
+      val vs = s.offS + o + s.amp * g * math.sin(a) + s.noiseLsb / half * rnd.nextGaussian()
+      val vc = s.offC + o + s.amp * s.gainC * g * math.cos(a + pe) + s.noiseLsb / half * rnd.nextGaussian()
+      def code(v: Double) = math.max(0, math.min(top, math.floor(v * half + 0.5).toInt + half)) << shift
+      sb.append(code(vs)).append(',').append(code(vc)).append('\n')
+      i += 1
+    }
+    sb.toString
+  }
+}
