@@ -101,6 +101,15 @@ object RefTrajectory {
   val HalfWidths: Seq[Int] = Seq(8, 32, 128)
   /** A reference the signals follow less well than this (rms phase, fringe periods) is not used. */
   val MaxPhaseRms = 0.05
+  /** A reference whose steps are coarser than this (fringe periods) knows the phase less well than the signals do. */
+  val MaxStepPeriods: Double = 1.0 / 64
+
+  /** The reference's resolution: its smallest non-zero step between samples (0 when it never moves). */
+  def step(a: Array[Double]): Double = {
+    var m = Double.MaxValue; var i = 1
+    while (i < a.length) { val d = math.abs(a(i) - a(i - 1)); if (d > 0 && d < m) m = d; i += 1 }
+    if (m == Double.MaxValue) 0.0 else m
+  }
 
   /** Local quadratic (Savitzky-Golay) value and first difference per sample; the windows are cut short at the ends. */
   def smooth(a: Array[Double], h: Int): (Array[Double], Array[Double]) = {

@@ -80,6 +80,13 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
       base = Array(os, as, 0, oc, 0, ac); spec = ModelSpec(); cens = Repaired(ys, yc, null, null); repS = ys; repC = yc
       refit(4, refineTraj = true)
     }
+    /** The trajectory from the signals: of segments spanning 16, 6 or 2.5 fringe periods, the one with the lowest BIC. */
+    def freeFit(): Unit = {
+      def free(len: Int): Unit = start(new Trajectory(n, len, fs), raw)
+      val lens = Seq(16.0, 6.0, 2.5).map(p => Trajectory.segmentLength(n, fs, typicalHz, p)).distinct
+      val best = if (lens.size == 1) lens.head else lens.minBy { l => free(l); bic }
+      free(best)
+    }
     refColumn.foreach { r =>
       // the smoothing of the reference: the window with the lowest BIC (a noisy reference wants a wide one)
       def fit(h: Int): RefTrajectory = { val rt = new RefTrajectory(r, fs, r.periodsPerUnit, h); rt.start(raw); start(rt, new Array[Double](n)); rt }
@@ -87,17 +94,21 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
       val best = if (hs.size == 1) hs.head else hs.minBy { h => fit(h); if (SignalEngine.debug) System.err.println(f"reference smoothing $h: BIC $bic%.1f"); bic }
       val rt = fit(best)
       val rms = phaseRms
-      if (rms <= RefTrajectory.MaxPhaseRms) reference = Some(rt)
-      else referenceRefused = Some(f"the signals follow ${r.column} only within ${rms * 360}%.1f degree of fringe phase rms " +
-        f"(at most ${RefTrajectory.MaxPhaseRms * 360}%.0f): not used, the motion is fitted from the signals")
+      val stepPeriods = math.abs(rt.k) * RefTrajectory.step(r.values)
+      if (rms > RefTrajectory.MaxPhaseRms)
+        referenceRefused = Some(f"the signals follow ${r.column} only within ${rms * 360}%.1f degree of fringe phase rms " +
+          f"(at most ${RefTrajectory.MaxPhaseRms * 360}%.0f): not used, the motion is fitted from the signals")
+      else if (stepPeriods > RefTrajectory.MaxStepPeriods) {
+        // A coarse reference (an A/B count) knows the phase only to its step, the signals far better: where their
+        // own trajectory is identifiable (segments over several periods) it is used; else the reference is.
+        freeFit()
+        if (Identifiable.periodsPerSegment(this) >= Identifiable.MinPeriodsPerSegment)
+          referenceRefused = Some(f"${r.column} moves in steps of ${stepPeriods}%.4g fringe period (coarser than " +
+            f"${RefTrajectory.MaxStepPeriods}%.4g) and the record spans enough periods to fit the motion from the signals: not used")
+        else reference = Some(fit(best))
+      } else reference = Some(rt)
     }
-    if (reference.isEmpty) {
-      // segment length: the one of 16, 6 or 2.5 fringe periods that gives the lowest BIC
-      def free(len: Int): Unit = start(new Trajectory(n, len, fs), raw)
-      val lens = Seq(16.0, 6.0, 2.5).map(p => Trajectory.segmentLength(n, fs, typicalHz, p)).distinct
-      val best = if (lens.size == 1) lens.head else lens.minBy { l => free(l); bic }
-      free(best)
-    }
+    if (reference.isEmpty && !traj.isInstanceOf[Trajectory]) freeFit()
   }
 
   /** Fringe periods per turn, when the reference names turns (from its k and its turns per unit). */
