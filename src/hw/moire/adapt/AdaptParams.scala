@@ -120,12 +120,12 @@ case class AdaptParams(
   /** Pipeline (one register between stages; see docs/adaptive-correction.md): the correction takes
     * five clocks (offset and round, gain products, round and saturate, phase product, sum and
     * saturate); a closed window moves the estimates `updateDelay` clocks after its statistics clock
-    * (snapshot, shifted steps). After the CORDIC, counted from the clock the table is read: the
+    * (snapshot, the rounding's half step added, shifted steps). After the CORDIC, counted from the clock the table is read: the
     * interpolated value at 3, fine phase and radian product at 4, PLL at `pllStage`, rotation
     * products at 6, output register and table leak at `leakStage`, table read-modify-write at `rmwStage`.
     */
   val correctionStages: Int = 5
-  val updateDelay: Int = 2
+  val updateDelay: Int = 3
   val pllStage: Int = 5
   val leakStage: Int = 7
   val rmwStage: Int = 8

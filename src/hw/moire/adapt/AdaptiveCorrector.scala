@@ -35,11 +35,6 @@ class AdaptiveCorrector(val p: AdaptParams) extends Module with moire.emit.Laten
   private def shR(v: SInt, s: Int): SInt = FixedHw.shift(v, s, Rounding.HalfEven)
   private def sat(v: SInt, w: Int): SInt = FixedHw.saturate(v, w)
   private def fit(v: SInt, w: Int): SInt = if (v.getWidth >= w) v(w - 1, 0).asSInt else v.pad(w)
-  /** (v + 2^(s-1)) >> s for a run-time s >= 1. */
-  private def shUp(v: SInt, s: UInt): SInt = {
-    val half = (1.U(1.W) << (s - 1.U)).asUInt
-    ((v +& Cat(0.U(1.W), half).asSInt) >> s).asSInt
-  }
   /** A register of v's exact type (RegNext would forget the width). */
   private def reg[T <: Data](v: T): T = { val r = Reg(chiselTypeOf(v)); r := v; r }
   private def lit(v: Long, w: Int): SInt = v.S(w.W)
@@ -115,10 +110,17 @@ class AdaptiveCorrector(val p: AdaptParams) extends Module with moire.emit.Laten
   private val uV = valid(gV && restart && whole)
   private val uL = reg(Log2(n) +& 1.U)
   private val uS = reg(aS); private val uC = reg(aC); private val uBs = reg(bS); private val uBc = reg(bC); private val uX = reg(cX)
-  private val vV = valid(uV)
-  private val vOs = reg(shUp(uS, uL + p.offsetRate.U)); private val vOc = reg(shUp(uC, uL + p.offsetRate.U))
-  private val vKs = reg(shUp(uBs, uL + (p.gainRate + p.gainShift).U)); private val vKc = reg(shUp(uBc, uL + (p.gainRate + p.gainShift).U))
-  private val vT = reg(shUp(uX, uL + (p.phaseRate + p.phaseShift).U))
+  // w: the sums with half a step added (the rounding); v: shifted by the window's length and the rate
+  private val wV = valid(uV); private val wL = reg(uL)
+  private def up(v: SInt, k: Int): SInt = reg(v +& Cat(0.U(1.W), (1.U(1.W) << (uL + (k - 1).U)).asUInt).asSInt)
+  private val wS = up(uS, p.offsetRate); private val wC = up(uC, p.offsetRate)
+  private val wBs = up(uBs, p.gainRate + p.gainShift); private val wBc = up(uBc, p.gainRate + p.gainShift)
+  private val wX = up(uX, p.phaseRate + p.phaseShift)
+  private val vV = valid(wV)
+  private val vOs = reg((wS >> (wL + p.offsetRate.U)).asSInt); private val vOc = reg((wC >> (wL + p.offsetRate.U)).asSInt)
+  private val vKs = reg((wBs >> (wL + (p.gainRate + p.gainShift).U)).asSInt)
+  private val vKc = reg((wBc >> (wL + (p.gainRate + p.gainShift).U)).asSInt)
+  private val vT = reg((wX >> (wL + (p.phaseRate + p.phaseShift).U)).asSInt)
   when(vV) {
     val gMax = lit((1L << (p.gainBits - 1)) - 1, p.gainBits)
     def gain(k: SInt, step: SInt): SInt = {
