@@ -70,8 +70,11 @@ object Designs {
   /** The DE2-115 top (what Quartus compiles); placed on the ECP5 with its clock from the pin. */
   def de2115(name: String, p: BoardParams): Design = new Design(name, boardWhat("DE2-115", p), () => De2115.top(p),
     () => De2115.top(p.copy(clockSource = ClockSource.Logic)))
-  /** The ULX3S top (what the open ECP5 flow builds). */
-  def ulx3s(name: String, p: BoardParams): Design = new Design(name, boardWhat("ULX3S", p), () => Ulx3s.top(p))
+  /** The ULX3S top (what the open ECP5 flow builds); `timing` places it out of context with its clock from the pin
+    * (the PLL is a primitive that out-of-context synthesis does not know; `build.sh` places it with the PLL).
+    */
+  def ulx3s(name: String, p: BoardParams): Design = new Design(name, boardWhat("ULX3S", p), () => Ulx3s.top(p),
+    () => Ulx3s.top(p.copy(clockSource = ClockSource.Logic)))
 
   /** Every design at its defaults; `cordic` at the given CORDIC options. */
   def all(cordicParams: CordicParams = CordicParams()): Seq[Design] = Seq(
