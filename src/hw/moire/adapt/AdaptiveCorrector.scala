@@ -255,8 +255,8 @@ class AdaptiveCorrector(val p: AdaptParams) extends Module with moire.emit.Laten
       // q8: read-modify-write of entries idx and idx + 1 (one in each bank)
       val old = banks.indices.map(b => Mux(wV && wAddr(b) === q7R(b), wData(b), q7Cand(b)))
       val old0 = Mux(q7Odd, old(1), old(0)); val old1 = Mux(q7Odd, old(0), old(1))
-      val t0 = sat(old0 +& q7Inc0 -& q7Leak, p.tableBits)
-      val t1 = sat(old1 +& q7Inc1 -& q7Leak, p.tableBits)
+      val t0 = PllMath.saturate(PllMath.addSub(old0, q7Inc0, q7Leak), p.tableBits)
+      val t1 = PllMath.saturate(PllMath.addSub(old1, q7Inc1, q7Leak), p.tableBits)
       wV := q7V
       when(q7V) {
         for (bk <- banks.indices) { wAddr(bk) := q7R(bk); wOld(bk) := old(bk) }
