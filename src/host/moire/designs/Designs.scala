@@ -71,10 +71,11 @@ object Designs {
   def de2115(name: String, p: BoardParams): Design = new Design(name, boardWhat("DE2-115", p), () => De2115.top(p),
     () => De2115.top(p.copy(clockSource = ClockSource.Logic)))
   /** The ULX3S top (what the open ECP5 flow builds); `timing` places it out of context with its clock from the pin
-    * (the PLL is a primitive that out-of-context synthesis does not know; `build.sh` places it with the PLL).
+    * of the 25 MHz oscillator (the PLL is a primitive out-of-context synthesis does not know; `build.sh` places it
+    * with the PLL at its clock).
     */
   def ulx3s(name: String, p: BoardParams): Design = new Design(name, boardWhat("ULX3S", p), () => Ulx3s.top(p),
-    () => Ulx3s.top(p.copy(clockSource = ClockSource.Logic)))
+    () => Ulx3s.top(p.copy(clockSource = ClockSource.Logic, clockHz = Ulx3s.oscillatorHz, adcClockHz = Ulx3s.oscillatorHz)))
 
   /** Every design at its defaults; `cordic` at the given CORDIC options. */
   def all(cordicParams: CordicParams = CordicParams()): Seq[Design] = Seq(
