@@ -59,14 +59,7 @@ object BurstRecorder {
     if (version < 2) throw new StreamError(s"${o.port}: the board speaks stream format version $version, which has no burst capture; rebuild it with this moire")
     val depth = ask(c.read(Registers.BurstDepth))
     if (b.samples > depth) throw new StreamError(s"--burst ${b.samples}: the board holds at most $depth samples")
-    val clk = o.adcClockHz.getOrElse(ask(c.read(Registers.AdcClockHz)).toDouble)
-    if (!(clk > 0)) throw new StreamError(s"${o.port}: the board reports adc_clock_hz 0; give --adc-clock-hz")
-    val fmt = o.adcFormat.map(s => AdcFormat.parse(s).toOption.get).getOrElse(ask(c.read(Registers.AdcFormat)) match {
-      case Registers.AdcOffsetBinary => AdcFormat.OffsetBinary
-      case Registers.AdcTwosComplement => AdcFormat.TwosComplement
-      case v => throw new StreamError(s"${o.port}: the board reports adc_format $v (0 or 1 expected); give --adc-format")
-    })
-    val m = o.countsPerPeriod.getOrElse(ask(c.read(Registers.CountsPerPeriod)))
+    val (clk, fmt, m) = Recorder.adcSetup(c, o, ask(_))
     val t = BurstTrigger.parse(b.trigger).toOption.get
     for ((r, v) <- Seq(Registers.BurstLength -> b.samples, Registers.BurstPre -> b.pre, Registers.BurstTrigger -> t.mode.toLong,
       Registers.BurstThreshold -> t.threshold, Registers.BurstTarget -> t.target)) {

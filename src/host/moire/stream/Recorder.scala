@@ -85,6 +85,13 @@ object Recorder {
       case None => ask(c.read(Registers.Decimation))
     }
     if (d < 1) throw new StreamError(s"${o.port}: the board reports decimation $d; give --decimation")
+    val (clk, fmt, m) = adcSetup(c, o, ask(_))
+    val n = ask(c.read(Registers.FrameRecords))
+    BoardSetup(d, clk, fmt, m, Some(n).filter(v => v >= 1 && v <= StreamV1.MaxFrameRecords), fromBoard = true)
+  }
+
+  /** ADC clock, code format and counts per period: from the options, else read from the board. */
+  def adcSetup(c: BoardClient, o: RecordOptions, ask: (=> Long) => Long): (Double, AdcFormat, Long) = {
     val clk = o.adcClockHz.getOrElse(ask(c.read(Registers.AdcClockHz)).toDouble)
     if (!(clk > 0)) throw new StreamError(s"${o.port}: the board reports adc_clock_hz 0; give --adc-clock-hz")
     val fmt = o.adcFormat.map(s => AdcFormat.parse(s).toOption.get).getOrElse(ask(c.read(Registers.AdcFormat)) match {
@@ -92,9 +99,7 @@ object Recorder {
       case Registers.AdcTwosComplement => AdcFormat.TwosComplement
       case v => throw new StreamError(s"${o.port}: the board reports adc_format $v (0 or 1 expected); give --adc-format")
     })
-    val m = o.countsPerPeriod.getOrElse(ask(c.read(Registers.CountsPerPeriod)))
-    val n = ask(c.read(Registers.FrameRecords))
-    BoardSetup(d, clk, fmt, m, Some(n).filter(v => v >= 1 && v <= StreamV1.MaxFrameRecords), fromBoard = true)
+    (clk, fmt, o.countsPerPeriod.getOrElse(ask(c.read(Registers.CountsPerPeriod))))
   }
 
   def record(link: ByteLink, o: RecordOptions, say: String => Unit, warn: String => Unit): RecordResult = {
