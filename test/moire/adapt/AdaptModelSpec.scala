@@ -101,6 +101,8 @@ class AdaptModelSpec extends AnyFlatSpec {
     assert(msg(AdaptParams(harmonicEntries = 48)).contains("harmonicEntries must be 0 or a power of two"))
     assert(msg(AdaptParams(windowBits = 16)).contains("windowBits"))
     assert(msg(AdaptParams(pllKp = 0)).contains("pllKp"))
+    assert(msg(AdaptParams(pllKp = 8, pllKv = 8)).contains("pllKv must be at least 9"))
+    assert(msg(AdaptParams(pllKp = 1, pllKv = 2)).contains("pllKv must be at least 3"))
     assert(msg(AdaptParams(initialAmplitude = 2)).contains("initialAmplitude"))
   }
 

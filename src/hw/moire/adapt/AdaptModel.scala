@@ -41,6 +41,8 @@ class AdaptModel(val p: AdaptParams) {
   var tableSum = 0L
   private var sumPending = 0L
   var theta = 0L; var vel = 0L; private var prevPhic = 0L; var lockCnt = 0L
+  /** The previous sample's phase error and phase increment less velocity: the PLL acts on them one sample late. */
+  private var eLast = 0L; private var dvLast = 0L
 
   /** One sample in flight; fields filled as it passes the stages. */
   private final class Sample(val s: Long, val c: Long) {
@@ -138,16 +140,18 @@ class AdaptModel(val p: AdaptParams) {
     periods += 1
   }
 
+  /** The PLL at one sample: its error e (for the table), then theta, vel and the lock count moved by the previous
+    * sample's errors (a register in the loop, one sample of delay: the gains are small shifts).
+    */
   private def pll(x: Sample): Unit = {
     val pred = wrap(theta + vel, F)
-    val e = wrap(x.phic - pred, F)
-    val d = wrap(x.phic - prevPhic, F)
-    x.e = e
+    x.e = wrap(x.phic - pred, F)
     x.enable = entries > 0 && lockCnt == lockMax && math.abs(vel) >= (1L << (F - p.minSpeedShift))
-    theta = wrap(pred + shR(e, p.pllKp), F)
-    vel = wrap(vel + shR(e, p.pllKv) + shR(d - vel, p.pllKf), F)
-    prevPhic = x.phic
-    lockCnt = if (math.abs(e) < (1L << (F - p.lockShift))) math.min(lockCnt + 1, lockMax) else 0L
+    val dv = wrap(x.phic - prevPhic - vel, F)
+    theta = wrap(pred + shR(eLast, p.pllKp), F)
+    vel = wrap(vel + shR(eLast, p.pllKv) + shR(dvLast, p.pllKf), F)
+    lockCnt = if (math.abs(eLast) < (1L << (F - p.lockShift))) math.min(lockCnt + 1, lockMax) else 0L
+    prevPhic = x.phic; eLast = x.e; dvLast = dv
   }
 
   /** LMS step split by the interpolation weights, plus a leak of the (unobservable) table mean. */

@@ -16,7 +16,7 @@ import moire.cordic.{CordicMode, CordicParams}
   * Update rates are shifts: a per-period update moves an estimate by 2^-rate of its error
   * (times N / 2^bitlength(N) in [0.5, 1), N = samples in the period); the table moves each entry by
   * 2^-`harmonicRate` of the residual per sample. PLL gains are 2^-pllKp (phase), 2^-pllKv (velocity),
-  * 2^-pllKf (frequency-difference aid).
+  * 2^-pllKf (frequency-difference aid); the PLL acts on each sample's errors one sample late.
   *
   * @param initialAmplitude amplitude (fraction of input full scale) the start gains assume
   * @param harmonicEntries  entries of the harmonic phase-correction table (power of two, 0 = no table)
@@ -80,6 +80,9 @@ case class AdaptParams(
   require(pllKp >= 1 && pllKp <= 16, s"pllKp must be in 1..16, got $pllKp")
   require(pllKv >= 1 && pllKv <= 30, s"pllKv must be in 1..30, got $pllKv")
   require(pllKf >= 1 && pllKf <= 24, s"pllKf must be in 1..24, got $pllKf")
+  // The PLL acts on each sample's error one sample late; its poles stay inside the unit circle for every pllKf
+  // when the velocity gain is below the phase gain (pllKv > pllKp, and pllKv >= 3).
+  require(pllKv >= math.max(pllKp + 1, 3), s"pllKv must be at least ${math.max(pllKp + 1, 3)} (above pllKp $pllKp and >= 3: the PLL's stable range), got $pllKv")
   require(lockBits >= 1 && lockBits <= 20, s"lockBits must be in 1..20, got $lockBits")
   require(lockShift >= 2 && lockShift <= fineBits - 2, s"lockShift must be in 2..${fineBits - 2}, got $lockShift")
   require(meanShift >= 1 && meanShift <= 16, s"meanShift must be in 1..16, got $meanShift")

@@ -38,7 +38,6 @@ class AdaptiveCorrector(val p: AdaptParams) extends Module with moire.emit.Laten
   /** A register of v's exact type (RegNext would forget the width). */
   private def reg[T <: Data](v: T): T = { val r = Reg(chiselTypeOf(v)); r := v; r }
   private def lit(v: Long, w: Int): SInt = v.S(w.W)
-  private def abs(v: SInt): SInt = Mux(v < 0.S, 0.S -& v, v.pad(v.getWidth + 1))
 
   /** v delayed by k clocks in registers of its exact type. */
   private def delay[T <: Data](v: T, k: Int): T = (0 until k).foldLeft(v)((x, _) => reg(x))
@@ -181,25 +180,25 @@ class AdaptiveCorrector(val p: AdaptParams) extends Module with moire.emit.Laten
   io.out.bits.otrCos := ShiftRegister(io.in.bits.otrCos, latency)
 
   // ---- PLL (smoothed phase) on q4's fine phase, the table's error signal ----
+  // Each sample's errors are registered (eLast: phase, dvLast: increment less velocity), and theta, vel and the
+  // lock counter move by the previous sample's: one carry-save layer and one adder per register (the model does the same).
   private val theta = RegInit(0.S(F.W))
   private val vel = RegInit(0.S(F.W))
   private val prevPhic = RegInit(0.S(F.W))
+  private val eLast = RegInit(0.S(F.W))
+  private val dvLast = RegInit(0.S(F.W))
   private val lockMax = (1L << p.lockBits) - 1
   private val lockCnt = RegInit(0.U(p.lockBits.W))
-  // The loop closes in one clock, so it is written for short paths (same numbers as the model's):
-  // e = phic - theta - vel with a carry-save layer before one adder, each rounded shift added as the
-  // adder's carry-in, the lock test as a bit pattern, and vel + shR(d - vel) formed beside e.
-  private val pred = fit(theta +& vel, F)
-  private val e = PllMath.sub2(q4Phic, theta, vel, F)
   when(q4V) {
-    val d = fit(q4Phic -& prevPhic, F)
-    theta := PllMath.addShR(pred, e, p.pllKp, F)
-    vel := PllMath.addShR(fit(vel +& shR(d -& vel, p.pllKf), F), e, p.pllKv, F)
+    eLast := PllMath.sub2(q4Phic, theta, vel, F)
+    dvLast := PllMath.sub2(q4Phic, prevPhic, vel, F)
+    theta := PllMath.add2ShR(theta, vel, eLast, p.pllKp, F)
+    vel := PllMath.addShR2(vel, eLast, p.pllKv, dvLast, p.pllKf, F)
     prevPhic := q4Phic
-    lockCnt := Mux(PllMath.absBelow(e, F - p.lockShift), Mux(lockCnt === lockMax.U, lockCnt, lockCnt + 1.U), 0.U)
+    lockCnt := Mux(PllMath.absBelow(eLast, F - p.lockShift), Mux(lockCnt === lockMax.U, lockCnt, lockCnt + 1.U), 0.U)
   }
-  private val q5E = reg(e)
-  private val q5En = valid(q4V && lockCnt === lockMax.U && abs(vel) >= lit(1L << (F - p.minSpeedShift), F + 1))
+  private val q5E = eLast
+  private val q5En = valid(q4V && lockCnt === lockMax.U && !PllMath.absBelow(vel, F - p.minSpeedShift))
   tbl.foreach(_.update())
 
   /** The table: read (q0), interpolated (q1 to q3: `delta`), and updated by LMS at rmwStage
