@@ -248,18 +248,19 @@ class AdaptiveCorrector(val p: AdaptParams) extends Module with moire.emit.Laten
       val cand = banks.indices.map { b =>
         hist.foldRight(q6Read(b)) { case ((v, ad, da), older) => Mux(v && ad(b) === q6R(b), da(b), older) } }
       val q7V = valid(q6En)
-      val q7Inc0 = reg(shR(q6P0, sh)); val q7Inc1 = reg(shR(q6P1, sh))
+      // each bank's step (entry idx, weight 1 - f, is in the odd bank when idx is odd) and the leak
+      val inc = Seq(shR(q6P0, sh), shR(q6P1, sh))
+      val q7Inc = banks.indices.map(b => reg(Mux(q6Odd, inc(1 - b), inc(b))))
       val q7Leak = reg(shR(tableSum, p.tableIndexBits + p.meanShift))
-      val q7Cand = cand.map(reg(_)); val q7R = q6R.map(reg(_)); val q7Odd = reg(q6Odd)
+      val q7Cand = cand.map(reg(_)); val q7R = q6R.map(reg(_))
+      // the write now at q7 is in the write port when this sample reaches q7: its address compared a clock early
+      val q7Hit = banks.indices.map(b => valid(q7V && q7R(b) === q6R(b)))
       // q8: read-modify-write of entries idx and idx + 1 (one in each bank)
-      val old = banks.indices.map(b => Mux(wV && wAddr(b) === q7R(b), wData(b), q7Cand(b)))
-      val old0 = Mux(q7Odd, old(1), old(0)); val old1 = Mux(q7Odd, old(0), old(1))
-      val t0 = PllMath.saturate(PllMath.addSub(old0, q7Inc0, q7Leak), p.tableBits)
-      val t1 = PllMath.saturate(PllMath.addSub(old1, q7Inc1, q7Leak), p.tableBits)
+      val old = banks.indices.map(b => Mux(q7Hit(b), wData(b), q7Cand(b)))
+      val t = banks.indices.map(b => PllMath.saturate(PllMath.addSub(old(b), q7Inc(b), q7Leak), p.tableBits))
       wV := q7V
       when(q7V) {
-        for (bk <- banks.indices) { wAddr(bk) := q7R(bk); wOld(bk) := old(bk) }
-        wData(0) := Mux(q7Odd, t1, t0); wData(1) := Mux(q7Odd, t0, t1)
+        for (bk <- banks.indices) { wAddr(bk) := q7R(bk); wOld(bk) := old(bk); wData(bk) := t(bk) }
       }
       when(wV) { tableSum := fit(tableSum +& (wData(0) -& wOld(0)) +& (wData(1) -& wOld(1)), tableSum.getWidth) }
     }
