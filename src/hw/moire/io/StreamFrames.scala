@@ -44,6 +44,10 @@ class FrameTx(val n: Int, val countWidth: Int) extends Module {
   private val pos = RegInit(0.U(16.W))     // byte position in the frame
   private val recByte = RegInit(0.U(log2Ceil(recordBytes).W))  // byte within the current record or word
   private val crc = Reg(UInt(16.W))
+  // The CRC takes a body byte one clock after it went out, from a registered copy: the byte mux (fed by
+  // the record FIFO's block RAM) and the CRC are then in separate clocks. The CRC bytes wait for it.
+  private val crcByte = Reg(UInt(8.W))
+  private val crcPending = RegInit(false.B)
   private val frameDropped = Reg(UInt(16.W))
   private val reply = Reg(new RegReply)
   private val info = Reg(new BurstInfoBits)
@@ -111,15 +115,18 @@ class FrameTx(val n: Int, val countWidth: Int) extends Module {
     .elsewhen(pos === AtDropped.U) { byte := frameDropped(7, 0) }
     .elsewhen(pos === (AtDropped + 1).U) { byte := frameDropped(15, 8) }
     .otherwise { byte := recBytes(recByte) }
-  // a sample frame waits for its next word (the burst RAM answers within a few clocks)
-  io.out.valid := busy && !(inWords && !io.burstWords.valid)
+  // a sample frame waits for its next word (the burst RAM answers within a few clocks); the CRC bytes wait
+  // for the CRC to take the last body byte
+  io.out.valid := busy && !(inWords && !io.burstWords.valid) && !(pos === bodyEnd && crcPending)
   io.out.bits := byte
   io.records.ready := busy && inRecords && io.out.ready && recByte === (recordBytes - 1).U
   io.burstWords.ready := busy && inWords && io.out.ready && recByte === 3.U
   when(io.burstWords.fire) { sent := sent + 1.U }
+  crcPending := false.B
+  when(crcPending) { crc := Crc16.next(crc, crcByte) }
   when(io.out.fire) {
     pos := pos + 1.U
-    when(pos >= CrcFrom.U && pos < bodyEnd) { crc := Crc16.next(crc, byte) }
+    when(pos >= CrcFrom.U && pos < bodyEnd) { crcByte := byte; crcPending := true.B }
     when(inRecords) { recByte := Mux(recByte === (recordBytes - 1).U, 0.U, recByte + 1.U) }
     when(inWords) { recByte := Mux(recByte === 3.U, 0.U, recByte + 1.U) }
     when(pos === bodyEnd + 1.U) { busy := false.B; seq := seq + 1.U }
