@@ -77,18 +77,22 @@ class BoardCore(val p: BoardParams) extends Module {
       h.io.reg := harmonicPort
       h.io.in.valid := m.io.out.valid
       h.io.in.bits := m.io.out.bits.position.asUInt(hp.countBits - 1, 0)
-      // theta - f(theta), kept multi-turn: the subdivider's position minus f rounded to counts
+      // theta - f(theta), kept multi-turn: the subdivider's position minus f rounded to counts, registered
+      // (one clock: the rounding and the subtraction do not share a clock with what reads the position)
       val late = ShiftRegister(m.io.out.bits, hp.latency)
       val fRounded = h.io.out.bits.f +& (BigInt(1) << (hp.outFrac - 1)).S
       moire.emit.Unused("f_fraction", fRounded(hp.outFrac - 1, 0)) // rounded away: whole counts only
       val fCounts = (fRounded >> hp.outFrac).asSInt
+      val c = Wire(Valid(new SubdivOut(p.subdiv)))
+      c.valid := h.io.out.valid
+      c.bits := late
+      c.bits.position := (late.position - fCounts)(p.subdiv.positionWidth - 1, 0).asSInt
       val o = Wire(Valid(new SubdivOut(p.subdiv)))
-      o.valid := h.io.out.valid
-      o.bits := late
-      o.bits.position := (late.position - fCounts)(p.subdiv.positionWidth - 1, 0).asSInt
+      o.valid := RegNext(c.valid, false.B)
+      o.bits := RegNext(c.bits)
       val q = Module(new QuadratureOut(p.subdiv.positionWidth, p.subdiv.countBits, p.subdiv.minEdgeClocks))
       q.io.in.valid := o.valid; q.io.in.bits := o.bits.position
-      (o, q.io.a, q.io.b, q.io.z, m.io.status, m.latency + hp.latency)
+      (o, q.io.a, q.io.b, q.io.z, m.io.status, m.latency + hp.latency + BoardParams.compensatedOutRegs)
   }
   require(latency == p.datapathLatency, s"datapath latency $latency, expected ${p.datapathLatency}")
 

@@ -95,7 +95,7 @@ final case class BoardParams(
   val datapathLatency: Int = design match {
     case BoardDesign.Subdiv => moire.subdiv.SubdivAdc.latency(subdiv)
     case BoardDesign.Corrected => correctedParams.latency
-    case BoardDesign.Compensated => moire.subdiv.SubdivAdc.latency(subdiv) + harmonicParams.latency
+    case BoardDesign.Compensated => moire.subdiv.SubdivAdc.latency(subdiv) + harmonicParams.latency + BoardParams.compensatedOutRegs
   }
   /** AD9226 pipeline: a sample's word appears on the pins 7 ADC clocks after the edge that took it. */
   val adcPipeline: Int = 7
@@ -108,6 +108,11 @@ final case class BoardParams(
   def tag: String = s"${design.name}_${if (adcFormat == AdcFormat.OffsetBinary) "ob" else "tc"}" +
     (if (clockHz != 50000000) s"_clk${clockHz / 1000}k" else "") + s"_adc${adcClockHz / 1000}k_${clockSource.name}"
   def formatName: String = if (adcFormat == AdcFormat.OffsetBinary) "offset binary" else "two's complement"
+}
+
+object BoardParams {
+  /** Design compensated: registers after theta - f(theta) (rounding and subtraction in a clock of their own). */
+  val compensatedOutRegs: Int = 1
 }
 
 /** A frequency in MHz as few digits as it needs: 50, 12.5. */

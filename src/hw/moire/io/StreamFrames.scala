@@ -44,6 +44,10 @@ class FrameTx(val n: Int, val countWidth: Int) extends Module {
   private val pos = RegInit(0.U(16.W))     // byte position in the frame
   private val recByte = RegInit(0.U(log2Ceil(recordBytes).W))  // byte within the current record or word
   private val crc = Reg(UInt(16.W))
+  // The CRC takes a body byte one clock after it went out, from a registered copy: the byte mux (fed by
+  // the record FIFO's block RAM) and the CRC are then in separate clocks. The CRC bytes wait for it.
+  private val crcByte = Reg(UInt(8.W))
+  private val crcPending = RegInit(false.B)
   private val frameDropped = Reg(UInt(16.W))
   private val reply = Reg(new RegReply)
   private val info = Reg(new BurstInfoBits)
@@ -82,7 +86,12 @@ class FrameTx(val n: Int, val countWidth: Int) extends Module {
   /** `v(i)`, `i` cut to the index width. */
   private def pick(v: Vec[UInt], i: UInt): UInt = v(i(log2Ceil(v.size) - 1, 0))
   private def anchorBytes(a: BurstAnchor): Seq[UInt] = le(a.index, 4) ++ le(a.position.asUInt, 4) ++ le(a.refCount.asUInt, 4)
-  private val recBytes = VecInit(le(io.records.bits.asUInt, recordBytes))
+  // The record's bytes come from a registered copy of the record FIFO's output (its block RAM's read data
+  // goes into registers and nothing else); after a record is taken the copy is one clock late, so the
+  // first byte of the next record waits that clock (`recFresh`).
+  private val recHeld = RegNext(io.records.bits.asUInt)
+  private val recFresh = RegNext(!io.records.fire, false.B)
+  private val recBytes = VecInit(le(recHeld, recordBytes))
   private val wordBytes = VecInit(le(io.burstWords.bits, 4))
   private val replyBytes = VecInit(Seq(reply.addr) ++ le(reply.value, 4))
   private val infoBytes = VecInit(le(info.length, 4) ++ le(info.pre, 4) ++ anchorBytes(info.trigger) ++ anchorBytes(info.last))
@@ -111,15 +120,18 @@ class FrameTx(val n: Int, val countWidth: Int) extends Module {
     .elsewhen(pos === AtDropped.U) { byte := frameDropped(7, 0) }
     .elsewhen(pos === (AtDropped + 1).U) { byte := frameDropped(15, 8) }
     .otherwise { byte := recBytes(recByte) }
-  // a sample frame waits for its next word (the burst RAM answers within a few clocks)
-  io.out.valid := busy && !(inWords && !io.burstWords.valid)
+  // a sample frame waits for its next word (the burst RAM answers within a few clocks), a record's first
+  // byte for the registered copy, the CRC bytes for the CRC to take the last body byte
+  io.out.valid := busy && !(inWords && !io.burstWords.valid) && !(inRecords && !recFresh) && !(pos === bodyEnd && crcPending)
   io.out.bits := byte
-  io.records.ready := busy && inRecords && io.out.ready && recByte === (recordBytes - 1).U
+  io.records.ready := io.out.valid && inRecords && io.out.ready && recByte === (recordBytes - 1).U
   io.burstWords.ready := busy && inWords && io.out.ready && recByte === 3.U
   when(io.burstWords.fire) { sent := sent + 1.U }
+  crcPending := false.B
+  when(crcPending) { crc := Crc16.next(crc, crcByte) }
   when(io.out.fire) {
     pos := pos + 1.U
-    when(pos >= CrcFrom.U && pos < bodyEnd) { crc := Crc16.next(crc, byte) }
+    when(pos >= CrcFrom.U && pos < bodyEnd) { crcByte := byte; crcPending := true.B }
     when(inRecords) { recByte := Mux(recByte === (recordBytes - 1).U, 0.U, recByte + 1.U) }
     when(inWords) { recByte := Mux(recByte === 3.U, 0.U, recByte + 1.U) }
     when(pos === bodyEnd + 1.U) { busy := false.B; seq := seq + 1.U }
