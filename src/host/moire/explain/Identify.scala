@@ -21,7 +21,7 @@ object Identify {
   private def speedCols(e: SignalEngine): IndexedSeq[Col] = {
     var m = 0.0; var i = 0
     while (i < e.n) { m = math.max(m, math.abs(e.freq(i))); i += 1 }
-    val u = Array.tabulate(e.n)(i => if (m > 0) (e.freq(i) / m) * (e.freq(i) / m) else 0.0)
+    def u(i: Int) = if (m > 0) (e.freq(i) / m) * (e.freq(i) / m) else 0.0
     IndexedSeq(Col(Array.tabulate(e.n)(i => e.us(i) * u(i)), null), Col(null, Array.tabulate(e.n)(i => e.uc(i) * u(i))))
   }
 
@@ -29,8 +29,7 @@ object Identify {
     val s = LinearFit.solve(cols, e.resS, e.resC)
     if (!s.ok) None
     else {
-      val ps = LinearFit.combine(cols, s.beta, sinCh = true, e.n); val pc = LinearFit.combine(cols, s.beta, sinCh = false, e.n)
-      val rs = Array.tabulate(e.n)(i => e.resS(i) - ps(i)); val rc = Array.tabulate(e.n)(i => e.resC(i) - pc(i))
+      val rs = LinearFit.minus(e.resS, cols, s.beta, sinCh = true); val rc = LinearFit.minus(e.resC, cols, s.beta, sinCh = false)
       Some(Noise.fit(rs, rc, null, e.cens).m2ll)
     }
   }

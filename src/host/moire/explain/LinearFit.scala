@@ -11,19 +11,22 @@ final case class Col(s: Array[Double], c: Array[Double])
 final case class LinSol(beta: Array[Double], inv: Array[Array[Double]], ok: Boolean)
 
 object LinearFit {
-  private def dot(a: Array[Double], b: Array[Double]): Double = {
+  /** a . b over all samples, or over the samples `idx` (a fold) when it is not null. */
+  private def dot(a: Array[Double], b: Array[Double], idx: Array[Int]): Double = {
     if (a == null || b == null) return 0.0
-    var s = 0.0; var i = 0; val n = a.length
-    while (i < n) { s += a(i) * b(i); i += 1 }
+    var s = 0.0; var i = 0
+    if (idx == null) { val n = a.length; while (i < n) { s += a(i) * b(i); i += 1 } }
+    else { val n = idx.length; while (i < n) { val j = idx(i); s += a(j) * b(j); i += 1 } }
     s
   }
 
-  def solve(cols: IndexedSeq[Col], ys: Array[Double], yc: Array[Double]): LinSol = {
+  /** The fit on all samples, or on the samples `idx` (a fold, without copying the columns). */
+  def solve(cols: IndexedSeq[Col], ys: Array[Double], yc: Array[Double], idx: Array[Int] = null): LinSol = {
     val k = cols.length
     val g = Array.ofDim[Double](k, k); val r = new Array[Double](k)
     for (i <- 0 until k) {
-      r(i) = dot(cols(i).s, ys) + dot(cols(i).c, yc)
-      for (j <- 0 to i) { val v = dot(cols(i).s, cols(j).s) + dot(cols(i).c, cols(j).c); g(i)(j) = v; g(j)(i) = v }
+      r(i) = dot(cols(i).s, ys, idx) + dot(cols(i).c, yc, idx)
+      for (j <- 0 to i) { val v = dot(cols(i).s, cols(j).s, idx) + dot(cols(i).c, cols(j).c, idx); g(i)(j) = v; g(j)(i) = v }
     }
     val sc = Array.tabulate(k)(i => if (g(i)(i) > 0) 1 / math.sqrt(g(i)(i)) else 0.0)
     val m = new Array2DRowRealMatrix(Array.tabulate(k, k)((i, j) => g(i)(j) * sc(i) * sc(j) + (if (i == j && sc(i) == 0) 1.0 else 0.0)))
@@ -35,15 +38,63 @@ object LinearFit {
     LinSol(beta, Array.tabulate(k, k)((i, j) => inv.getEntry(i, j) * sc(i) * sc(j)), ok)
   }
 
+  /** Residual sum of squares of both channels on the samples `idx`. */
+  def rss(cols: IndexedSeq[Col], beta: Array[Double], ys: Array[Double], yc: Array[Double], idx: Array[Int]): Double = {
+    var sum = 0.0; var m = 0
+    while (m < idx.length) {
+      val i = idx(m); var ps = ys(i); var pc = yc(i); var k = 0
+      while (k < cols.length) {
+        val c = cols(k)
+        if (c.s != null) ps -= beta(k) * c.s(i)
+        if (c.c != null) pc -= beta(k) * c.c(i)
+        k += 1
+      }
+      sum += ps * ps + pc * pc; m += 1
+    }
+    sum
+  }
+
+  /** Residual sum of squares of one channel over all samples, without a residual array. */
+  def rss(cols: IndexedSeq[Col], beta: Array[Double], y: Array[Double], sinCh: Boolean): Double = {
+    val use = cols.indices.filter(k => (if (sinCh) cols(k).s else cols(k).c) != null && beta(k) != 0).toArray
+    val a = use.map(k => if (sinCh) cols(k).s else cols(k).c); val b = use.map(beta(_))
+    var sum = 0.0; var i = 0
+    while (i < y.length) {
+      var r = y(i); var k = 0
+      while (k < a.length) { r -= b(k) * a(k)(i); k += 1 }
+      sum += r * r; i += 1
+    }
+    sum
+  }
+
   /** out = sum beta_i * column_i on one channel (sin when `sinCh`). */
   def combine(cols: IndexedSeq[Col], beta: Array[Double], sinCh: Boolean, n: Int): Array[Double] = {
     val out = new Array[Double](n)
+    combineInto(cols, beta, sinCh, out)
+    out
+  }
+
+  /** `combine` written into `out` (overwritten). */
+  def combineInto(cols: IndexedSeq[Col], beta: Array[Double], sinCh: Boolean, out: Array[Double]): Unit = {
+    java.util.Arrays.fill(out, 0.0)
+    addTo(out, cols, beta, sinCh, 1.0)
+  }
+
+  /** y - sum beta_i * column_i on one channel, as a new array (one pass per column, no intermediate arrays). */
+  def minus(y: Array[Double], cols: IndexedSeq[Col], beta: Array[Double], sinCh: Boolean): Array[Double] = {
+    val out = y.clone()
+    addTo(out, cols, beta, sinCh, -1.0)
+    out
+  }
+
+  /** out += sign * sum beta_i * column_i on one channel. */
+  def addTo(out: Array[Double], cols: IndexedSeq[Col], beta: Array[Double], sinCh: Boolean, sign: Double): Unit = {
+    val n = out.length
     var k = 0
     while (k < cols.length) {
-      val a = if (sinCh) cols(k).s else cols(k).c; val b = beta(k)
+      val a = if (sinCh) cols(k).s else cols(k).c; val b = sign * beta(k)
       if (a != null && b != 0) { var i = 0; while (i < n) { out(i) += b * a(i); i += 1 } }
       k += 1
     }
-    out
   }
 }

@@ -49,8 +49,9 @@ object Replicate {
   private def target(e: SignalEngine, t: Term): (Array[Double], Array[Double]) = {
     val cols = e.termCols(t); val at = e.termIndex(t)
     val b = e.sol.beta.slice(at, at + cols.size)
-    val ps = LinearFit.combine(cols, b, sinCh = true, e.n); val pc = LinearFit.combine(cols, b, sinCh = false, e.n)
-    (Array.tabulate(e.n)(i => e.resS(i) + ps(i)), Array.tabulate(e.n)(i => e.resC(i) + pc(i)))
+    val ts = e.resS.clone(); val tc = e.resC.clone()
+    LinearFit.addTo(ts, cols, b, sinCh = true, 1.0); LinearFit.addTo(tc, cols, b, sinCh = false, 1.0)
+    (ts, tc)
   }
 
   /** An interference line: on each half its frequency (searched near the full-record value) and its amplitude on each
@@ -73,16 +74,11 @@ object Replicate {
       }
       val half = e.fs / m
       val hz = cands.minimize(power, t.hz - half, t.hz + half, grid = 8, golden = 16)
-      val cols = e.baseCols(e.s1, e.s2, e.c1, e.c2).map(c => Col(pick(c.s, idx), pick(c.c, idx))) ++
-        e.termCols(Term.Interference(hz)).map(c => Col(pick(c.s, idx), pick(c.c, idx)))
-      val fy = pick(ys, idx); val fc = pick(yc, idx)
-      val sol = LinearFit.solve(cols, fy, fc)
+      val cols = e.baseCols(e.s1, e.s2, e.c1, e.c2) ++ e.termCols(Term.Interference(hz))
+      val sol = LinearFit.solve(cols, ys, yc, idx)
       if (!sol.ok) None
       else {
-        val ps = LinearFit.combine(cols, sol.beta, sinCh = true, m); val pc = LinearFit.combine(cols, sol.beta, sinCh = false, m)
-        var rss = 0.0; var i = 0
-        while (i < m) { val a = fy(i) - ps(i); val b = fc(i) - pc(i); rss += a * a + b * b; i += 1 }
-        val v = rss / (2.0 * m)
+        val v = LinearFit.rss(cols, sol.beta, ys, yc, idx) / (2.0 * m)
         val as = math.hypot(sol.beta(6), sol.beta(7)); val ac = math.hypot(sol.beta(8), sol.beta(9))
         // Cramer-Rao bound of a sinusoid's frequency in white noise, both channels' power together
         val sdF = e.fs / (2 * math.Pi) * math.sqrt(24 * v / ((as * as + ac * ac) * m.toDouble * m * m))
@@ -125,16 +121,11 @@ object Replicate {
     val size = math.sqrt(tcols.indices.map(j => math.pow(e.sol.beta(at + j) * rms(j), 2)).sum)
     val floor = rms.map(r => if (r > 0) ModelRel * size / r else 0.0).toArray
     fs.map { idx =>
-      val cf = cols.map(c => Col(pick(c.s, idx), pick(c.c, idx)))
-      val ys = pick(ts, idx); val yc = pick(tc, idx)
-      val sol = LinearFit.solve(cf, ys, yc)
+      val sol = LinearFit.solve(cols, ts, tc, idx)
       if (!sol.ok) None
       else {
         val m = idx.length
-        val ps = LinearFit.combine(cf, sol.beta, sinCh = true, m); val pc = LinearFit.combine(cf, sol.beta, sinCh = false, m)
-        var rss = 0.0; var i = 0
-        while (i < m) { val a = ys(i) - ps(i); val b = yc(i) - pc(i); rss += a * a + b * b; i += 1 }
-        val v = rss / math.max(1, 2 * m - cols.size)
+        val v = LinearFit.rss(cols, sol.beta, ts, tc, idx) / math.max(1, 2 * m - cols.size)
         val k = 6 + tcols.size
         Some(Est(sol.beta.slice(6, k), Array.tabulate(k - 6, k - 6)((a, b) => sol.inv(a + 6)(b + 6) * v), floor))
       }
@@ -166,7 +157,11 @@ object Replicate {
     }
     val f = e.freq.map(math.abs); val q = f.clone(); java.util.Arrays.sort(q)
     val edges = (0 to SpeedBands).map(b => if (b == SpeedBands) Double.PositiveInfinity else q(b * e.n / SpeedBands))
-    val bands = (0 until SpeedBands).map(b => (0 until e.n).filter(i => f(i) >= edges(b) && f(i) < edges(b + 1)).toArray)
+    val bands = (0 until SpeedBands).map { b =>
+      val out = Array.newBuilder[Int]; var i = 0
+      while (i < e.n) { if (f(i) >= edges(b) && f(i) < edges(b + 1)) out += i; i += 1 }
+      out.result()
+    }
     agree(halves.map(est), "halves", "jitter variance").orElse(agree(bands.map(est), "speed bands", "jitter variance"))
       .orElse(quantizationJitter(e, ds, dc))
   }

@@ -25,19 +25,22 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
   val step: Double = lsb * (1 << coarseBits)
   val railLo: Double = -1.0
   val railHi: Double = (rec.adc.half - (1 << coarseBits)) * lsb
-  val tc: Array[Double] = Array.tabulate(n)(i => (i - 0.5 * (n - 1)) / fs)
+  /** Time from the record's middle (s), made when a term needs it. */
+  def tc: Array[Double] = Array.tabulate(n)(i => (i - 0.5 * (n - 1)) / fs)
   val ones: Array[Double] = Array.fill(n)(1.0)
   val lnN: Double = math.log(2.0 * n)
 
   val phase = new Array[Double](n); val freq = new Array[Double](n)
-  val sn = new Array[Double](n); val cs = new Array[Double](n)
-  val s1 = new Array[Double](n); val s2 = new Array[Double](n); val c1 = new Array[Double](n); val c2 = new Array[Double](n)
+  // the plain fundamentals (sin and cos of the fringe phase); a spec with skew or bandwidth keeps its cos channel's here
+  private val plainSin = new Array[Double](n); private val plainCos = new Array[Double](n)
+  /** The fundamentals' columns (sin, cos channel): the plain sin and cos of the phase unless the spec skews or filters
+    * a channel, then arrays of their own (allocated on first need).
+    */
+  var s1: Array[Double] = plainSin; var s2: Array[Double] = plainCos; var c1: Array[Double] = plainSin; var c2: Array[Double] = plainCos
   val us = new Array[Double](n); val vs = new Array[Double](n); val uc = new Array[Double](n); val vc = new Array[Double](n)
-  var predS = new Array[Double](n); var predC = new Array[Double](n)
   var repS: Array[Double] = ys; var repC: Array[Double] = yc
   var cens: Repaired = Repaired(ys, yc, null, null)
   val resS = new Array[Double](n); val resC = new Array[Double](n)
-  var termPredS = new Array[Double](n); var termPredC = new Array[Double](n)
 
   var spec: ModelSpec = ModelSpec()
   var base: Array[Double] = new Array[Double](6)
@@ -57,6 +60,12 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
     val d = math.toDegrees(math.atan2(base(5), base(4)) - math.atan2(base(2), base(1))) - 90
     ((d + 540) % 360) - 180
   }
+  /** The terms' part of the prediction at sample i (the prediction less the default part). */
+  def termS(i: Int): Double = repS(i) - resS(i) - base(0) - us(i)
+  def termC(i: Int): Double = repC(i) - resC(i) - base(3) - uc(i)
+  /** The model's prediction (not stored: the repaired data less the residual), as new arrays. */
+  def predS: Array[Double] = Array.tabulate(n)(i => repS(i) - resS(i))
+  def predC: Array[Double] = Array.tabulate(n)(i => repC(i) - resC(i))
   def params: Int = 6 + traj.params + 2 + spec.extraParams
   def bic: Double = noise.m2ll + params * lnN
   def rms: Double = math.sqrt((sumSq(resS) + sumSq(resC)) / (2.0 * n))
@@ -135,8 +144,22 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
 
   def evalTraj(): Unit = {
     traj.eval(phase, freq)
-    var i = 0
-    while (i < n) { val a = 2 * math.Pi * (phase(i) - math.floor(phase(i))); sn(i) = math.sin(a); cs(i) = math.cos(a); i += 1 }
+    setFundamentals()
+  }
+
+  /** 2 pi times the fractional fringe phase of sample i. */
+  @inline final def angle(i: Int): Double = 2 * math.Pi * (phase(i) - math.floor(phase(i)))
+
+  /** s1, s2, c1, c2 for the current phase and spec. */
+  private def setFundamentals(): Unit = {
+    if (!spec.hasSkew && spec.bw.isEmpty) {
+      s1 = plainSin; s2 = plainCos; c1 = plainSin; c2 = plainCos
+      var i = 0
+      while (i < n) { val a = angle(i); plainSin(i) = math.sin(a); plainCos(i) = math.cos(a); i += 1 }
+    } else {
+      if (s1 eq plainSin) { s1 = new Array[Double](n); s2 = new Array[Double](n); c1 = plainSin; c2 = plainCos }
+      fundamentals(spec, s1, s2, c1, c2)
+    }
   }
 
   /** Fundamental columns of both channels under the skew and bandwidth of `sp`. */
@@ -147,7 +170,8 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
     val w = 2 * math.Pi * sp.skewS
     var i = 0
     while (i < n) {
-      if (plain) { a1(i) = sn(i); a2(i) = cs(i); b1(i) = sn(i); b2(i) = cs(i) }
+      val a = angle(i); val sn = math.sin(a); val cs = math.cos(a)
+      if (plain) { a1(i) = sn; a2(i) = cs; b1(i) = sn; b2(i) = cs }
       else {
         val f = freq(i); var gs = 1.0; var gc = 1.0; var ls = -0.5 * w * f; var lc = 0.5 * w * f
         if (!fcB.isInfinite) { val u = f / fcB; val g = 1 / math.sqrt(1 + u * u); gs *= g; gc *= g }
@@ -156,8 +180,8 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
         if (!fcC.isInfinite) { val u = f / fcC; gc /= math.sqrt(1 + u * u); lagC = math.atan(u) }
         val m = 0.5 * (lagS + lagC); ls += m - lagS; lc += m - lagC
         val cls = math.cos(ls); val sls = math.sin(ls); val clc = math.cos(lc); val slc = math.sin(lc)
-        a1(i) = gs * (sn(i) * cls + cs(i) * sls); a2(i) = gs * (cs(i) * cls - sn(i) * sls)
-        b1(i) = gc * (sn(i) * clc + cs(i) * slc); b2(i) = gc * (cs(i) * clc - sn(i) * slc)
+        a1(i) = gs * (sn * cls + cs * sls); a2(i) = gs * (cs * cls - sn * sls)
+        b1(i) = gc * (sn * clc + cs * slc); b2(i) = gc * (cs * clc - sn * slc)
       }
       i += 1
     }
@@ -186,7 +210,8 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
       val cos = if (ch != "sin") { val (a, b) = harm(uc, vc); IndexedSeq(Col(null, a), Col(null, b)) } else IndexedSeq()
       sin ++ cos
     case Term.Drift =>
-      IndexedSeq(Col(tc, null), Col(null, tc), Col(mul(us, tc), null), Col(null, mul(uc, tc)))
+      val t = tc
+      IndexedSeq(Col(t, null), Col(null, t), Col(mul(us, t), null), Col(null, mul(uc, t)))
     case Term.Am =>
       val l = rec.linesPerRev.getOrElse(1.0)
       val th = mechAngle.getOrElse(Array.tabulate(n)(i => 2 * math.Pi * phase(i) / l))
@@ -195,7 +220,8 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
     case Term.Inl =>
       def t2(p: Array[Double]) = Array.tabulate(n)(i => (2 * p(i) * p(i) - 1) * lsb)
       def t3(p: Array[Double]) = Array.tabulate(n)(i => (4 * p(i) * p(i) * p(i) - 3 * p(i)) * lsb)
-      IndexedSeq(Col(t2(predS), t2(predC)), Col(t3(predS), t3(predC)))
+      val (ps, pc) = (predS, predC)
+      IndexedSeq(Col(t2(ps), t2(pc)), Col(t3(ps), t3(pc)))
     case Term.Crosstalk =>
       val w = Array.tabulate(n)(i => 2 * math.Pi * freq(i))
       IndexedSeq(Col(mul(vc, w), null), Col(null, mul(vs, w)))
@@ -241,16 +267,21 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
     def one(ch: Int, y: Array[Double], codes: Array[Int], p: Array[Double]): (Array[Double], Array[Double]) = {
       val fl = sp.faults.filter(_.ch == ch); val cl = sp.clips.filter(_.ch == ch)
       val lo = (railLo +: cl.map(_.lo)).max; val hi = (railHi +: cl.map(_.hi)).min
-      val out = y.clone(); val cen = Array.fill(n)(Double.NaN); var i = 0
+      // copies made on the first change: an unchanged channel is `y` itself, no censored sample gives a null `cen`
+      var out = y; var cen: Array[Double] = null; var i = 0
+      def own(): Unit = if (out eq y) out = y.clone()
       while (i < n) {
         if (fl.nonEmpty) {
           var best = codes(i); var bestD = Double.MaxValue
           val cands = fl.foldLeft(Seq(codes(i)))((cs, f) => cs.flatMap(f.preimages)).distinct
           cands.foreach { c => val v = adc.fromPins(c) * lsb; val d = math.abs(v - p(i)); if (d < bestD) { bestD = d; best = c } }
-          out(i) = adc.fromPins(best) * lsb
+          if (best != codes(i)) { own(); out(i) = adc.fromPins(best) * lsb }
         }
-        if (censor && out(i) >= hi - 0.5 * lsb) { cen(i) = out(i) - 0.5 * lsb - p(i); out(i) = p(i) }
-        else if (censor && out(i) <= lo + 0.5 * lsb) { cen(i) = p(i) - (out(i) + 0.5 * lsb); out(i) = p(i) }
+        val v = out(i)
+        if (censor && (v >= hi - 0.5 * lsb || v <= lo + 0.5 * lsb)) {
+          if (cen == null) cen = Array.fill(n)(Double.NaN)
+          own(); cen(i) = if (v >= hi - 0.5 * lsb) v - 0.5 * lsb - p(i) else p(i) - (v + 0.5 * lsb); out(i) = p(i)
+        }
         i += 1
       }
       (out, cen)
@@ -273,18 +304,15 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
         }
         traj.addFit(d, w); evalTraj()
       }
-      if (it > 0) { val r = repair(spec, predS, predC); repS = r.s; repC = r.c; cens = r }
-      fundamentals(spec, s1, s2, c1, c2)
+      if (it > 0) { val r = repair(spec, predS, predC); repS = r.s; repC = r.c; cens = r } // the predictions are garbage after
+      setFundamentals()
       if (it == 0) uv()
       val tcols = spec.terms.map(t => t -> termCols(t))
       val cols = baseCols(s1, s2, c1, c2) ++ tcols.flatMap(_._2)
       sol = LinearFit.solve(cols, repS, repC)
       base = sol.beta.take(6)
       var at = 6; termIndex = tcols.map { case (t, c) => val k = t -> at; at += c.size; k }.toMap
-      predS = LinearFit.combine(cols, sol.beta, sinCh = true, n); predC = LinearFit.combine(cols, sol.beta, sinCh = false, n)
-      val tb = sol.beta.clone(); for (j <- 0 until 6) tb(j) = 0
-      termPredS = LinearFit.combine(cols, tb, sinCh = true, n); termPredC = LinearFit.combine(cols, tb, sinCh = false, n)
-      residual()
+      residual(cols)
       uv()
       predictionSlope(tcols)
       it += 1
@@ -315,7 +343,11 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
     while (k < maxIters && prev - bic > 0.5) { prev = bic; refit(2, refineTraj = true); k += 2 }
   }
 
-  def residual(): Unit = { var i = 0; while (i < n) { resS(i) = repS(i) - predS(i); resC(i) = repC(i) - predC(i); i += 1 } }
+  /** The residual of the fit `sol` over `cols`: the repaired data less the prediction. */
+  private def residual(cols: IndexedSeq[Col]): Unit = {
+    System.arraycopy(repS, 0, resS, 0, n); System.arraycopy(repC, 0, resC, 0, n)
+    LinearFit.addTo(resS, cols, sol.beta, sinCh = true, -1.0); LinearFit.addTo(resC, cols, sol.beta, sinCh = false, -1.0)
+  }
 
   /** d(prediction)/d(2 pi fringe phase) per channel: the fundamental's (v), plus the harmonics' when the phase follows a
     * reference (a free trajectory takes the difference up; a fixed map would be biased by it).
@@ -371,12 +403,20 @@ object Noise {
     (m, k)
   }
 
+  /** White noise on both channels, nothing censored, from the residual sums of squares of n samples each. */
+  def white(rssS: Double, rssC: Double, n: Int): Noise = {
+    val floor = 1e-30
+    val vs = math.max(floor, rssS / n); val vc = math.max(floor, rssC / n)
+    Noise(vs, vc, 0, n * (math.log(2 * math.Pi * vs) + 1) + n * (math.log(2 * math.Pi * vc) + 1))
+  }
+
   def fit(rs: Array[Double], rc: Array[Double], slope: (Array[Double], Array[Double]), cens: Repaired = null): Noise = {
     val n = rs.length
     def ss(a: Array[Double]) = { var s = 0.0; var i = 0; while (i < n) { s += a(i) * a(i); i += 1 }; s }
     val floor = 1e-30
     val cs = if (cens == null) null else cens.censS; val cc = if (cens == null) null else cens.censC
     def count(c: Array[Double]) = if (c == null) 0 else c.count(!_.isNaN)
+    if (slope == null && cs == null && cc == null) return white(ss(rs), ss(rc), n)
     if (slope == null) {
       val ns = math.max(1, n - count(cs)); val nc = math.max(1, n - count(cc))
       val vs = math.max(floor, ss(rs) / ns); val vc = math.max(floor, ss(rc) / nc)
