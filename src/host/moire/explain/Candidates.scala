@@ -130,6 +130,8 @@ final class Candidates(e: SignalEngine) {
 
   /** Full -2 ln L of a spec with modified fundamentals (current noise model), with the fitted default part. */
   def fullM2ll(sp: ModelSpec): Double = {
+    // white noise, nothing censored: the streaming profile on every sample is the same fit, without arrays
+    if (!sp.jitter && cens.censS == null && cens.censC == null) return profile(sp, 1)
     val a1 = new Array[Double](n); val a2 = new Array[Double](n); val b1 = new Array[Double](n); val b2 = new Array[Double](n)
     fundamentals(sp, a1, a2, b1, b2)
     val cols = baseCols(a1, a2, b1, b2)
@@ -195,11 +197,11 @@ final class Candidates(e: SignalEngine) {
     val idx = (0 until n by st).toArray
     def pick(a: Array[Double]) = if (a == null) null else idx.map(a(_))
     val ys = pick(resS); val yc = pick(resC); val base = baseCols(s1, s2, c1, c2).map(c => Col(pick(c.s), pick(c.c)))
-    val uS = pick(us); val uC = pick(uc)
+    val uS = idx.map(us(_)); val uC = idx.map(uc(_))
     // -2 ln L (white noise) of the warm-up at log10(tau), from the subsample (its columns built there), scaled to all samples
     def f(lt: Double): Double = {
       val tau = math.pow(10, lt)
-      val cols = base ++ warmupCols(idx.map(i => math.exp(-i / fs / tau)), uS, uC)
+      val cols = base ++ warmupCols(idx.map(i => math.exp(-i / fs / tau)), uS(_), uC(_))
       val sol = LinearFit.solve(cols, ys, yc)
       val rs = LinearFit.combine(cols, sol.beta, sinCh = true, ys.length); val rc = LinearFit.combine(cols, sol.beta, sinCh = false, ys.length)
       var rss = 0.0; var i = 0

@@ -9,11 +9,11 @@ package moire.explain
 object Identify {
   def why(e: SignalEngine, c: Cand): Option[String] = c.spec.terms.diff(e.spec.terms).headOption match {
     case Some(t @ (Term.Drift | Term.Warmup(_))) =>
-      val alts = (if (e.spec.terms.contains(Term.Contrast)) Nil else Seq("a contrast change along the travel" -> e.termCols(Term.Contrast))) :+
-        ("an amplitude change with speed" -> speedCols(e))
+      val alts = (if (e.spec.terms.contains(Term.Contrast)) Nil else Seq("a contrast change along the travel" -> (() => e.termCols(Term.Contrast)))) :+
+        ("an amplitude change with speed" -> (() => speedCols(e)))
       beyond(e, t, alts)
     case Some(Term.Contrast) if !e.spec.terms.exists(t => t == Term.Drift || t.isInstanceOf[Term.Warmup]) =>
-      beyond(e, Term.Contrast, Seq("a drift in time" -> e.termCols(Term.Drift)))
+      beyond(e, Term.Contrast, Seq("a drift in time" -> (() => e.termCols(Term.Drift))))
     case _ => None
   }
 
@@ -29,14 +29,20 @@ object Identify {
     val s = LinearFit.solve(cols, e.resS, e.resC)
     if (!s.ok) None
     else {
-      val rs = LinearFit.minus(e.resS, cols, s.beta, sinCh = true); val rc = LinearFit.minus(e.resC, cols, s.beta, sinCh = false)
-      Some(Noise.fit(rs, rc, null, e.cens).m2ll)
+      if (e.cens.censS == null && e.cens.censC == null)
+        Some(Noise.white(LinearFit.rss(cols, s.beta, e.resS, sinCh = true), LinearFit.rss(cols, s.beta, e.resC, sinCh = false), e.n).m2ll)
+      else {
+        val rs = LinearFit.minus(e.resS, cols, s.beta, sinCh = true); val rc = LinearFit.minus(e.resC, cols, s.beta, sinCh = false)
+        Some(Noise.fit(rs, rc, null, e.cens).m2ll)
+      }
     }
   }
 
-  private def beyond(e: SignalEngine, t: Term, alts: Seq[(String, IndexedSeq[Col])]): Option[String] = {
+  /** The alternatives' columns are made one at a time (a long record's columns are large). */
+  private def beyond(e: SignalEngine, t: Term, alts: Seq[(String, () => IndexedSeq[Col])]): Option[String] = {
     val base = e.baseCols(e.s1, e.s2, e.c1, e.c2); val own = e.termCols(t)
-    alts.iterator.flatMap { case (name, alt) =>
+    alts.iterator.flatMap { case (name, make) =>
+      val alt = make()
       // an alternative the record cannot fit at all (collinear with the default part) confounds nothing
       (m2ll(e, base ++ alt), m2ll(e, base ++ alt ++ own)) match {
         case (Some(a), Some(b)) =>

@@ -26,8 +26,16 @@ object LinearFit {
     val g = Array.ofDim[Double](k, k); val r = new Array[Double](k)
     for (i <- 0 until k) {
       r(i) = dot(cols(i).s, ys, idx) + dot(cols(i).c, yc, idx)
-      for (j <- 0 to i) { val v = dot(cols(i).s, cols(j).s, idx) + dot(cols(i).c, cols(j).c, idx); g(i)(j) = v; g(j)(i) = v }
+      for (j <- 0 to i) { val v = cross(cols(i), cols(j), idx); g(i)(j) = v; g(j)(i) = v }
     }
+    normal(g, r)
+  }
+
+  private[explain] def cross(a: Col, b: Col, idx: Array[Int]): Double = dot(a.s, b.s, idx) + dot(a.c, b.c, idx)
+
+  /** Solves the normal equations g beta = r with column scaling. */
+  private[explain] def normal(g: Array[Array[Double]], r: Array[Double]): LinSol = {
+    val k = r.length
     val sc = Array.tabulate(k)(i => if (g(i)(i) > 0) 1 / math.sqrt(g(i)(i)) else 0.0)
     val m = new Array2DRowRealMatrix(Array.tabulate(k, k)((i, j) => g(i)(j) * sc(i) * sc(j) + (if (i == j && sc(i) == 0) 1.0 else 0.0)))
     val lu = new LUDecomposition(m, 1e-14)
@@ -97,4 +105,44 @@ object LinearFit {
       k += 1
     }
   }
+}
+
+/** A design's columns in groups (the default part, then one group per term), made on demand. With `keep` each group
+  * is made once and held; without it a group is made again whenever it is needed, so that no more than two groups
+  * are in memory at once (a long record's terms would not fit together). Both give the same numbers.
+  */
+final class ColGroups(make: IndexedSeq[() => IndexedSeq[Col]], keep: Boolean, held0: IndexedSeq[Boolean] = IndexedSeq()) {
+  private val held = new Array[IndexedSeq[Col]](make.size)
+  private var at: Array[Int] = _
+  def size: Int = make.size
+  /** Group g's columns. The first group and those marked in `held0` are always held. */
+  def apply(g: Int): IndexedSeq[Col] =
+    if (held(g) != null) held(g) else { val c = make(g)(); if (keep || g == 0 || held0.lift(g).contains(true)) held(g) = c; c }
+  /** Where each group's coefficients start in the solution (known after `solve`). */
+  def offsets: IndexedSeq[Int] = at.toIndexedSeq
+
+  /** The least-squares fit over all groups' columns (the same numbers as `LinearFit.solve` on them all). */
+  def solve(ys: Array[Double], yc: Array[Double]): LinSol = {
+    val n = make.size
+    val blocks = Array.ofDim[Array[Array[Double]]](n, n); val rs = new Array[Array[Double]](n)
+    for (i <- 0 until n) {
+      val ci = apply(i)
+      rs(i) = ci.map(c => LinearFit.cross(c, Col(ys, yc), null)).toArray
+      for (j <- 0 to i) {
+        val cj = if (j == i) ci else apply(j)
+        blocks(i)(j) = Array.tabulate(ci.size, cj.size)((a, b) => LinearFit.cross(ci(a), cj(b), null))
+      }
+    }
+    at = rs.map(_.length).scanLeft(0)(_ + _)
+    val k = at(n)
+    val g = Array.ofDim[Double](k, k)
+    for (i <- 0 until n; j <- 0 to i; a <- rs(i).indices; b <- rs(j).indices) {
+      val v = blocks(i)(j)(a)(b); g(at(i) + a)(at(j) + b) = v; g(at(j) + b)(at(i) + a) = v
+    }
+    LinearFit.normal(g, rs.flatten)
+  }
+
+  /** out += sign * sum beta_i * column_i on one channel, a group at a time. */
+  def addTo(out: Array[Double], beta: Array[Double], sinCh: Boolean, sign: Double): Unit =
+    for (g <- 0 until make.size) LinearFit.addTo(out, apply(g), beta.slice(at(g), at(g + 1)), sinCh, sign)
 }

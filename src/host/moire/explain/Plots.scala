@@ -81,7 +81,7 @@ object Plots {
     var fLo = Double.MaxValue; var fHi = 0.0
     e.freq.foreach { f => fLo = math.min(fLo, math.abs(f)); fHi = math.max(fHi, math.abs(f)) }
     fHi += 1e-9
-    def phaseDev(s: Snapshot, u: Array[Double], v: Array[Double], res: Snapshot => Array[Double]) = {
+    def phaseDev(s: Snapshot, u: Int => Double, v: Int => Double, res: Snapshot => Array[Double]) = {
       // per speed bin: phase (degree) = sum r v / sum v^2 ; amplitude (%) = sum r u / sum u^2
       val bins = 24; val pv = new Array[Double](bins); val vv = new Array[Double](bins); val pu = new Array[Double](bins); val uu = new Array[Double](bins)
       val r = res(s); var j = 0
@@ -98,7 +98,7 @@ object Plots {
       case "channel_skew" | "bandwidth" | "crosstalk" =>
         val c = chart(title, "fringe frequency (kHz)", "phase (degree) / amplitude (%) left in the residual")
         for (s <- Seq(b, a)) {
-          val (x, ps, as) = phaseDev(s, e.us, e.vs, _.resS); val (_, pc, ac) = phaseDev(s, e.uc, e.vc, _.resC)
+          val (x, ps, as) = phaseDev(s, e.us(_), e.vs(_), _.resS); val (_, pc, ac) = phaseDev(s, e.uc(_), e.vc(_), _.resC)
           line(c, s"cos - sin phase (degree), ${s.label}", x, pc.zip(ps).map { case (p, q) => p - q })
           if (f.effect != "channel_skew") { line(c, s"sin amplitude (%), ${s.label}", x, as); line(c, s"cos amplitude (%), ${s.label}", x, ac) }
         }
@@ -120,7 +120,7 @@ object Plots {
         for (i <- 0 until n) { val v = xf(i); lo = math.min(lo, v); hi = math.max(hi, v) }
         hi += 1e-12
         val c = chart(title, xl, "amplitude left in the residual (%)")
-        for (s <- Seq(b, a); (r, u, ch) <- Seq((s.resS, e.us, "sin"), (s.resC, e.uc, "cos"))) {
+        for (s <- Seq(b, a); (r, u, ch) <- Seq[(Array[Double], Int => Double, String)]((s.resS, e.us(_), "sin"), (s.resC, e.uc(_), "cos"))) {
           val st = s.stride
           val (x, num) = binned(j => xf(j * st), j => r(j) * u(j * st), s.size, lo, hi, 48); val (_, den) = binned(j => xf(j * st), j => u(j * st) * u(j * st), s.size, lo, hi, 48)
           line(c, s"$ch, ${s.label}", x, num.zip(den).map { case (p, q) => 100 * p / q })

@@ -106,28 +106,32 @@ object Replicate {
     val nuisance = t match {
       case Term.Warmup(tau) =>
         val b = e.sol.beta.slice(at, at + tcols.size); val h = 0.05
-        val up = e.termCols(Term.Warmup(tau * (1 + h))); val dn = e.termCols(Term.Warmup(tau * (1 - h)))
-        def d(sinCh: Boolean) = {
-          val p = LinearFit.combine(up, b, sinCh, e.n); val q = LinearFit.combine(dn, b, sinCh, e.n)
-          Array.tabulate(e.n)(i => (p(i) - q(i)) / (2 * h))
+        val up = tau * (1 + h); val dn = tau * (1 - h)
+        // the warm-up's fitted shape at tau (1 + h) less at tau (1 - h), sample by sample (its columns w, w, u w, u w)
+        def d(sinCh: Boolean) = Array.tabulate(e.n) { i =>
+          val wu = math.exp(-i / e.fs / up); val wd = math.exp(-i / e.fs / dn)
+          val p = if (sinCh) b(0) * wu + b(2) * (e.us(i) * wu) else b(1) * wu + b(3) * (e.uc(i) * wu)
+          val q = if (sinCh) b(0) * wd + b(2) * (e.us(i) * wd) else b(1) * wd + b(3) * (e.uc(i) * wd)
+          (p - q) / (2 * h)
         }
         IndexedSeq(Col(d(true), d(false)))
       case _ => IndexedSeq.empty
     }
     val cols = e.baseCols(e.s1, e.s2, e.c1, e.c2) ++ tcols ++ nuisance
-    val (ts, tc) = target(e, t)
+    // fitted on the residual, the term's coefficients are its change: the target (residual plus the term) needs no arrays
+    val own = e.sol.beta.slice(at, at + tcols.size)
     // the term's size in the signal (rms over the record), in the units of each of its parameters
     val rms = tcols.map(c => math.sqrt(((if (c.s == null) 0.0 else e.sumSq(c.s)) + (if (c.c == null) 0.0 else e.sumSq(c.c))) / e.n))
     val size = math.sqrt(tcols.indices.map(j => math.pow(e.sol.beta(at + j) * rms(j), 2)).sum)
     val floor = rms.map(r => if (r > 0) ModelRel * size / r else 0.0).toArray
     fs.map { idx =>
-      val sol = LinearFit.solve(cols, ts, tc, idx)
+      val sol = LinearFit.solve(cols, e.resS, e.resC, idx)
       if (!sol.ok) None
       else {
         val m = idx.length
-        val v = LinearFit.rss(cols, sol.beta, ts, tc, idx) / math.max(1, 2 * m - cols.size)
+        val v = LinearFit.rss(cols, sol.beta, e.resS, e.resC, idx) / math.max(1, 2 * m - cols.size)
         val k = 6 + tcols.size
-        Some(Est(sol.beta.slice(6, k), Array.tabulate(k - 6, k - 6)((a, b) => sol.inv(a + 6)(b + 6) * v), floor))
+        Some(Est(Array.tabulate(tcols.size)(j => sol.beta(6 + j) + own(j)), Array.tabulate(k - 6, k - 6)((a, b) => sol.inv(a + 6)(b + 6) * v), floor))
       }
     }
   }

@@ -68,12 +68,13 @@ object SignalExplain {
     }
   }
 
-  def run(file: String, rec: Recording, model: Seq[EffectSpec], progress: Progress, maxFindings: Int = 8): Result = {
+  def run(file: String, rec: Recording, model: Seq[EffectSpec], progress: Progress, maxFindings: Int = 8,
+          holdBytes: Long = Runtime.getRuntime.maxMemory / 8): Result = {
     val t0 = System.nanoTime()
     val timing = sys.props.contains("moire.timing")
     var tl = t0
     def lap(what: String): Unit = if (timing) { val now = System.nanoTime(); System.err.println(f"$what ${(now - tl) / 1e6}%.0f ms"); tl = now }
-    val e = new SignalEngine(rec, Reference.of(rec).fold(m => throw new ExplainError(s"$file: $m"), identity))
+    val e = new SignalEngine(rec, Reference.of(rec).fold(m => throw new ExplainError(s"$file: $m"), identity), holdBytes)
     progress.phase("default fit", 4)
     e.init(); progress.step(4)
     val givenModel = specOf(model)
