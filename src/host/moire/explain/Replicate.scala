@@ -63,12 +63,12 @@ object Replicate {
     val at = e.termIndex(t); val b = e.sol.beta
     val floorA = ModelRel * 0.5 * (math.hypot(b(at), b(at + 1)) + math.hypot(b(at + 2), b(at + 3)))
     val ests = halves.map { idx =>
-      val m = idx.length; val st = math.max(1, m / 50000)
+      val m = idx.length; val pts = Candidates.spread(m, math.max(1, m / 50000))
       def power(hz: Double): Double = {
         var a = 0.0; var b = 0.0; var c = 0.0; var d = 0.0; var k = 0
-        while (k < m) {
-          val i = idx(k); val x = 2 * math.Pi * hz * i / e.fs; val sx = math.sin(x); val cx = math.cos(x)
-          a += ys(i) * sx; b += ys(i) * cx; c += yc(i) * sx; d += yc(i) * cx; k += st
+        while (k < pts.length) {
+          val i = idx(pts(k)); val x = 2 * math.Pi * hz * i / e.fs; val sx = math.sin(x); val cx = math.cos(x)
+          a += ys(i) * sx; b += ys(i) * cx; c += yc(i) * sx; d += yc(i) * cx; k += 1
         }
         -(a * a + b * b + c * c + d * d)
       }
