@@ -95,6 +95,16 @@ class ConcealedEffectSpec extends AnyFlatSpec with Matchers {
     assert(within(f.params("sin_from_cos_tau_s"), 2e-9), f.params)
   }
 
+  it should "find a line at a multiple of the sample rate over its search stride (no aliasing to DC), on both halves" in {
+    // 400,000 samples at 10 MS/s: the line search takes one sample in 8 (the halves one in 4), and 1.25 MHz is fs / 8
+    val r = explain(sim(Seq(EffectSpec("interference", Map("frequency_hz" -> 1.25e6, "amplitude_fs" -> 2 * lsb12))), n = 400000,
+      motion = Motion.Ramp(20e3, 200e3, 0.04)))
+    withClue(describe(r) + " / " + r.unexplained.map(_.summary).mkString("; ")) {
+      val f = first(r, "interference")
+      f.params("frequency_hz") shouldBe (1.25e6 +- 1.0)
+    }
+  }
+
   it should "find interference below the noise" in {
     val f = first(explain(sim(Seq(EffectSpec("interference", Map("frequency_hz" -> 12345.0, "amplitude_fs" -> 0.6 * lsb12))))), "interference")
     f.params("frequency_hz") shouldBe 12345.0 +- 50

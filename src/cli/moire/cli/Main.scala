@@ -298,7 +298,8 @@ object Main {
       case e: java.io.IOException => System.err.println(s"moire: ${moire.files.SafeWrite.reason(e)}"); 2
       case e: IllegalArgumentException =>
         System.err.println(s"moire: ${plain(Option(e.getMessage).getOrElse("invalid value").stripPrefix("requirement failed: "))}"); 2
-      case _: OutOfMemoryError =>
+      case e: OutOfMemoryError =>
+        if (sys.env.contains("MOIRE_DEBUG")) e.printStackTrace()
         System.err.println("moire: out of memory; give the JVM more (e.g. JAVA_OPTS=-Xmx8g) or a shorter recording"); 2
       case e: Exception =>
         if (sys.env.contains("MOIRE_DEBUG")) e.printStackTrace()

@@ -9,10 +9,12 @@ final case class Cand(effect: String, channel: String, spec: ModelSpec, m2ll: Do
 final class Candidates(e: SignalEngine) {
   import e._
 
-  private val absF: Array[Double] = { val a = freq.map(math.abs); java.util.Arrays.sort(a); a }
-  private def pct(q: Double) = absF(math.min(n - 1, (q * n).toInt))
-  val fMax: Double = pct(0.98)
-  val fMin: Double = pct(0.02)
+  /** The 2 % and 98 % points of the fringe frequency's magnitude. */
+  val (fMin: Double, fMax: Double) = {
+    val a = freq.map(math.abs); java.util.Arrays.sort(a)
+    def pct(q: Double) = a(math.min(n - 1, (q * n).toInt))
+    (pct(0.02), pct(0.98))
+  }
 
   /** Linear term fitted with the default part on the current residual. */
   def linear(t: Term): Option[(Cand, LinSol)] = {
@@ -20,9 +22,15 @@ final class Candidates(e: SignalEngine) {
     val cols = baseCols(s1, s2, c1, c2) ++ termCols(t)
     val s = LinearFit.solve(cols, resS, resC)
     if (!s.ok) return None
-    val rs = sub(resS, LinearFit.combine(cols, s.beta, sinCh = true, n)); val rc = sub(resC, LinearFit.combine(cols, s.beta, sinCh = false, n))
-    val nz = Noise.fit(rs, rc, if (spec.jitter) slopes() else null, cens)
-    val v = (sumSq(rs) + sumSq(rc)) / (2.0 * n)
+    // without jitter or censoring only the sums of squares matter: no residual arrays
+    val (nz, v) =
+      if (!spec.jitter && cens.censS == null && cens.censC == null) {
+        val a = LinearFit.rss(cols, s.beta, resS, sinCh = true); val b = LinearFit.rss(cols, s.beta, resC, sinCh = false)
+        (Noise.white(a, b, n), (a + b) / (2.0 * n))
+      } else {
+        val rs = LinearFit.minus(resS, cols, s.beta, sinCh = true); val rc = LinearFit.minus(resC, cols, s.beta, sinCh = false)
+        (Noise.fit(rs, rc, if (spec.jitter) slopes() else null, cens), (sumSq(rs) + sumSq(rc)) / (2.0 * n))
+      }
     val b = s.beta.drop(6); val sd = (6 until s.beta.length).map(i => math.sqrt(math.max(0, s.inv(i)(i)) * v)).toArray
     val (p, u, where, ch) = Describe.term(t, b, sd, e)
     Some((Cand(t.name, ch, spec.copy(terms = spec.terms :+ t), nz.m2ll, t.params, p, u, where), s))
@@ -83,8 +91,9 @@ final class Candidates(e: SignalEngine) {
       if (!fcC.isInfinite) { val u = f / fcC; gc /= math.sqrt(1 + u * u); lagC = math.atan(u) }
       val m = 0.5 * (lagS + lagC); ls += m - lagS; lc += m - lagC
       val cls = math.cos(ls); val sls = math.sin(ls); val clc = math.cos(lc); val slc = math.sin(lc)
-      acc(ms, gs * (sn(i) * cls + cs(i) * sls), gs * (cs(i) * cls - sn(i) * sls), repS(i) - termPredS(i))
-      acc(mc, gc * (sn(i) * clc + cs(i) * slc), gc * (cs(i) * clc - sn(i) * slc), repC(i) - termPredC(i))
+      val a = angle(i); val sn = math.sin(a); val cs = math.cos(a)
+      acc(ms, gs * (sn * cls + cs * sls), gs * (cs * cls - sn * sls), repS(i) - termS(i))
+      acc(mc, gc * (sn * clc + cs * slc), gc * (cs * clc - sn * slc), repC(i) - termC(i))
       cnt += 1; k += stride
     }
     def rss(m: Array[Double]): Double = {
@@ -121,13 +130,15 @@ final class Candidates(e: SignalEngine) {
 
   /** Full -2 ln L of a spec with modified fundamentals (current noise model), with the fitted default part. */
   def fullM2ll(sp: ModelSpec): Double = {
+    // white noise, nothing censored: the streaming profile on every sample is the same fit, without arrays
+    if (!sp.jitter && cens.censS == null && cens.censC == null) return profile(sp, 1)
     val a1 = new Array[Double](n); val a2 = new Array[Double](n); val b1 = new Array[Double](n); val b2 = new Array[Double](n)
     fundamentals(sp, a1, a2, b1, b2)
     val cols = baseCols(a1, a2, b1, b2)
-    val ts = sub(repS, termPredS); val tcc = sub(repC, termPredC)
+    val ts = Array.tabulate(n)(i => repS(i) - termS(i)); val tcc = Array.tabulate(n)(i => repC(i) - termC(i))
     val s = LinearFit.solve(cols, ts, tcc)
-    val rs = sub(ts, LinearFit.combine(cols, s.beta, sinCh = true, n)); val rc = sub(tcc, LinearFit.combine(cols, s.beta, sinCh = false, n))
-    Noise.fit(rs, rc, if (sp.jitter) slopes() else null, cens).m2ll
+    LinearFit.addTo(ts, cols, s.beta, sinCh = true, -1.0); LinearFit.addTo(tcc, cols, s.beta, sinCh = false, -1.0) // now the residual
+    Noise.fit(ts, tcc, if (sp.jitter) slopes() else null, cens).m2ll
   }
 
   private def stride: Int = math.max(1, n / 50000)
@@ -135,8 +146,7 @@ final class Candidates(e: SignalEngine) {
   /** Skew between the channels: needs several speeds, else it is a phase error. */
   def skew(): Option[Cand] = {
     if (spec.hasSkew) return None
-    val w = Array.tabulate(n)(i => 2 * math.Pi * freq(i))
-    val cols = baseCols(s1, s2, c1, c2) :+ Col(Array.tabulate(n)(i => -0.5 * vs(i) * w(i)), Array.tabulate(n)(i => 0.5 * vc(i) * w(i)))
+    val cols = baseCols(s1, s2, c1, c2) :+ Col(Array.tabulate(n)(i => -math.Pi * freq(i) * vs(i)), Array.tabulate(n)(i => math.Pi * freq(i) * vc(i)))
     val s = LinearFit.solve(cols, resS, resC)
     if (!s.ok) return None
     val sd0 = math.sqrt(s.inv(6)(6) * (sumSq(resS) + sumSq(resC)) / (2.0 * n))
@@ -187,11 +197,11 @@ final class Candidates(e: SignalEngine) {
     val idx = (0 until n by st).toArray
     def pick(a: Array[Double]) = if (a == null) null else idx.map(a(_))
     val ys = pick(resS); val yc = pick(resC); val base = baseCols(s1, s2, c1, c2).map(c => Col(pick(c.s), pick(c.c)))
-    val uS = pick(us); val uC = pick(uc)
+    val uS = idx.map(us(_)); val uC = idx.map(uc(_))
     // -2 ln L (white noise) of the warm-up at log10(tau), from the subsample (its columns built there), scaled to all samples
     def f(lt: Double): Double = {
       val tau = math.pow(10, lt)
-      val cols = base ++ warmupCols(idx.map(i => math.exp(-i / fs / tau)), uS, uC)
+      val cols = base ++ warmupCols(idx.map(i => math.exp(-i / fs / tau)), uS(_), uC(_))
       val sol = LinearFit.solve(cols, ys, yc)
       val rs = LinearFit.combine(cols, sol.beta, sinCh = true, ys.length); val rc = LinearFit.combine(cols, sol.beta, sinCh = false, ys.length)
       var rss = 0.0; var i = 0
@@ -214,10 +224,13 @@ final class Candidates(e: SignalEngine) {
     val k0 = (4 until m / 2).maxBy(ps(_))
     val bin = fs / m
     if (spec.terms.exists { case Term.Interference(h) => math.abs(h - k0 * bin) < 3 * bin; case _ => false }) return None
+    val at = Candidates.spread(n, stride)
     def power(hz: Double): Double = {
-      var a = 0.0; var b = 0.0; var c = 0.0; var d = 0.0; var i = 0
-      val st = stride
-      while (i < n) { val x = 2 * math.Pi * hz * i / fs; val sx = math.sin(x); val cx = math.cos(x); a += resS(i) * sx; b += resS(i) * cx; c += resC(i) * sx; d += resC(i) * cx; i += st }
+      var a = 0.0; var b = 0.0; var c = 0.0; var d = 0.0; var k = 0
+      while (k < at.length) {
+        val i = at(k); val x = 2 * math.Pi * hz * i / fs; val sx = math.sin(x); val cx = math.cos(x)
+        a += resS(i) * sx; b += resS(i) * cx; c += resC(i) * sx; d += resC(i) * cx; k += 1
+      }
       -(a * a + b * b + c * c + d * d)
     }
     val hz = minimize(power, (k0 - 1) * bin, (k0 + 1) * bin, grid = 8, golden = 16)
@@ -227,7 +240,8 @@ final class Candidates(e: SignalEngine) {
   def faults(): Seq[Cand] = {
     val adc = rec.adc
     val out = Seq.newBuilder[Cand]
-    for ((codes, p, ch) <- Seq((rec.sin, predS, 0), (rec.cos, predC, 1))) {
+    for ((codes, ch) <- Seq((rec.sin, 0), (rec.cos, 1))) {
+      val p = if (ch == 0) predS else predC
       val pc = new Array[Int](n); var i = 0
       while (i < n) { pc(i) = adc.pins(adc.signedCode(p(i)).code); i += 1 }
       val need = math.max(20, n / 1000)
@@ -255,8 +269,9 @@ final class Candidates(e: SignalEngine) {
   private def faultCand(f: Fault): Option[Cand] = {
     if (spec.faults.exists(g => g.ch == f.ch && g.bit == f.bit)) return None
     val sp = spec.copy(faults = spec.faults :+ f)
-    val r = repair(sp, predS, predC)
-    val nz = Noise.fit(sub(r.s, predS), sub(r.c, predC), if (spec.jitter) slopes() else null, r)
+    val (ps, pc) = (predS, predC)
+    val r = repair(sp, ps, pc)
+    val nz = Noise.fit(sub(r.s, ps), sub(r.c, pc), if (spec.jitter) slopes() else null, r)
     val (p, u, where) = Describe.fault(f, rec.adc)
     Some(Cand("adc_bit_fault", if (f.ch == 0) "sin" else "cos", sp, nz.m2ll, 1, p, u, where))
   }
@@ -264,8 +279,9 @@ final class Candidates(e: SignalEngine) {
   /** Saturation below the ADC rails: a pile-up of samples at one extreme code the model exceeds. */
   def clips(): Seq[Cand] = {
     val out = Seq.newBuilder[Cand]
-    val raw = repair(spec, predS, predC, censor = false)
-    for ((y, p, ch) <- Seq((raw.s, predS, 0), (raw.c, predC, 1)) if !spec.clips.exists(_.ch == ch)) {
+    val (ps, pc) = (predS, predC)
+    val raw = repair(spec, ps, pc, censor = false)
+    for ((y, p, ch) <- Seq((raw.s, ps, 0), (raw.c, pc, 1)) if !spec.clips.exists(_.ch == ch)) {
       val hi = y.max; val lo = y.min
       val atHi = y.count(_ >= hi - 0.5 * lsb); val atLo = y.count(_ <= lo + 0.5 * lsb)
       val need = math.max(20, n / 2000)
@@ -275,12 +291,21 @@ final class Candidates(e: SignalEngine) {
       if (useHi || useLo) {
         val c = Clip(ch, if (useLo) lo else Double.NegativeInfinity, if (useHi) hi else Double.PositiveInfinity)
         val sp = spec.copy(clips = spec.clips :+ c)
-        val r = repair(sp, predS, predC)
-        val nz = Noise.fit(sub(r.s, predS), sub(r.c, predC), if (spec.jitter) slopes() else null, r)
+        val r = repair(sp, ps, pc)
+        val nz = Noise.fit(sub(r.s, ps), sub(r.c, pc), if (spec.jitter) slopes() else null, r)
         val (pp, u, where) = Describe.clip(c, lsb)
         out += Cand("clipping", if (ch == 0) "sin" else "cos", sp, nz.m2ll, c.params, pp, u, where)
       }
     }
     out.result()
   }
+}
+
+object Candidates {
+  /** About n / st sample indices, one at a random place in each block of st; all of them when st is 1. A regular
+    * stride would alias a line at a multiple of fs / st to DC (50 kHz at 10 MS/s with a stride of 400: 20,000,000 rows).
+    */
+  def spread(n: Int, st: Int): Array[Int] =
+    if (st <= 1) Array.range(0, n)
+    else { val r = new scala.util.Random(n.toLong * 31 + st); Array.tabulate(n / st)(q => q * st + r.nextInt(st)) }
 }

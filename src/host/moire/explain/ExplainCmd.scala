@@ -173,13 +173,14 @@ object ExplainCmd {
     }.getOrElse(benchRecording(samples, dir / "bench.csv"))
     val mb = os.size(file) / 1048576.0
     val maxMb = Runtime.getRuntime.maxMemory / 1048576.0
-    val (n, readS, readPeak) = peakHeap { val r = Recording.read(file); checkSignals(file, r); r.length }
+    // the recording is returned, so that the collection at the end counts it
+    val (n, readS, readPeak) = { val (r, s, p) = peakHeap { val r = Recording.read(file); checkSignals(file, r); r }; (r.length, s, p) }
     def perM(peak: Double) = peak / (n / 1e6)
-    say(f"explain-bench: read and checked $n rows ($mb%.0f MB file) in $readS%.1f s; peak heap $readPeak%.0f MB of $maxMb%.0f MB " +
+    say(f"explain-bench: read and checked $n rows ($mb%.0f MB file) in $readS%.1f s; peak heap in use $readPeak%.0f MB of $maxMb%.0f MB " +
       f"(${perM(readPeak)}%.1f MB per million samples)")
     val (rep, s, peak) = peakHeap(explain(Seq(file.toString), Some((dir / "json").toString), Some((dir / "plots").toString), None, quiet = false).head)
     say(f"explain-bench: $n samples explained in $s%.1f s (read, fit, JSON, plots) = ${n / s}%.0f samples/s; " +
-      f"peak heap $peak%.0f MB of $maxMb%.0f MB (${perM(peak)}%.1f MB per million samples); ${Runtime.getRuntime.availableProcessors} cores; " +
+      f"peak heap in use $peak%.0f MB of $maxMb%.0f MB (${perM(peak)}%.1f MB per million samples); ${Runtime.getRuntime.availableProcessors} cores; " +
       s"findings: ${rep.findings.map(_.effect).mkString(", ")}")
   }
 
@@ -195,16 +196,33 @@ object ExplainCmd {
     file
   }
 
-  /** The result of `body`, its seconds and the peak heap (MB, the sum of the heap pools' peaks, an upper
-    * bound) while it ran, counted from a collected heap.
+  /** The result of `body`, its seconds and its peak heap in MB: the most the heap held after any garbage collection
+    * while it ran, or at its end (with its result alive). That is the memory it needs; the heap before a collection
+    * also holds garbage, and the heap pools' separate peaks do not happen at one time.
     */
   def peakHeap[T](body: => T): (T, Double, Double) = {
-    val pools = java.lang.management.ManagementFactory.getMemoryPoolMXBeans.asScala.filter(_.getType == java.lang.management.MemoryType.HEAP)
+    import java.lang.management.{ManagementFactory, MemoryType}
+    import com.sun.management.GarbageCollectionNotificationInfo
+    val heap = ManagementFactory.getMemoryPoolMXBeans.asScala.filter(_.getType == MemoryType.HEAP).map(_.getName).toSet
+    val peak = new java.util.concurrent.atomic.AtomicLong(0)
+    val listener = new javax.management.NotificationListener {
+      def handleNotification(n: javax.management.Notification, handback: Any): Unit =
+        if (n.getType == GarbageCollectionNotificationInfo.GARBAGE_COLLECTION_NOTIFICATION) {
+          val info = GarbageCollectionNotificationInfo.from(n.getUserData.asInstanceOf[javax.management.openmbean.CompositeData])
+          val used = info.getGcInfo.getMemoryUsageAfterGc.asScala.collect { case (pool, u) if heap(pool) => u.getUsed }.sum
+          peak.accumulateAndGet(used, (a: Long, b: Long) => math.max(a, b))
+        }
+    }
+    val emitters = ManagementFactory.getGarbageCollectorMXBeans.asScala.collect { case e: javax.management.NotificationEmitter => e }
     System.gc()
-    pools.foreach(_.resetPeakUsage())
+    emitters.foreach(_.addNotificationListener(listener, null, null))
     val t0 = System.nanoTime()
     val r = body
     val s = (System.nanoTime() - t0) / 1e9
-    (r, s, pools.map(_.getPeakUsage.getUsed).sum / 1048576.0)
+    System.gc()
+    val rt = Runtime.getRuntime
+    peak.accumulateAndGet(rt.totalMemory - rt.freeMemory, (a: Long, b: Long) => math.max(a, b))
+    emitters.foreach(e => try e.removeNotificationListener(listener) catch { case _: javax.management.ListenerNotFoundException => () })
+    (r, s, peak.get / 1048576.0)
   }
 }

@@ -9,11 +9,11 @@ package moire.explain
 object Identify {
   def why(e: SignalEngine, c: Cand): Option[String] = c.spec.terms.diff(e.spec.terms).headOption match {
     case Some(t @ (Term.Drift | Term.Warmup(_))) =>
-      val alts = (if (e.spec.terms.contains(Term.Contrast)) Nil else Seq("a contrast change along the travel" -> e.termCols(Term.Contrast))) :+
-        ("an amplitude change with speed" -> speedCols(e))
+      val alts = (if (e.spec.terms.contains(Term.Contrast)) Nil else Seq("a contrast change along the travel" -> (() => e.termCols(Term.Contrast)))) :+
+        ("an amplitude change with speed" -> (() => speedCols(e)))
       beyond(e, t, alts)
     case Some(Term.Contrast) if !e.spec.terms.exists(t => t == Term.Drift || t.isInstanceOf[Term.Warmup]) =>
-      beyond(e, Term.Contrast, Seq("a drift in time" -> e.termCols(Term.Drift)))
+      beyond(e, Term.Contrast, Seq("a drift in time" -> (() => e.termCols(Term.Drift))))
     case _ => None
   }
 
@@ -21,7 +21,7 @@ object Identify {
   private def speedCols(e: SignalEngine): IndexedSeq[Col] = {
     var m = 0.0; var i = 0
     while (i < e.n) { m = math.max(m, math.abs(e.freq(i))); i += 1 }
-    val u = Array.tabulate(e.n)(i => if (m > 0) (e.freq(i) / m) * (e.freq(i) / m) else 0.0)
+    def u(i: Int) = if (m > 0) (e.freq(i) / m) * (e.freq(i) / m) else 0.0
     IndexedSeq(Col(Array.tabulate(e.n)(i => e.us(i) * u(i)), null), Col(null, Array.tabulate(e.n)(i => e.uc(i) * u(i))))
   }
 
@@ -29,15 +29,20 @@ object Identify {
     val s = LinearFit.solve(cols, e.resS, e.resC)
     if (!s.ok) None
     else {
-      val ps = LinearFit.combine(cols, s.beta, sinCh = true, e.n); val pc = LinearFit.combine(cols, s.beta, sinCh = false, e.n)
-      val rs = Array.tabulate(e.n)(i => e.resS(i) - ps(i)); val rc = Array.tabulate(e.n)(i => e.resC(i) - pc(i))
-      Some(Noise.fit(rs, rc, null, e.cens).m2ll)
+      if (e.cens.censS == null && e.cens.censC == null)
+        Some(Noise.white(LinearFit.rss(cols, s.beta, e.resS, sinCh = true), LinearFit.rss(cols, s.beta, e.resC, sinCh = false), e.n).m2ll)
+      else {
+        val rs = LinearFit.minus(e.resS, cols, s.beta, sinCh = true); val rc = LinearFit.minus(e.resC, cols, s.beta, sinCh = false)
+        Some(Noise.fit(rs, rc, null, e.cens).m2ll)
+      }
     }
   }
 
-  private def beyond(e: SignalEngine, t: Term, alts: Seq[(String, IndexedSeq[Col])]): Option[String] = {
+  /** The alternatives' columns are made one at a time (a long record's columns are large). */
+  private def beyond(e: SignalEngine, t: Term, alts: Seq[(String, () => IndexedSeq[Col])]): Option[String] = {
     val base = e.baseCols(e.s1, e.s2, e.c1, e.c2); val own = e.termCols(t)
-    alts.iterator.flatMap { case (name, alt) =>
+    alts.iterator.flatMap { case (name, make) =>
+      val alt = make()
       // an alternative the record cannot fit at all (collinear with the default part) confounds nothing
       (m2ll(e, base ++ alt), m2ll(e, base ++ alt ++ own)) match {
         case (Some(a), Some(b)) =>

@@ -48,7 +48,7 @@ object Locate {
     val edges = (1 until sb).map(k => sorted(k * n / sb))
     def sbin(i: Int) = { val f = math.abs(e.freq(i)); var b = 0; while (b < edges.size && f > edges(b)) b += 1; b }
     if (sorted(n - 1) - sorted(0) > 0.05 * sorted(n - 1)) {
-      for ((r, sd, u, v, ch) <- Seq((rs, sdS, e.us, e.vs, "sin"), (rc, sdC, e.uc, e.vc, "cos"))) {
+      for ((r, sd, u, v, ch) <- Seq[(Array[Double], Double, Int => Double, Int => Double, String)]((rs, sdS, e.us(_), e.vs(_), "sin"), (rc, sdC, e.uc(_), e.vc(_), "cos"))) {
         val pu = new Array[Double](sb); val pv = new Array[Double](sb); val uu = new Array[Double](sb); val vv = new Array[Double](sb)
         var i = 0
         while (i < n) { val b = sbin(i); pu(b) += r(i) * u(i); uu(b) += u(i) * u(i); pv(b) += r(i) * v(i); vv(b) += v(i) * v(i); i += 1 }

@@ -37,21 +37,24 @@ object Plots {
       Array.tabulate(bins)(b => if (c(b) == 0) Double.NaN else if (rms) math.sqrt(s(b) / c(b)) else s(b) / c(b)))
   }
 
+  /** Sample i's fringe phase in degrees (0 to 360). */
+  private def fringeDeg(e: SignalEngine, i: Int): Double = 360 * (e.phase(i) - math.floor(e.phase(i)))
+
   def signals(r: SignalExplain.Result, dir: os.Path, stem: String): Seq[os.Path] = {
     val e = r.engine; val n = e.n; val lsb = e.lsb
-    val after = Snapshot("final model", e.resS.clone(), e.resC.clone())
+    val after = Snapshot.of("final model", e.resS, e.resC)
     val snaps = Seq(r.before, after)
     val out = Seq.newBuilder[os.Path]
     // time
     val ct = chart(s"$stem: residual rms against time", "time (s)", "residual rms (LSB)")
     for (s <- snaps; (res, ch) <- Seq((s.resS, "sin"), (s.resC, "cos"))) {
-      val (x, y) = binned(i => i / e.fs, i => res(i) / lsb, n, 0, n / e.fs, 64, rms = true); line(ct, s"$ch, ${s.label}", x, y)
+      val (x, y) = binned(j => j * s.stride / e.fs, j => res(j) / lsb, s.size, 0, n / e.fs, 64, rms = true); line(ct, s"$ch, ${s.label}", x, y)
     }
     out += save(ct, dir / s"${stem}_residual_time.png")
     // fringe phase
     val cp = chart(s"$stem: mean residual against fringe phase", "fringe phase (degree)", "mean residual (LSB)")
     for (s <- snaps; (res, ch) <- Seq((s.resS, "sin"), (s.resC, "cos"))) {
-      val (x, y) = binned(i => 360 * (e.phase(i) - math.floor(e.phase(i))), i => res(i) / lsb, n, 0, 360, 72); line(cp, s"$ch, ${s.label}", x, y)
+      val (x, y) = binned(j => fringeDeg(e, j * s.stride), j => res(j) / lsb, s.size, 0, 360, 72); line(cp, s"$ch, ${s.label}", x, y)
     }
     out += save(cp, dir / s"${stem}_residual_phase.png")
     // spectrum
@@ -64,7 +67,7 @@ object Plots {
   def spectrum(title: String, snaps: Seq[Snapshot], e: SignalEngine, path: os.Path): os.Path = {
     val m = Integer.highestOneBit(math.min(e.n, 1 << 18)); val c = chart(title, "frequency (kHz)", "amplitude (dB LSB)")
     for (s <- snaps) {
-      val p = Fft.power(s.resS, m); val q = Fft.power(s.resC, m)
+      val p = Fft.power(s.headSin, m); val q = Fft.power(s.headCos, m)
       val g = math.max(1, p.length / 1500)
       val xs = (0 until p.length / g).map(k => (k * g + g / 2) * e.fs / m / 1e3).toArray
       val ys = (0 until p.length / g).map { k => val mx = (k * g until (k + 1) * g).map(j => p(j) + q(j)).max; 10 * math.log10(2 * mx / m.toDouble / m / (e.lsb * e.lsb) + 1e-30) }.toArray
@@ -75,12 +78,17 @@ object Plots {
 
   private def effect(f: Finding, b: Snapshot, a: Snapshot, e: SignalEngine, path: os.Path, stem: String): os.Path = {
     val n = e.n; val lsb = e.lsb; val fAbs = (i: Int) => math.abs(e.freq(i))
-    val fLo = e.freq.map(math.abs).min; val fHi = e.freq.map(math.abs).max + 1e-9
-    def phaseDev(s: Snapshot, u: Array[Double], v: Array[Double], res: Snapshot => Array[Double]) = {
+    var fLo = Double.MaxValue; var fHi = 0.0
+    e.freq.foreach { f => fLo = math.min(fLo, math.abs(f)); fHi = math.max(fHi, math.abs(f)) }
+    fHi += 1e-9
+    def phaseDev(s: Snapshot, u: Int => Double, v: Int => Double, res: Snapshot => Array[Double]) = {
       // per speed bin: phase (degree) = sum r v / sum v^2 ; amplitude (%) = sum r u / sum u^2
       val bins = 24; val pv = new Array[Double](bins); val vv = new Array[Double](bins); val pu = new Array[Double](bins); val uu = new Array[Double](bins)
-      val r = res(s); var i = 0
-      while (i < n) { val k = math.min(bins - 1, ((fAbs(i) - fLo) / (fHi - fLo) * bins).toInt); pv(k) += r(i) * v(i); vv(k) += v(i) * v(i); pu(k) += r(i) * u(i); uu(k) += u(i) * u(i); i += 1 }
+      val r = res(s); var j = 0
+      while (j < s.size) {
+        val i = j * s.stride; val k = math.min(bins - 1, ((fAbs(i) - fLo) / (fHi - fLo) * bins).toInt)
+        pv(k) += r(j) * v(i); vv(k) += v(i) * v(i); pu(k) += r(j) * u(i); uu(k) += u(i) * u(i); j += 1
+      }
       (Array.tabulate(bins)(k => (fLo + (k + 0.5) * (fHi - fLo) / bins) / 1e3),
         Array.tabulate(bins)(k => if (vv(k) > 0) math.toDegrees(pv(k) / vv(k)) else Double.NaN),
         Array.tabulate(bins)(k => if (uu(k) > 0) 100 * pu(k) / uu(k) else Double.NaN))
@@ -90,7 +98,7 @@ object Plots {
       case "channel_skew" | "bandwidth" | "crosstalk" =>
         val c = chart(title, "fringe frequency (kHz)", "phase (degree) / amplitude (%) left in the residual")
         for (s <- Seq(b, a)) {
-          val (x, ps, as) = phaseDev(s, e.us, e.vs, _.resS); val (_, pc, ac) = phaseDev(s, e.uc, e.vc, _.resC)
+          val (x, ps, as) = phaseDev(s, e.us(_), e.vs(_), _.resS); val (_, pc, ac) = phaseDev(s, e.uc(_), e.vc(_), _.resC)
           line(c, s"cos - sin phase (degree), ${s.label}", x, pc.zip(ps).map { case (p, q) => p - q })
           if (f.effect != "channel_skew") { line(c, s"sin amplitude (%), ${s.label}", x, as); line(c, s"cos amplitude (%), ${s.label}", x, ac) }
         }
@@ -99,19 +107,22 @@ object Plots {
         val c = chart(title, "|signal slope| (full scale per microsecond)", "residual rms (LSB)")
         val (ds, dc) = e.slopes(); val hi = (ds.map(math.abs).max max dc.map(math.abs).max) * 1e-6 + 1e-12
         for (s <- Seq(b, a)) {
-          val (x, y) = binned(i => math.abs(ds(i)) * 1e-6, i => s.resS(i) / lsb, n, 0, hi, 24, rms = true); line(c, s"sin, ${s.label}", x, y)
-          val (x2, y2) = binned(i => math.abs(dc(i)) * 1e-6, i => s.resC(i) / lsb, n, 0, hi, 24, rms = true); line(c, s"cos, ${s.label}", x2, y2)
+          val (x, y) = binned(j => math.abs(ds(j * s.stride)) * 1e-6, j => s.resS(j) / lsb, s.size, 0, hi, 24, rms = true); line(c, s"sin, ${s.label}", x, y)
+          val (x2, y2) = binned(j => math.abs(dc(j * s.stride)) * 1e-6, j => s.resC(j) / lsb, s.size, 0, hi, 24, rms = true); line(c, s"cos, ${s.label}", x2, y2)
         }
         save(c, path)
       case "drift" | "warmup" | "contrast_along_travel" =>
         // the amplitude left in the residual (sum r u / sum u^2 per bin), against time or the position along the travel
         val (xf, xl): (Int => Double, String) =
-          if (f.effect == "contrast_along_travel") { val x = e.phase.clone(); (i => x(i) - x(0), "position from the start (fringe periods)") }
+          if (f.effect == "contrast_along_travel") (i => e.phase(i) - e.phase(0), "position from the start (fringe periods)")
           else (i => i / e.fs, "time (s)")
-        val xs = Array.tabulate(n)(xf); val lo = xs.min; val hi = xs.max + 1e-12
+        var lo = Double.MaxValue; var hi = -Double.MaxValue
+        for (i <- 0 until n) { val v = xf(i); lo = math.min(lo, v); hi = math.max(hi, v) }
+        hi += 1e-12
         val c = chart(title, xl, "amplitude left in the residual (%)")
-        for (s <- Seq(b, a); (r, u, ch) <- Seq((s.resS, e.us, "sin"), (s.resC, e.uc, "cos"))) {
-          val (x, num) = binned(xs(_), i => r(i) * u(i), n, lo, hi, 48); val (_, den) = binned(xs(_), i => u(i) * u(i), n, lo, hi, 48)
+        for (s <- Seq(b, a); (r, u, ch) <- Seq[(Array[Double], Int => Double, String)]((s.resS, e.us(_), "sin"), (s.resC, e.uc(_), "cos"))) {
+          val st = s.stride
+          val (x, num) = binned(j => xf(j * st), j => r(j) * u(j * st), s.size, lo, hi, 48); val (_, den) = binned(j => xf(j * st), j => u(j * st) * u(j * st), s.size, lo, hi, 48)
           line(c, s"$ch, ${s.label}", x, num.zip(den).map { case (p, q) => 100 * p / q })
         }
         save(c, path)
@@ -119,23 +130,26 @@ object Plots {
         val l = e.rec.linesPerRev.getOrElse(1.0)
         val c = chart(title, "mechanical angle (degree)", "amplitude left in the residual (%)")
         for (s <- Seq(b, a)) {
-          val w = (i: Int) => e.us(i) * e.us(i) + e.uc(i) * e.uc(i)
-          val (x, num) = binned(i => { val m = e.phase(i) / l; 360 * (m - math.floor(m)) }, i => s.resS(i) * e.us(i) + s.resC(i) * e.uc(i), n, 0, 360, 36)
-          val (_, den) = binned(i => { val m = e.phase(i) / l; 360 * (m - math.floor(m)) }, w, n, 0, 360, 36)
+          val st = s.stride
+          val w = (j: Int) => { val i = j * st; e.us(i) * e.us(i) + e.uc(i) * e.uc(i) }
+          val ang = (j: Int) => { val m = e.phase(j * st) / l; 360 * (m - math.floor(m)) }
+          val (x, num) = binned(ang, j => s.resS(j) * e.us(j * st) + s.resC(j) * e.uc(j * st), s.size, 0, 360, 36)
+          val (_, den) = binned(ang, w, s.size, 0, 360, 36)
           line(c, s.label, x, num.zip(den).map { case (p, q) => 100 * p / q })
         }
         save(c, path)
       case "adc_nonlinearity" | "adc_bit_fault" | "clipping" =>
         val c = chart(title, "predicted value (full scale)", "mean residual (LSB)")
-        for (s <- Seq(b, a); (r, p, ch) <- Seq((s.resS, e.predS, "sin"), (s.resC, e.predC, "cos"))) {
-          val (x, y) = binned(i => p(i), i => r(i) / lsb, n, -1, 1, 128); line(c, s"$ch, ${s.label}", x, y)
+        val (ps, pc) = (e.predS, e.predC)
+        for (s <- Seq(b, a); (r, p, ch) <- Seq((s.resS, ps, "sin"), (s.resC, pc, "cos"))) {
+          val (x, y) = binned(j => p(j * s.stride), j => r(j) / lsb, s.size, -1, 1, 128); line(c, s"$ch, ${s.label}", x, y)
         }
         save(c, path)
       case "interference" => spectrum(title, Seq(b, a), e, path)
       case _ =>
         val c = chart(title, "fringe phase (degree)", "mean residual (LSB)")
         for (s <- Seq(b, a); (r, ch) <- Seq((s.resS, "sin"), (s.resC, "cos")) if f.channel == "both" || f.channel == ch) {
-          val (x, y) = binned(i => 360 * (e.phase(i) - math.floor(e.phase(i))), i => r(i) / lsb, n, 0, 360, 72); line(c, s"$ch, ${s.label}", x, y)
+          val (x, y) = binned(j => fringeDeg(e, j * s.stride), j => r(j) / lsb, s.size, 0, 360, 72); line(c, s"$ch, ${s.label}", x, y)
         }
         save(c, path)
     }

@@ -49,8 +49,9 @@ object Replicate {
   private def target(e: SignalEngine, t: Term): (Array[Double], Array[Double]) = {
     val cols = e.termCols(t); val at = e.termIndex(t)
     val b = e.sol.beta.slice(at, at + cols.size)
-    val ps = LinearFit.combine(cols, b, sinCh = true, e.n); val pc = LinearFit.combine(cols, b, sinCh = false, e.n)
-    (Array.tabulate(e.n)(i => e.resS(i) + ps(i)), Array.tabulate(e.n)(i => e.resC(i) + pc(i)))
+    val ts = e.resS.clone(); val tc = e.resC.clone()
+    LinearFit.addTo(ts, cols, b, sinCh = true, 1.0); LinearFit.addTo(tc, cols, b, sinCh = false, 1.0)
+    (ts, tc)
   }
 
   /** An interference line: on each half its frequency (searched near the full-record value) and its amplitude on each
@@ -62,27 +63,22 @@ object Replicate {
     val at = e.termIndex(t); val b = e.sol.beta
     val floorA = ModelRel * 0.5 * (math.hypot(b(at), b(at + 1)) + math.hypot(b(at + 2), b(at + 3)))
     val ests = halves.map { idx =>
-      val m = idx.length; val st = math.max(1, m / 50000)
+      val m = idx.length; val pts = Candidates.spread(m, math.max(1, m / 50000))
       def power(hz: Double): Double = {
         var a = 0.0; var b = 0.0; var c = 0.0; var d = 0.0; var k = 0
-        while (k < m) {
-          val i = idx(k); val x = 2 * math.Pi * hz * i / e.fs; val sx = math.sin(x); val cx = math.cos(x)
-          a += ys(i) * sx; b += ys(i) * cx; c += yc(i) * sx; d += yc(i) * cx; k += st
+        while (k < pts.length) {
+          val i = idx(pts(k)); val x = 2 * math.Pi * hz * i / e.fs; val sx = math.sin(x); val cx = math.cos(x)
+          a += ys(i) * sx; b += ys(i) * cx; c += yc(i) * sx; d += yc(i) * cx; k += 1
         }
         -(a * a + b * b + c * c + d * d)
       }
       val half = e.fs / m
       val hz = cands.minimize(power, t.hz - half, t.hz + half, grid = 8, golden = 16)
-      val cols = e.baseCols(e.s1, e.s2, e.c1, e.c2).map(c => Col(pick(c.s, idx), pick(c.c, idx))) ++
-        e.termCols(Term.Interference(hz)).map(c => Col(pick(c.s, idx), pick(c.c, idx)))
-      val fy = pick(ys, idx); val fc = pick(yc, idx)
-      val sol = LinearFit.solve(cols, fy, fc)
+      val cols = e.baseCols(e.s1, e.s2, e.c1, e.c2) ++ e.termCols(Term.Interference(hz))
+      val sol = LinearFit.solve(cols, ys, yc, idx)
       if (!sol.ok) None
       else {
-        val ps = LinearFit.combine(cols, sol.beta, sinCh = true, m); val pc = LinearFit.combine(cols, sol.beta, sinCh = false, m)
-        var rss = 0.0; var i = 0
-        while (i < m) { val a = fy(i) - ps(i); val b = fc(i) - pc(i); rss += a * a + b * b; i += 1 }
-        val v = rss / (2.0 * m)
+        val v = LinearFit.rss(cols, sol.beta, ys, yc, idx) / (2.0 * m)
         val as = math.hypot(sol.beta(6), sol.beta(7)); val ac = math.hypot(sol.beta(8), sol.beta(9))
         // Cramer-Rao bound of a sinusoid's frequency in white noise, both channels' power together
         val sdF = e.fs / (2 * math.Pi) * math.sqrt(24 * v / ((as * as + ac * ac) * m.toDouble * m * m))
@@ -110,33 +106,32 @@ object Replicate {
     val nuisance = t match {
       case Term.Warmup(tau) =>
         val b = e.sol.beta.slice(at, at + tcols.size); val h = 0.05
-        val up = e.termCols(Term.Warmup(tau * (1 + h))); val dn = e.termCols(Term.Warmup(tau * (1 - h)))
-        def d(sinCh: Boolean) = {
-          val p = LinearFit.combine(up, b, sinCh, e.n); val q = LinearFit.combine(dn, b, sinCh, e.n)
-          Array.tabulate(e.n)(i => (p(i) - q(i)) / (2 * h))
+        val up = tau * (1 + h); val dn = tau * (1 - h)
+        // the warm-up's fitted shape at tau (1 + h) less at tau (1 - h), sample by sample (its columns w, w, u w, u w)
+        def d(sinCh: Boolean) = Array.tabulate(e.n) { i =>
+          val wu = math.exp(-i / e.fs / up); val wd = math.exp(-i / e.fs / dn)
+          val p = if (sinCh) b(0) * wu + b(2) * (e.us(i) * wu) else b(1) * wu + b(3) * (e.uc(i) * wu)
+          val q = if (sinCh) b(0) * wd + b(2) * (e.us(i) * wd) else b(1) * wd + b(3) * (e.uc(i) * wd)
+          (p - q) / (2 * h)
         }
         IndexedSeq(Col(d(true), d(false)))
       case _ => IndexedSeq.empty
     }
     val cols = e.baseCols(e.s1, e.s2, e.c1, e.c2) ++ tcols ++ nuisance
-    val (ts, tc) = target(e, t)
+    // fitted on the residual, the term's coefficients are its change: the target (residual plus the term) needs no arrays
+    val own = e.sol.beta.slice(at, at + tcols.size)
     // the term's size in the signal (rms over the record), in the units of each of its parameters
     val rms = tcols.map(c => math.sqrt(((if (c.s == null) 0.0 else e.sumSq(c.s)) + (if (c.c == null) 0.0 else e.sumSq(c.c))) / e.n))
     val size = math.sqrt(tcols.indices.map(j => math.pow(e.sol.beta(at + j) * rms(j), 2)).sum)
     val floor = rms.map(r => if (r > 0) ModelRel * size / r else 0.0).toArray
     fs.map { idx =>
-      val cf = cols.map(c => Col(pick(c.s, idx), pick(c.c, idx)))
-      val ys = pick(ts, idx); val yc = pick(tc, idx)
-      val sol = LinearFit.solve(cf, ys, yc)
+      val sol = LinearFit.solve(cols, e.resS, e.resC, idx)
       if (!sol.ok) None
       else {
         val m = idx.length
-        val ps = LinearFit.combine(cf, sol.beta, sinCh = true, m); val pc = LinearFit.combine(cf, sol.beta, sinCh = false, m)
-        var rss = 0.0; var i = 0
-        while (i < m) { val a = ys(i) - ps(i); val b = yc(i) - pc(i); rss += a * a + b * b; i += 1 }
-        val v = rss / math.max(1, 2 * m - cols.size)
+        val v = LinearFit.rss(cols, sol.beta, e.resS, e.resC, idx) / math.max(1, 2 * m - cols.size)
         val k = 6 + tcols.size
-        Some(Est(sol.beta.slice(6, k), Array.tabulate(k - 6, k - 6)((a, b) => sol.inv(a + 6)(b + 6) * v), floor))
+        Some(Est(Array.tabulate(tcols.size)(j => sol.beta(6 + j) + own(j)), Array.tabulate(k - 6, k - 6)((a, b) => sol.inv(a + 6)(b + 6) * v), floor))
       }
     }
   }
@@ -166,7 +161,11 @@ object Replicate {
     }
     val f = e.freq.map(math.abs); val q = f.clone(); java.util.Arrays.sort(q)
     val edges = (0 to SpeedBands).map(b => if (b == SpeedBands) Double.PositiveInfinity else q(b * e.n / SpeedBands))
-    val bands = (0 until SpeedBands).map(b => (0 until e.n).filter(i => f(i) >= edges(b) && f(i) < edges(b + 1)).toArray)
+    val bands = (0 until SpeedBands).map { b =>
+      val out = Array.newBuilder[Int]; var i = 0
+      while (i < e.n) { if (f(i) >= edges(b) && f(i) < edges(b + 1)) out += i; i += 1 }
+      out.result()
+    }
     agree(halves.map(est), "halves", "jitter variance").orElse(agree(bands.map(est), "speed bands", "jitter variance"))
       .orElse(quantizationJitter(e, ds, dc))
   }

@@ -6,7 +6,8 @@ import moire.recording.{Recording, Reference}
   * All per-sample work is on primitive arrays; the state after `refit` is consistent
   * (prediction, residual, noise model and -2 ln L of the current `spec`).
   */
-final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = None) {
+final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = None,
+                         holdBytes: Long = Runtime.getRuntime.maxMemory / 8) {
   val n: Int = rec.length
   val fs: Double = rec.sampleRateHz
   val lsb: Double = rec.adc.lsb
@@ -25,19 +26,28 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
   val step: Double = lsb * (1 << coarseBits)
   val railLo: Double = -1.0
   val railHi: Double = (rec.adc.half - (1 << coarseBits)) * lsb
-  val tc: Array[Double] = Array.tabulate(n)(i => (i - 0.5 * (n - 1)) / fs)
+  /** Time from the record's middle (s), made when a term needs it. */
+  def tc: Array[Double] = Array.tabulate(n)(i => (i - 0.5 * (n - 1)) / fs)
   val ones: Array[Double] = Array.fill(n)(1.0)
   val lnN: Double = math.log(2.0 * n)
 
   val phase = new Array[Double](n); val freq = new Array[Double](n)
-  val sn = new Array[Double](n); val cs = new Array[Double](n)
-  val s1 = new Array[Double](n); val s2 = new Array[Double](n); val c1 = new Array[Double](n); val c2 = new Array[Double](n)
-  val us = new Array[Double](n); val vs = new Array[Double](n); val uc = new Array[Double](n); val vc = new Array[Double](n)
-  var predS = new Array[Double](n); var predC = new Array[Double](n)
+  // the plain fundamentals (sin and cos of the fringe phase); a spec with skew or bandwidth keeps its cos channel's here
+  private val plainSin = new Array[Double](n); private val plainCos = new Array[Double](n)
+  /** The fundamentals' columns (sin, cos channel): the plain sin and cos of the phase unless the spec skews or filters
+    * a channel, then arrays of their own (allocated on first need).
+    */
+  var s1: Array[Double] = plainSin; var s2: Array[Double] = plainCos; var c1: Array[Double] = plainSin; var c2: Array[Double] = plainCos
+  /** The fitted fundamental (u) and its derivative by the fringe phase (v) per channel at sample i, from the default
+    * part and the fundamentals' columns (not stored: four fewer arrays of the record's length).
+    */
+  @inline final def us(i: Int): Double = base(1) * s1(i) + base(2) * s2(i)
+  @inline final def vs(i: Int): Double = base(1) * s2(i) - base(2) * s1(i)
+  @inline final def uc(i: Int): Double = base(4) * c1(i) + base(5) * c2(i)
+  @inline final def vc(i: Int): Double = base(4) * c2(i) - base(5) * c1(i)
   var repS: Array[Double] = ys; var repC: Array[Double] = yc
   var cens: Repaired = Repaired(ys, yc, null, null)
   val resS = new Array[Double](n); val resC = new Array[Double](n)
-  var termPredS = new Array[Double](n); var termPredC = new Array[Double](n)
 
   var spec: ModelSpec = ModelSpec()
   var base: Array[Double] = new Array[Double](6)
@@ -57,6 +67,12 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
     val d = math.toDegrees(math.atan2(base(5), base(4)) - math.atan2(base(2), base(1))) - 90
     ((d + 540) % 360) - 180
   }
+  /** The terms' part of the prediction at sample i (the prediction less the default part). */
+  def termS(i: Int): Double = repS(i) - resS(i) - base(0) - us(i)
+  def termC(i: Int): Double = repC(i) - resC(i) - base(3) - uc(i)
+  /** The model's prediction (not stored: the repaired data less the residual), as new arrays. */
+  def predS: Array[Double] = Array.tabulate(n)(i => repS(i) - resS(i))
+  def predC: Array[Double] = Array.tabulate(n)(i => repC(i) - resC(i))
   def params: Int = 6 + traj.params + 2 + spec.extraParams
   def bic: Double = noise.m2ll + params * lnN
   def rms: Double = math.sqrt((sumSq(resS) + sumSq(resC)) / (2.0 * n))
@@ -135,8 +151,22 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
 
   def evalTraj(): Unit = {
     traj.eval(phase, freq)
-    var i = 0
-    while (i < n) { val a = 2 * math.Pi * (phase(i) - math.floor(phase(i))); sn(i) = math.sin(a); cs(i) = math.cos(a); i += 1 }
+    setFundamentals()
+  }
+
+  /** 2 pi times the fractional fringe phase of sample i. */
+  @inline final def angle(i: Int): Double = 2 * math.Pi * (phase(i) - math.floor(phase(i)))
+
+  /** s1, s2, c1, c2 for the current phase and spec. */
+  private def setFundamentals(): Unit = {
+    if (!spec.hasSkew && spec.bw.isEmpty) {
+      s1 = plainSin; s2 = plainCos; c1 = plainSin; c2 = plainCos
+      var i = 0
+      while (i < n) { val a = angle(i); plainSin(i) = math.sin(a); plainCos(i) = math.cos(a); i += 1 }
+    } else {
+      if (s1 eq plainSin) { s1 = new Array[Double](n); s2 = new Array[Double](n); c1 = plainSin; c2 = plainCos }
+      fundamentals(spec, s1, s2, c1, c2)
+    }
   }
 
   /** Fundamental columns of both channels under the skew and bandwidth of `sp`. */
@@ -147,7 +177,8 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
     val w = 2 * math.Pi * sp.skewS
     var i = 0
     while (i < n) {
-      if (plain) { a1(i) = sn(i); a2(i) = cs(i); b1(i) = sn(i); b2(i) = cs(i) }
+      val a = angle(i); val sn = math.sin(a); val cs = math.cos(a)
+      if (plain) { a1(i) = sn; a2(i) = cs; b1(i) = sn; b2(i) = cs }
       else {
         val f = freq(i); var gs = 1.0; var gc = 1.0; var ls = -0.5 * w * f; var lc = 0.5 * w * f
         if (!fcB.isInfinite) { val u = f / fcB; val g = 1 / math.sqrt(1 + u * u); gs *= g; gc *= g }
@@ -156,8 +187,8 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
         if (!fcC.isInfinite) { val u = f / fcC; gc /= math.sqrt(1 + u * u); lagC = math.atan(u) }
         val m = 0.5 * (lagS + lagC); ls += m - lagS; lc += m - lagC
         val cls = math.cos(ls); val sls = math.sin(ls); val clc = math.cos(lc); val slc = math.sin(lc)
-        a1(i) = gs * (sn(i) * cls + cs(i) * sls); a2(i) = gs * (cs(i) * cls - sn(i) * sls)
-        b1(i) = gc * (sn(i) * clc + cs(i) * slc); b2(i) = gc * (cs(i) * clc - sn(i) * slc)
+        a1(i) = gs * (sn * cls + cs * sls); a2(i) = gs * (cs * cls - sn * sls)
+        b1(i) = gc * (sn * clc + cs * slc); b2(i) = gc * (cs * clc - sn * slc)
       }
       i += 1
     }
@@ -169,7 +200,7 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
   /** Columns of a linear term at the current state. */
   def termCols(t: Term): IndexedSeq[Col] = t match {
     case Term.Harm(k, ch) =>
-      def harm(u: Array[Double], v: Array[Double]): (Array[Double], Array[Double]) = {
+      def harm(u: Int => Double, v: Int => Double): (Array[Double], Array[Double]) = {
         val hs = new Array[Double](n); val hc = new Array[Double](n); var i = 0
         while (i < n) {
           val a = math.hypot(u(i), v(i))
@@ -182,31 +213,34 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
         }
         (hs, hc)
       }
-      val sin = if (ch != "cos") { val (a, b) = harm(us, vs); IndexedSeq(Col(a, null), Col(b, null)) } else IndexedSeq()
-      val cos = if (ch != "sin") { val (a, b) = harm(uc, vc); IndexedSeq(Col(null, a), Col(null, b)) } else IndexedSeq()
+      val sin = if (ch != "cos") { val (a, b) = harm(us(_), vs(_)); IndexedSeq(Col(a, null), Col(b, null)) } else IndexedSeq()
+      val cos = if (ch != "sin") { val (a, b) = harm(uc(_), vc(_)); IndexedSeq(Col(null, a), Col(null, b)) } else IndexedSeq()
       sin ++ cos
     case Term.Drift =>
-      IndexedSeq(Col(tc, null), Col(null, tc), Col(mul(us, tc), null), Col(null, mul(uc, tc)))
+      val t = tc
+      IndexedSeq(Col(t, null), Col(null, t), Col(mul(us(_), t), null), Col(null, mul(uc(_), t)))
     case Term.Am =>
       val l = rec.linesPerRev.getOrElse(1.0)
-      val th = mechAngle.getOrElse(Array.tabulate(n)(i => 2 * math.Pi * phase(i) / l))
-      val ca = th.map(math.cos); val sa = th.map(math.sin)
-      IndexedSeq(Col(mul(us, ca), mul(uc, ca)), Col(mul(us, sa), mul(uc, sa)))
+      val m = mechAngle.orNull
+      def th(i: Int) = if (m != null) m(i) else 2 * math.Pi * phase(i) / l
+      def col(u: Int => Double, f: Double => Double) = Array.tabulate(n)(i => u(i) * f(th(i)))
+      IndexedSeq(Col(col(us(_), math.cos), col(uc(_), math.cos)), Col(col(us(_), math.sin), col(uc(_), math.sin)))
     case Term.Inl =>
       def t2(p: Array[Double]) = Array.tabulate(n)(i => (2 * p(i) * p(i) - 1) * lsb)
       def t3(p: Array[Double]) = Array.tabulate(n)(i => (4 * p(i) * p(i) * p(i) - 3 * p(i)) * lsb)
-      IndexedSeq(Col(t2(predS), t2(predC)), Col(t3(predS), t3(predC)))
+      val (ps, pc) = (predS, predC)
+      IndexedSeq(Col(t2(ps), t2(pc)), Col(t3(ps), t3(pc)))
     case Term.Crosstalk =>
       val w = Array.tabulate(n)(i => 2 * math.Pi * freq(i))
-      IndexedSeq(Col(mul(vc, w), null), Col(null, mul(vs, w)))
+      IndexedSeq(Col(mul(vc(_), w), null), Col(null, mul(vs(_), w)))
     case Term.Contrast =>
       val x = travel
-      IndexedSeq(Col(x, null), Col(null, x), Col(mul(us, x), null), Col(null, mul(uc, x)))
-    case Term.Warmup(tau) => warmupCols(warmupBasis(tau), us, uc)
+      IndexedSeq(Col(x, null), Col(null, x), Col(mul(us(_), x), null), Col(null, mul(uc(_), x)))
+    case Term.Warmup(tau) => warmupCols(warmupBasis(tau), us(_), uc(_))
     case Term.AngleHarm(m) =>
       val th = mechAngle.get
-      val ca = Array.tabulate(n)(i => 2 * math.Pi * math.cos(m * th(i))); val sa = Array.tabulate(n)(i => 2 * math.Pi * math.sin(m * th(i)))
-      IndexedSeq(Col(mul(gS, ca), mul(gC, ca)), Col(mul(gS, sa), mul(gC, sa)))
+      def col(g: Int => Double, f: Double => Double) = Array.tabulate(n)(i => g(i) * (2 * math.Pi * f(m * th(i))))
+      IndexedSeq(Col(col(gS(_), math.cos), col(gC(_), math.cos)), Col(col(gS(_), math.sin), col(gC(_), math.sin)))
     case Term.Interference(hz) =>
       val a = Array.tabulate(n)(i => math.sin(2 * math.Pi * hz * i / fs)); val b = Array.tabulate(n)(i => math.cos(2 * math.Pi * hz * i / fs))
       IndexedSeq(Col(a, null), Col(b, null), Col(null, a), Col(null, b))
@@ -223,10 +257,10 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
   /** exp(-t / tau) from the first sample: the part of a warm-up still to come. */
   def warmupBasis(tau: Double): Array[Double] = Array.tabulate(n)(i => math.exp(-i / fs / tau))
   /** A warm-up's columns from its basis w and the fundamentals u, v (all samples, or a subsample's). */
-  def warmupCols(w: Array[Double], u: Array[Double], v: Array[Double]): IndexedSeq[Col] =
+  def warmupCols(w: Array[Double], u: Int => Double, v: Int => Double): IndexedSeq[Col] =
     IndexedSeq(Col(w, null), Col(null, w), Col(Array.tabulate(w.length)(i => u(i) * w(i)), null), Col(null, Array.tabulate(w.length)(i => v(i) * w(i))))
 
-  private def mul(a: Array[Double], b: Array[Double]): Array[Double] = {
+  private def mul(a: Int => Double, b: Array[Double]): Array[Double] = {
     val o = new Array[Double](n); var i = 0
     while (i < n) { o(i) = a(i) * b(i); i += 1 }
     o
@@ -241,16 +275,21 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
     def one(ch: Int, y: Array[Double], codes: Array[Int], p: Array[Double]): (Array[Double], Array[Double]) = {
       val fl = sp.faults.filter(_.ch == ch); val cl = sp.clips.filter(_.ch == ch)
       val lo = (railLo +: cl.map(_.lo)).max; val hi = (railHi +: cl.map(_.hi)).min
-      val out = y.clone(); val cen = Array.fill(n)(Double.NaN); var i = 0
+      // copies made on the first change: an unchanged channel is `y` itself, no censored sample gives a null `cen`
+      var out = y; var cen: Array[Double] = null; var i = 0
+      def own(): Unit = if (out eq y) out = y.clone()
       while (i < n) {
         if (fl.nonEmpty) {
           var best = codes(i); var bestD = Double.MaxValue
           val cands = fl.foldLeft(Seq(codes(i)))((cs, f) => cs.flatMap(f.preimages)).distinct
           cands.foreach { c => val v = adc.fromPins(c) * lsb; val d = math.abs(v - p(i)); if (d < bestD) { bestD = d; best = c } }
-          out(i) = adc.fromPins(best) * lsb
+          if (best != codes(i)) { own(); out(i) = adc.fromPins(best) * lsb }
         }
-        if (censor && out(i) >= hi - 0.5 * lsb) { cen(i) = out(i) - 0.5 * lsb - p(i); out(i) = p(i) }
-        else if (censor && out(i) <= lo + 0.5 * lsb) { cen(i) = p(i) - (out(i) + 0.5 * lsb); out(i) = p(i) }
+        val v = out(i)
+        if (censor && (v >= hi - 0.5 * lsb || v <= lo + 0.5 * lsb)) {
+          if (cen == null) cen = Array.fill(n)(Double.NaN)
+          own(); cen(i) = if (v >= hi - 0.5 * lsb) v - 0.5 * lsb - p(i) else p(i) - (v + 0.5 * lsb); out(i) = p(i)
+        }
         i += 1
       }
       (out, cen)
@@ -273,20 +312,15 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
         }
         traj.addFit(d, w); evalTraj()
       }
-      if (it > 0) { val r = repair(spec, predS, predC); repS = r.s; repC = r.c; cens = r }
-      fundamentals(spec, s1, s2, c1, c2)
-      if (it == 0) uv()
-      val tcols = spec.terms.map(t => t -> termCols(t))
-      val cols = baseCols(s1, s2, c1, c2) ++ tcols.flatMap(_._2)
-      sol = LinearFit.solve(cols, repS, repC)
+      if (it > 0) { val r = repair(spec, predS, predC); repS = r.s; repC = r.c; cens = r } // the predictions are garbage after
+      setFundamentals()
+      val cols = groups()
+      sol = cols.solve(repS, repC)
+      termIndex = spec.terms.zip(cols.offsets.tail).toMap
+      // the terms' columns may be made again below: from the state they were fitted in (the old default part)
+      residual(cols)
+      predictionSlope(cols, sol.beta.take(6))
       base = sol.beta.take(6)
-      var at = 6; termIndex = tcols.map { case (t, c) => val k = t -> at; at += c.size; k }.toMap
-      predS = LinearFit.combine(cols, sol.beta, sinCh = true, n); predC = LinearFit.combine(cols, sol.beta, sinCh = false, n)
-      val tb = sol.beta.clone(); for (j <- 0 until 6) tb(j) = 0
-      termPredS = LinearFit.combine(cols, tb, sinCh = true, n); termPredC = LinearFit.combine(cols, tb, sinCh = false, n)
-      residual()
-      uv()
-      predictionSlope(tcols)
       it += 1
       noise = Noise.fit(resS, resC, if (spec.jitter) slopes() else null, cens)
       if (SignalEngine.debug) System.err.println(f"refit $it: rms $rms%.4g bic $bic%.8g")
@@ -303,8 +337,7 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
       while (i < n) { val v = 2 * math.Pi * (if (b == null) 1.0 else b(i)); a(i) = gS(i) * v; c(i) = gC(i) * v; i += 1 }
       Col(a, c)
     }
-    val cols = baseCols(s1, s2, c1, c2) ++ spec.terms.flatMap(termCols) ++ jc
-    val s = LinearFit.solve(cols, repS, repC)
+    val s = groups(IndexedSeq(jc.toIndexedSeq)).solve(repS, repC)
     if (s.ok && jc.nonEmpty) { r.addDelta(0.0 +: s.beta.takeRight(jc.size)); evalTraj() }
   }
 
@@ -315,18 +348,37 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
     while (k < maxIters && prev - bic > 0.5) { prev = bic; refit(2, refineTraj = true); k += 2 }
   }
 
-  def residual(): Unit = { var i = 0; while (i < n) { resS(i) = repS(i) - predS(i); resC(i) = repC(i) - predC(i); i += 1 } }
+  /** The design of the current spec: the default part, each term's columns, then `extra` groups (held). The terms'
+    * columns are held when they all fit in `holdBytes` (an eighth of the heap), else made again as needed (long records).
+    */
+  private def groups(extra: IndexedSeq[IndexedSeq[Col]] = IndexedSeq()): ColGroups = {
+    val base0 = baseCols(s1, s2, c1, c2)
+    val keep = n.toLong * 8 * 4 * spec.terms.size < holdBytes
+    // the INL term's columns come from the residual, which the fit then overwrites: always held
+    val held = (false +: spec.terms.toIndexedSeq.map(_ == Term.Inl)) ++ extra.map(_ => true)
+    new ColGroups((() => base0) +: (spec.terms.toIndexedSeq.map(t => () => termCols(t)) ++ extra.map(c => () => c)), keep, held)
+  }
+
+  /** The residual of the fit `sol` over `cols`: the repaired data less the prediction. */
+  private def residual(cols: ColGroups): Unit = {
+    System.arraycopy(repS, 0, resS, 0, n); System.arraycopy(repC, 0, resC, 0, n)
+    cols.addTo(resS, sol.beta, sinCh = true, -1.0); cols.addTo(resC, sol.beta, sinCh = false, -1.0)
+  }
 
   /** d(prediction)/d(2 pi fringe phase) per channel: the fundamental's (v), plus the harmonics' when the phase follows a
     * reference (a free trajectory takes the difference up; a fixed map would be biased by it).
     */
-  var gS: Array[Double] = vs; var gC: Array[Double] = vc
-  private def predictionSlope(tcols: Seq[(Term, IndexedSeq[Col])]): Unit = {
-    gS = vs; gC = vc
+  private var slopeS: Array[Double] = null; private var slopeC: Array[Double] = null // null: the fundamental's (v)
+  @inline final def gS(i: Int): Double = if (slopeS == null) vs(i) else slopeS(i)
+  @inline final def gC(i: Int): Double = if (slopeC == null) vc(i) else slopeC(i)
+  private def predictionSlope(design: ColGroups, b: Array[Double]): Unit = {
+    slopeS = null; slopeC = null
     if (!traj.isInstanceOf[RefTrajectory]) return
-    gS = vs.clone(); gC = vc.clone()
-    for ((t, cols) <- tcols) t match {
+    // v of the new default part b (the engine's `base` is still the one the columns were made from)
+    val gS = Array.tabulate(n)(i => b(1) * s2(i) - b(2) * s1(i)); val gC = Array.tabulate(n)(i => b(4) * c2(i) - b(5) * c1(i))
+    for ((t, g) <- spec.terms.zipWithIndex) t match {
       case Term.Harm(k, _) =>
+        val cols = design(g + 1)
         val at = termIndex(t)
         for (j <- 0 until cols.size / 2) {
           val b0 = sol.beta(at + 2 * j); val b1 = sol.beta(at + 2 * j + 1)
@@ -336,17 +388,9 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
         }
       case _ =>
     }
+    slopeS = gS; slopeC = gC
   }
 
-  /** Fitted fundamental (u) and its derivative by the fringe phase (v) per channel. */
-  def uv(): Unit = {
-    var i = 0
-    while (i < n) {
-      us(i) = base(1) * s1(i) + base(2) * s2(i); vs(i) = base(1) * s2(i) - base(2) * s1(i)
-      uc(i) = base(4) * c1(i) + base(5) * c2(i); vc(i) = base(4) * c2(i) - base(5) * c1(i)
-      i += 1
-    }
-  }
 
   /** Slope of each channel against time (full scale per second), for the jitter noise model. */
   def slopes(): (Array[Double], Array[Double]) =
@@ -371,12 +415,20 @@ object Noise {
     (m, k)
   }
 
+  /** White noise on both channels, nothing censored, from the residual sums of squares of n samples each. */
+  def white(rssS: Double, rssC: Double, n: Int): Noise = {
+    val floor = 1e-30
+    val vs = math.max(floor, rssS / n); val vc = math.max(floor, rssC / n)
+    Noise(vs, vc, 0, n * (math.log(2 * math.Pi * vs) + 1) + n * (math.log(2 * math.Pi * vc) + 1))
+  }
+
   def fit(rs: Array[Double], rc: Array[Double], slope: (Array[Double], Array[Double]), cens: Repaired = null): Noise = {
     val n = rs.length
     def ss(a: Array[Double]) = { var s = 0.0; var i = 0; while (i < n) { s += a(i) * a(i); i += 1 }; s }
     val floor = 1e-30
     val cs = if (cens == null) null else cens.censS; val cc = if (cens == null) null else cens.censC
     def count(c: Array[Double]) = if (c == null) 0 else c.count(!_.isNaN)
+    if (slope == null && cs == null && cc == null) return white(ss(rs), ss(rc), n)
     if (slope == null) {
       val ns = math.max(1, n - count(cs)); val nc = math.max(1, n - count(cc))
       val vs = math.max(floor, ss(rs) / ns); val vc = math.max(floor, ss(rc) / nc)

@@ -10,8 +10,30 @@ final case class Finding(effect: String, channel: String, summary: String, param
     "rms_before" -> Report.num(rmsBefore), "rms_after" -> Report.num(rmsAfter), "where" -> where)
 }
 
-/** Residual snapshots for the plots. */
-final case class Snapshot(label: String, resS: Array[Double], resC: Array[Double])
+/** Residuals for the plots: every `stride`-th sample (at most `Snapshot.MaxPoints`), and the first
+  * `Snapshot.SpectrumPoints` samples in full for the spectrum. A long record's plots cost a bounded copy.
+  */
+final case class Snapshot(label: String, stride: Int, resS: Array[Double], resC: Array[Double], headS: Array[Double], headC: Array[Double]) {
+  /** Points held; point j is sample j * stride. */
+  def size: Int = resS.length
+  /** The first samples in full, for a spectrum. */
+  def headSin: Array[Double] = if (headS == null) resS else headS
+  def headCos: Array[Double] = if (headC == null) resC else headC
+}
+object Snapshot {
+  val MaxPoints: Int = 1 << 19
+  val SpectrumPoints: Int = 1 << 18
+  def of(label: String, rs: Array[Double], rc: Array[Double]): Snapshot = {
+    val n = rs.length
+    val stride = (n + MaxPoints - 1) / MaxPoints
+    if (stride == 1) Snapshot(label, 1, rs.clone(), rc.clone(), null, null)
+    else {
+      def every(a: Array[Double]) = Array.tabulate((n + stride - 1) / stride)(j => a(j * stride))
+      val h = math.min(n, SpectrumPoints)
+      Snapshot(label, stride, every(rs), every(rc), java.util.Arrays.copyOf(rs, h), java.util.Arrays.copyOf(rc, h))
+    }
+  }
+}
 
 /** explain for signal recordings: default fit, locate, greedy effect search by BIC, final locate. */
 object SignalExplain {
@@ -46,18 +68,19 @@ object SignalExplain {
     }
   }
 
-  def run(file: String, rec: Recording, model: Seq[EffectSpec], progress: Progress, maxFindings: Int = 8): Result = {
+  def run(file: String, rec: Recording, model: Seq[EffectSpec], progress: Progress, maxFindings: Int = 8,
+          holdBytes: Long = Runtime.getRuntime.maxMemory / 8): Result = {
     val t0 = System.nanoTime()
     val timing = sys.props.contains("moire.timing")
     var tl = t0
     def lap(what: String): Unit = if (timing) { val now = System.nanoTime(); System.err.println(f"$what ${(now - tl) / 1e6}%.0f ms"); tl = now }
-    val e = new SignalEngine(rec, Reference.of(rec).fold(m => throw new ExplainError(s"$file: $m"), identity))
+    val e = new SignalEngine(rec, Reference.of(rec).fold(m => throw new ExplainError(s"$file: $m"), identity), holdBytes)
     progress.phase("default fit", 4)
     e.init(); progress.step(4)
     val givenModel = specOf(model)
     if (givenModel != ModelSpec()) { e.spec = givenModel; e.converge(); settle(e) }
     val baseRms = e.rms; val baseBic = e.bic; val baseParams = baselineParams(e)
-    val before = Snapshot("default model", e.resS.clone(), e.resC.clone())
+    val before = Snapshot.of("default model", e.resS, e.resC)
     lap("default fit")
     val located = Locate.all(e)
     lap("locate")
@@ -95,7 +118,7 @@ object SignalExplain {
           case Some(why) => reject(c, why)
           case None =>
             tries += 1
-            val snapB = Snapshot(s"before ${c.effect}", e.resS.clone(), e.resC.clone())
+            val snapB = Snapshot.of(s"before ${c.effect}", e.resS, e.resC)
             val rmsB = e.rms
             val prev = e.spec
             e.spec = c.spec; e.converge(); settle(e)
@@ -109,7 +132,7 @@ object SignalExplain {
                 if (w.nonEmpty) reject(c, w)
                 e.spec = prev; e.converge(); settle(e)
               case None =>
-                val snapA = Snapshot(s"after ${c.effect}", e.resS.clone(), e.resC.clone())
+                val snapA = Snapshot.of(s"after ${c.effect}", e.resS, e.resC)
                 steps += ((Finding(c1.effect, c1.channel, "", c1.params, c1.unc, bic0 - e.bic, rmsB, e.rms, c1.where), snapB, snapA))
                 round += 1; accepted = true
             }
