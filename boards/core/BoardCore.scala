@@ -201,7 +201,9 @@ class BoardCore(val p: BoardParams) extends Module {
   framer.io.burstInfo.bits.last := burst.io.last
   when(framer.io.burstInfo.fire) { infoPending := false.B }
   framer.io.burstWords <> burst.io.out
-  tx.io.in <> framer.io.out
+  // a two-entry queue between the framer and the UART: registers on the byte, its valid and the ready back (the
+  // framer's byte mux and the record and burst RAMs behind it no longer reach the UART's shift register)
+  tx.io.in <> Queue(framer.io.out, 2)
   io.txd := tx.io.txd
   rx.io.rxd := Synchronizer(io.rxd, init = true, "uart_rxd")
   cmdRx.io.in := rx.io.out
