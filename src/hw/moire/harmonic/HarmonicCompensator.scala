@@ -69,21 +69,11 @@ class HarmonicCompensator(val p: HarmonicParams) extends Module with moire.emit.
     c.io.out.bits.y
   }
 
-  // ---- products, sum, scale to counts, subtract ----
+  // ---- products (PieceMul, three clocks each), sum, scale to counts, rounding, subtract ----
   private def reg[T <: Data](t: T, v: T, name: String): T = { val r = Reg(t); r := v; r.suggestName(name); r }
-  private val prods = reg(Vec(p.harmonics, SInt(p.prodWidth.W)), VecInit(sines.zip(coefs).map { case (s, c) => c * s }), "prod")
+  private val prods = sines.zip(coefs).zipWithIndex.map { case ((s, c), j) => PieceMul(c, s, s"prod_$j") }
   private val sum = reg(SInt(p.sumWidth.W), VecInit(prods.map(_.pad(p.sumWidth))).reduceTree(_ + _), "sum")
-  // sum * kConst in three clocks: products of kConst with 17-bit pieces of the sum, their sum, the rounding
-  private val kConst = p.kConst.S((p.kBits + 1).W)
-  private val piece = 17
-  private val partials = (0 until (p.sumWidth + piece - 1) / piece).map { i =>
-    val hi = math.min(p.sumWidth, piece * (i + 1)) - 1
-    val bits = sum(hi, piece * i)
-    val part = if (hi == p.sumWidth - 1) bits.asSInt * kConst else bits.zext * kConst
-    reg(chiselTypeOf(part), part, s"k_partial_$i")
-  }
-  private val product = partials.zipWithIndex.map { case (v, i) => (v << (piece * i)).asSInt }.reduce(_ +& _)
-  private val scaled = reg(chiselTypeOf(product), product, "k_product")
+  private val scaled = PieceMul(sum, p.kConst.S((p.kBits + 1).W), "k_product")
   private val f = reg(SInt(p.fWidth.W), FixedHw.shift(scaled, p.fShift, Rounding.HalfEven), "f_counts")
   private val thetaLate = ShiftRegister(io.in.bits, latency - 1)
   private val result = Wire(new HarmonicResult(p))

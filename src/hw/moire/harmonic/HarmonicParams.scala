@@ -83,10 +83,10 @@ case class HarmonicParams(
   /** Width of the compensated angle theta - f(theta), modulo one turn. */
   val outWidth: Int = countBits + outFrac
 
-  /** Clock cycles from in.valid to out.valid: angle stage, CORDIC, product, sum, scale to counts
-    * (three clocks: partial products, their sum, rounding), subtract.
+  /** Clock cycles from in.valid to out.valid: angle stage, CORDIC, product ([[PieceMul]], three
+    * clocks), sum, scale to counts (PieceMul again), rounding, subtract.
     */
-  val latency: Int = 1 + cordic.latency + 6
+  val latency: Int = 1 + cordic.latency + 2 * PieceMul.latency + 3
 
   def moduleName: String =
     s"HarmonicComp_m${harmonics}_c$countBits" + s"_n${iterations}_b$dataBits" +
