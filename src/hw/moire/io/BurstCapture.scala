@@ -91,6 +91,7 @@ class BurstCapture(val p: BurstParams) extends Module {
   private val len = RegInit(1.U(p.countBits.W))
   private val pre = RegInit(0.U(p.countBits.W))
   private val threshold = RegInit(0.U(32.W))
+  private val negThreshold = RegInit(0.S(35.W))
   private val target = RegInit(0.S(32.W))
   private val wptr = RegInit(0.U(p.addrBits.W))
   private val held = RegInit(0.U(p.countBits.W))
@@ -104,8 +105,9 @@ class BurstCapture(val p: BurstParams) extends Module {
   private val sending = RegInit(false.B)
 
   // ---- trigger conditions on the registered sample, with the latched config ----
-  private val speedAbs = Mux(s.bits.speed < 0.S, (-s.bits.speed.pad(33)).asUInt, s.bits.speed.pad(33).asUInt)
-  private val above = speedAbs >= threshold
+  // |speed| >= threshold as two compares side by side (no negation in series with a compare): a negative
+  // speed against -threshold, latched at arm
+  private val above = Mux(s.bits.speed < 0.S, s.bits.speed <= negThreshold, s.bits.speed >= threshold.zext)
   private val below = s.bits.position < target
   private val z = s.bits.word(BurstLayout.RefZ.lsb)
   private val fired = MuxLookup(mode, true.B)(Seq(
@@ -128,7 +130,8 @@ class BurstCapture(val p: BurstParams) extends Module {
     val l = Mux(io.config.length === 0.U, 1.U, Mux(io.config.length > p.samples.U, p.samples.U, io.config.length))
     len := l
     pre := Mux(io.config.pre >= l, l - 1.U, io.config.pre)
-    mode := io.config.mode; threshold := io.config.threshold; target := io.config.target
+    mode := io.config.mode; threshold := io.config.threshold
+    negThreshold := -io.config.threshold.zext; target := io.config.target
     wptr := 0.U; held := 0.U; post := 0.U; prevValid := false.B
     state := BurstState.Waiting.U
   }.elsewhen(s.valid) {
