@@ -102,9 +102,12 @@ class FrameTx(val n: Int, val countWidth: Int) extends Module {
   private val header = VecInit(Seq(Sync0.U(8.W), Sync1.U(8.W), frameType) ++ le(seq, 2))
   require(header.size == HeaderBytes && replyBytes.size == ReplyBytes - CrcBytes - AtReplyAddr &&
     infoBytes.size == BurstInfoBytes - CrcBytes - AtBurstLength)
-  private val bodyEnd = VecInit(Seq(                     // first CRC byte, by kind
+  // the first CRC byte, by kind, and the one after it, registered: they change only when a frame starts (kind and
+  // words), and the two clocks after that (pos 0 to 1, header bytes) read neither
+  private val bodyEnd = RegNext(VecInit(Seq(
     (refRecordFrameBytes(n) - CrcBytes).U(16.W), (ReplyBytes - CrcBytes).U(16.W), (BurstInfoBytes - CrcBytes).U(16.W),
-    (AtBurstWords.U(16.W) + (words << 2)).pad(16)))(kind)
+    (AtBurstWords.U(16.W) + (words << 2)).pad(16)))(kind), "hffff".U)
+  private val crcHiAt = RegNext(bodyEnd +& 1.U, "h1ffff".U)
   private val isRecords = kind === Kind.Records.U
   private val isSamples = kind === Kind.Samples.U
   private val inRecords = isRecords && pos >= AtRecords.U && pos < bodyEnd
@@ -112,7 +115,7 @@ class FrameTx(val n: Int, val countWidth: Int) extends Module {
   private val byte = WireDefault(0.U(8.W))
   when(pos < HeaderBytes.U) { byte := pick(header, pos) }
     .elsewhen(pos === bodyEnd) { byte := crc(7, 0) }
-    .elsewhen(pos === bodyEnd + 1.U) { byte := crc(15, 8) }
+    .elsewhen(pos === crcHiAt) { byte := crc(15, 8) }
     .elsewhen(kind === Kind.Reply.U) { byte := pick(replyBytes, pos - AtReplyAddr.U) }
     .elsewhen(kind === Kind.Info.U) { byte := pick(infoBytes, pos - AtBurstLength.U) }
     .elsewhen(isSamples && pos < AtBurstCount.U) { byte := pick(offsetBytes, pos - AtBurstOffset.U) }
@@ -136,7 +139,7 @@ class FrameTx(val n: Int, val countWidth: Int) extends Module {
     when(pos >= CrcFrom.U && pos < bodyEnd) { crcByte := byte; crcPending := true.B }
     when(inRecords) { recByte := Mux(recByte === (recordBytes - 1).U, 0.U, recByte + 1.U) }
     when(inWords) { recByte := Mux(recByte === 3.U, 0.U, recByte + 1.U) }
-    when(pos === bodyEnd + 1.U) { busy := false.B; seq := seq + 1.U }
+    when(pos === crcHiAt) { busy := false.B; seq := seq + 1.U }
   }
 }
 
