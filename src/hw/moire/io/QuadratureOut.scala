@@ -22,12 +22,20 @@ class QuadratureOut(val width: Int, val zBits: Int, val minEdgeClocks: Int = 1) 
   private val target = RegInit(0.S(width.W))
   private val pos = RegInit(0.S(width.W))
   private val holdOff = RegInit(0.U(log2Ceil(minEdgeClocks + 1).W))
-  private val pending = (target - pos)(width - 1, 0).asSInt
+  // pos + 1 and pos - 1 kept beside it, and pending =/= 0 as an equality: a step is the subtract's sign bit
+  // choosing a register, not an add after a compare
+  private val posUp = RegInit(1.S(width.W))
+  private val posDn = RegInit(-1.S(width.W))
+  private def wrap(v: SInt): SInt = v(width - 1, 0).asSInt
+  private val pending = wrap(target - pos)
   when(io.in.valid) { target := io.in.bits }
   when(!started) {
-    when(io.in.valid) { pos := io.in.bits; started := true.B }
-  }.elsewhen(holdOff === 0.U && pending =/= 0.S) {
-    pos := (pos + Mux(pending > 0.S, 1.S, -1.S))(width - 1, 0).asSInt
+    when(io.in.valid) { pos := io.in.bits; posUp := wrap(io.in.bits + 1.S); posDn := wrap(io.in.bits - 1.S); started := true.B }
+  }.elsewhen(holdOff === 0.U && target =/= pos) {
+    val up = !pending(width - 1)
+    pos := Mux(up, posUp, posDn)
+    posUp := Mux(up, wrap(posUp + 1.S), pos)
+    posDn := Mux(up, pos, wrap(posDn - 1.S))
     holdOff := (minEdgeClocks - 1).U
   }.elsewhen(holdOff =/= 0.U) { holdOff := holdOff - 1.U }
   private val q = pos(1, 0)

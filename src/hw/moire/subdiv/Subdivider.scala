@@ -160,8 +160,8 @@ class Subdivider(val p: SubdivParams) extends Module with moire.emit.Latency {
       outPos := out.position; genStarted := true.B
       outPosUp := wrapPos(out.position + 1.S); outPosDn := wrapPos(out.position - 1.S)
     }
-  }.elsewhen(waitCnt === 0.U && pending =/= 0.S) {
-    val up = pending > 0.S
+  }.elsewhen(waitCnt === 0.U && out.position =/= outPos) { // pending =/= 0 as an equality, beside the subtract
+    val up = !pending(p.positionWidth - 1) // pending > 0 here: its sign bit alone
     outPos := Mux(up, outPosUp, outPosDn)
     outPosUp := Mux(up, wrapPos(outPosUp + 1.S), outPos)
     outPosDn := Mux(up, outPos, wrapPos(outPosDn - 1.S))
