@@ -28,6 +28,7 @@ class QuadratureOut(val width: Int, val zBits: Int, val minEdgeClocks: Int = 1) 
   private val posDn = RegInit(-1.S(width.W))
   private def wrap(v: SInt): SInt = v(width - 1, 0).asSInt
   private val pending = wrap(target - pos)
+  moire.emit.Unused("pending", pending) // a step reads only its sign bit; a board may leave backlog open
   when(io.in.valid) { target := io.in.bits }
   when(!started) {
     when(io.in.valid) { pos := io.in.bits; posUp := wrap(io.in.bits + 1.S); posDn := wrap(io.in.bits - 1.S); started := true.B }
