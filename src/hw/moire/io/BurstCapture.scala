@@ -8,16 +8,23 @@ import moire.protocol.BurstLayout
   * @param samples block-RAM depth: the longest burst (65,536 x 29 bits = 1.9 Mbit: 116 DP16KD after yosys synth_ecp5,
   *                232 M9K by arithmetic at 8K x 1 each)
   */
-case class BurstParams(samples: Int = 65536) {
+case class BurstParams(samples: Int = 65536, bankWords: Int = 16384) {
   require(samples >= 2 && samples <= (1 << 20), s"burst samples must be in 2..${1 << 20}, got $samples")
+  require(bankWords >= 2 && (bankWords & (bankWords - 1)) == 0, s"bank words must be a power of two >= 2, got $bankWords")
   val addrBits: Int = log2Ceil(samples)
+  /** RAM banks, each with its own address registers (one address net across every block RAM of a 65,536-word
+    * RAM is what limits the board tops): samples / bankWords when that divides, else one.
+    */
+  val banks: Int = if (samples > bankWords && samples % bankWords == 0) samples / bankWords else 1
+  /** Address bits inside a bank. */
+  val bankAddrBits: Int = log2Ceil(samples / banks)
   /** Bits of a length or pre-trigger count (0..samples). */
   val countBits: Int = log2Ceil(samples + 1)
   /** Clocks from a sample at `in` to its write into the RAM (an input register, then a registered write port:
     * address, data and enable are registered in front of the block RAMs, whose write enables fan out widely).
     */
   val latency: Int = 2
-  def moduleName: String = s"BurstCapture_n$samples"
+  def moduleName: String = s"BurstCapture_n$samples" + (if (banks > 1) s"_b$banks" else "")
   /** A requested length (a register's u32) as used: 1..samples. */
   def length(requested: Long): Int = math.min(math.max(requested, 1L), samples.toLong).toInt
   /** A requested pre-trigger count as used: 0..length-1. */
@@ -84,7 +91,9 @@ class BurstCapture(val p: BurstParams) extends Module {
   import BurstLayout.Trigger
 
   private val s = RegNext(io.in, 0.U.asTypeOf(io.in))
-  private val mem = SyncReadMem(p.samples, UInt(BurstLayout.width.W))
+  private val mems = Seq.fill(p.banks)(SyncReadMem(p.samples / p.banks, UInt(BurstLayout.width.W)))
+  private def bankOf(a: UInt): UInt = if (p.banks == 1) 0.U else a(p.addrBits - 1, p.bankAddrBits)
+  private def inBank(a: UInt): UInt = a(p.bankAddrBits - 1, 0)
 
   private val state = RegInit(BurstState.Idle.U(2.W))
   private val mode = RegInit(0.U(Trigger.bits.W))
@@ -121,10 +130,12 @@ class BurstCapture(val p: BurstParams) extends Module {
   }
 
   private val capturing = state === BurstState.Waiting.U || state === BurstState.Capturing.U
-  private val wEn = RegNext(false.B, false.B)
-  private val wAddr = Reg(UInt(p.addrBits.W))
-  private val wData = Reg(UInt(BurstLayout.width.W))
-  when(wEn) { mem.write(wAddr, wData) }
+  // the write port registered per bank: address, data and enable in front of each bank's block RAMs
+  private val wEn = RegInit(VecInit(Seq.fill(p.banks)(false.B)))
+  private val wAddr = Reg(Vec(p.banks, UInt(p.bankAddrBits.W)))
+  private val wData = Reg(Vec(p.banks, UInt(BurstLayout.width.W)))
+  wEn.foreach(_ := false.B)
+  for (i <- 0 until p.banks) when(wEn(i)) { mems(i).write(wAddr(i), wData(i)) }
   private val arm = io.arm && !sending
   when(arm) {
     val l = Mux(io.config.length === 0.U, 1.U, Mux(io.config.length > p.samples.U, p.samples.U, io.config.length))
@@ -137,7 +148,9 @@ class BurstCapture(val p: BurstParams) extends Module {
   }.elsewhen(s.valid) {
     prevValid := true.B; prevAbove := above; prevBelow := below; prevZ := z
     when(capturing) {
-      wEn := true.B; wAddr := wptr; wData := s.bits.word
+      for (i <- 0 until p.banks) when(bankOf(wptr) === i.U) {
+        wEn(i) := true.B; wAddr(i) := inBank(wptr); wData(i) := s.bits.word
+      }
       wptr := Mux(wptr === len - 1.U, 0.U, wptr + 1.U)
       held := Mux(held === len, held, held + 1.U)
       val start = state === BurstState.Waiting.U && held >= pre && fired
@@ -163,7 +176,10 @@ class BurstCapture(val p: BurstParams) extends Module {
   read2 := read1
   private val inflight = read1 || read2
   q.io.enq.valid := read2
-  q.io.enq.bits := RegNext(mem.read(raddr, issue))
+  // each bank reads with its own enable (so each keeps its own address register); the bank is chosen after
+  private val reads = VecInit(mems.zipWithIndex.map { case (m, i) => m.read(inBank(raddr), issue && bankOf(raddr) === i.U) })
+  private val readBank = RegNext(bankOf(raddr))
+  q.io.enq.bits := RegNext(reads(readBank))
   io.out <> q.io.deq
   when(io.read && state === BurstState.Done.U && !sending) {
     sending := true.B; raddr := wptr; issued := 0.U
