@@ -176,15 +176,22 @@ class BurstCapture(val p: BurstParams) extends Module {
   read2 := read1
   private val inflight = read1 || read2
   q.io.enq.valid := read2
-  // each bank reads with its own enable (so each keeps its own address register); the bank is chosen after
-  private val reads = VecInit(mems.zipWithIndex.map { case (m, i) => m.read(inBank(raddr), issue && bankOf(raddr) === i.U) })
+  // each bank reads from its own address register (one net across every block RAM of the burst limits the
+  // board tops): the copy of bank i is loaded whenever raddr takes a value in bank i, so it holds raddr's
+  // offset whenever raddr is in bank i; the bank is chosen after the RAMs
+  private val bankAddr = Reg(Vec(p.banks, UInt(p.bankAddrBits.W)))
+  private def setRaddr(a: UInt): Unit = {
+    raddr := a
+    for (i <- 0 until p.banks) when(bankOf(a) === i.U) { bankAddr(i) := inBank(a) }
+  }
+  private val reads = VecInit(mems.zipWithIndex.map { case (m, i) => m.read(bankAddr(i), issue && bankOf(raddr) === i.U) })
   private val readBank = RegNext(bankOf(raddr))
   q.io.enq.bits := RegNext(reads(readBank))
   io.out <> q.io.deq
   when(io.read && state === BurstState.Done.U && !sending) {
-    sending := true.B; raddr := wptr; issued := 0.U
+    sending := true.B; setRaddr(wptr); issued := 0.U
   }.elsewhen(sending) {
-    when(issue) { raddr := Mux(raddr === len - 1.U, 0.U, raddr + 1.U); issued := issued + 1.U }
+    when(issue) { setRaddr(Mux(raddr === len - 1.U, 0.U, raddr + 1.U)); issued := issued + 1.U }
     when(issued === len && !inflight && q.io.count === 0.U) { sending := false.B }
   }
 
