@@ -79,6 +79,8 @@ class CordicRtlSpec extends AnyFlatSpec with ChiselScalatestTester {
       CordicParams(CordicMode.Asin, 12, 14, peakTableSize = 16, pipelineEvery = 5),
       CordicParams(CordicMode.AsinDouble, 24, 32, peakTableSize = 1024, guardBits = 4),
       CordicParams(CordicMode.Acos, 9, 12, peakTableSize = 2, fracBits = 11),
+      // one entry, one register group: the table read sits between the input stage and the last iteration's
+      CordicParams(CordicMode.AcosDouble, 10, 12, peakTableSize = 1, pipelineEvery = 10),
       // Shifts of 2i >= 64 bits (n = 34): once wrong in the model, where JVM shifts wrap mod 64.
       CordicParams(CordicMode.AsinDouble, 34, 31, fracBits = 28, pipelineEvery = 2, rounding = Rounding.Truncate),
       CordicParams(CordicMode.AcosDouble, 40, 48, guardBits = 4))

@@ -110,20 +110,31 @@ class Cordic(val p: CordicParams) extends Module with moire.emit.Latency {
         }
     }
 
-    // Peak lookup table, resolved in the input stage and carried beside the iterations.
-    val table: Option[(Bool, SInt)] = if (p.peakTableSize > 0) {
+    // Peak lookup table: hit, sign and entry index resolved in the input stage and registered; the entry read in
+    // the next stage (a ROM of its final values for either sign, no adder after the read), then carried beside the
+    // iterations.
+    val table: Option[(Bool, Bool, UInt)] = if (p.peakTableSize > 0) {
       val pt = PeakTable(p)
       val a = sineIn
       val mag = Mux(a < 0.S, -a, a)
       val hit = mag >= lit(pt.start, p.width + 2)
       val offset = (mag - lit(pt.start, p.width + 2)).asUInt
       Unused("lut_offset", offset) // the bits below an entry's bin pick nothing; `hit` covers those above
-      val rom = VecInit(pt.entries.map(e => lit(e, p.angleBits)))
-      val v = if (pt.size == 1) rom(0) else rom((offset >> pt.binShift)(log2Ceil(pt.size) - 1, 0))
-      val signed = Mux(a < 0.S, -v, v)
-      val angle = if (p.mode.isAcos) lit(1L << (p.angleBits - 2), p.angleBits) - signed else signed
-      Some((hit, angle))
+      val idx = if (pt.size == 1) 0.U(1.W) else (offset >> pt.binShift)(log2Ceil(pt.size) - 1, 0)
+      Some((hit, a < 0.S, idx))
     } else None
+    /** The table's angle for a registered sign and index: entry e as e or -e, and for arccos 90 degrees minus that. */
+    def tableAngle(neg: Bool, idx: UInt): SInt = {
+      val pt = PeakTable(p)
+      val quarter = 1L << (p.angleBits - 2)
+      def angle(e: Long): Long = if (p.mode.isAcos) quarter - e else e
+      // z keeps angleBits: 180 degrees wraps to -180 here as it does at the output
+      val (turn, half) = (1L << p.angleBits, 1L << (p.angleBits - 1))
+      def wrap(v: Long): Long = Math.floorMod(v + half, turn) - half
+      def rom(sign: Long) = VecInit(pt.entries.map(e => lit(wrap(angle(sign * e)), p.angleBits)))
+      val (pos, negs) = (rom(1), rom(-1))
+      if (pt.size == 1) Mux(neg, negs(0), pos(0)) else Mux(neg, negs(idx), pos(idx))
+    }
 
     def stage[T <: Data](v: T, name: String): T = { val reg = Reg(chiselTypeOf(v)); reg := v; reg.suggestName(name); reg }
 
@@ -164,7 +175,7 @@ class Cordic(val p: CordicParams) extends Module with moire.emit.Latency {
     }
 
     var state: State = stage(s0, "pre")
-    var tableState = table.map { case (h, v) => (stage(h, "lut_hit_0"), stage(v, "lut_val_0")) }
+    var tableState = table.map { case (h, n, i) => (stage(h, "lut_hit_0"), tableAngle(stage(n, "lut_neg_0"), stage(i, "lut_idx_0"))) }
     for (((i, k), idx) <- p.steps.zip(p.angleTable).zipWithIndex) {
       val next = step(state, i, k)
       if ((idx + 1) % p.pipelineEvery == 0 || idx == p.iterations - 1) {
