@@ -8,27 +8,50 @@ import moire.protocol.BurstLayout
   * @param samples block-RAM depth: the longest burst (65,536 x 29 bits = 1.9 Mbit: 116 DP16KD after yosys synth_ecp5,
   *                232 M9K by arithmetic at 8K x 1 each)
   */
-case class BurstParams(samples: Int = 65536, bankWords: Int = 16384) {
+case class BurstParams(samples: Int = 65536, bankWords: Int = 16384, groupBits: Int = 8) {
   require(samples >= 2 && samples <= (1 << 20), s"burst samples must be in 2..${1 << 20}, got $samples")
   require(bankWords >= 2 && (bankWords & (bankWords - 1)) == 0, s"bank words must be a power of two >= 2, got $bankWords")
+  require(groupBits >= 1, s"group bits must be >= 1, got $groupBits")
   val addrBits: Int = log2Ceil(samples)
-  /** RAM banks, each with its own address registers (one address net across every block RAM of a 65,536-word
-    * RAM is what limits the board tops): samples / bankWords when that divides, else one.
-    */
+  /** RAM banks: samples / bankWords when that divides, else one. */
   val banks: Int = if (samples > bankWords && samples % bankWords == 0) samples / bankWords else 1
   /** Address bits inside a bank. */
   val bankAddrBits: Int = log2Ceil(samples / banks)
+  /** Each bank's word in groups of `groupBits` bits, each group a RAM of its own with its own address, data and
+    * enable registers next to its block RAMs (a register that drives the blocks of a whole bank reaches across
+    * the die): the bit ranges (lsb, width) of the groups.
+    */
+  val groups: Seq[(Int, Int)] =
+    (0 until BurstLayout.width by groupBits).map(lsb => (lsb, math.min(groupBits, BurstLayout.width - lsb)))
   /** Bits of a length or pre-trigger count (0..samples). */
   val countBits: Int = log2Ceil(samples + 1)
-  /** Clocks from a sample at `in` to its write into the RAM (an input register, then a registered write port:
-    * address, data and enable are registered in front of the block RAMs, whose write enables fan out widely).
+  /** Clocks from a sample at `in` to its write into the RAM: an input register, the bank's write registers,
+    * the group's write registers.
     */
-  val latency: Int = 2
-  def moduleName: String = s"BurstCapture_n$samples" + (if (banks > 1) s"_b$banks" else "")
+  val latency: Int = 3
+  /** Clocks from a read issued (its address in the read register) to the word at the queue: the group's address
+    * register, the RAM, the group's output register, the bank mux's register.
+    */
+  val readLatency: Int = 4
+  def moduleName: String = s"BurstCapture_n$samples" + (if (banks > 1) s"_b$banks" else "") + s"_g${groups.size}"
   /** A requested length (a register's u32) as used: 1..samples. */
   def length(requested: Long): Int = math.min(math.max(requested, 1L), samples.toLong).toInt
   /** A requested pre-trigger count as used: 0..length-1. */
   def pre(requested: Long, length: Int): Int = math.min(math.max(requested, 0L), length - 1L).toInt
+}
+
+/** A register that follows `d` one clock later and that synthesis keeps as a copy of its own: it loads only when
+  * it differs from `d`, an enable that reads its own output, so yosys' opt_merge does not fold the copies of one
+  * signal into one register (copies with the same input and no such loop are merged).
+  */
+object Copy {
+  def apply[T <: Data](d: T, init: Option[T] = None): T = {
+    val q = init.fold(Reg(chiselTypeOf(d)))(RegInit(_))
+    val load = WireDefault(q.asUInt =/= d.asUInt)
+    dontTouch(load) // else firtool folds "load d when q differs from d" into "load d"
+    when(load) { q := d }
+    q
+  }
 }
 
 /** One full-rate sample offered to the capture: the packed [[BurstLayout]] word, and what the trigger
@@ -70,7 +93,7 @@ object BurstState {
   * is the trigger sample; `length - pre` samples from it on end the burst (state Done). The anchors hold
   * index, position and reference count of the trigger sample (burst sample `pre`) and the last one.
   * `read` (in Done) sends the `length` words, oldest first, on `out`; `arm` is ignored while sending.
-  * Latency `p.latency` clock from `in` to the RAM. [[BurstModel]] is the bit-accurate model.
+  * Latency `p.latency` clocks from `in` to the RAM, `p.readLatency` from a read to the queue. [[BurstModel]] is the bit-accurate model.
   */
 class BurstCapture(val p: BurstParams) extends Module {
   override def desiredName: String = p.moduleName
@@ -91,7 +114,8 @@ class BurstCapture(val p: BurstParams) extends Module {
   import BurstLayout.Trigger
 
   private val s = RegNext(io.in, 0.U.asTypeOf(io.in))
-  private val mems = Seq.fill(p.banks)(SyncReadMem(p.samples / p.banks, UInt(BurstLayout.width.W)))
+  // mems(bank)(group): the group's bits of the bank's words
+  private val mems = Seq.fill(p.banks)(p.groups.map { case (_, w) => SyncReadMem(p.samples / p.banks, UInt(w.W)) })
   private def bankOf(a: UInt): UInt = if (p.banks == 1) 0.U else a(p.addrBits - 1, p.bankAddrBits)
   private def inBank(a: UInt): UInt = a(p.bankAddrBits - 1, 0)
 
@@ -130,12 +154,17 @@ class BurstCapture(val p: BurstParams) extends Module {
   }
 
   private val capturing = state === BurstState.Waiting.U || state === BurstState.Capturing.U
-  // the write port registered per bank: address, data and enable in front of each bank's block RAMs
+  // the write port registered per bank (address, data, enable), then per group next to its block RAMs
   private val wEn = RegInit(VecInit(Seq.fill(p.banks)(false.B)))
   private val wAddr = Reg(Vec(p.banks, UInt(p.bankAddrBits.W)))
   private val wData = Reg(Vec(p.banks, UInt(BurstLayout.width.W)))
   wEn.foreach(_ := false.B)
-  for (i <- 0 until p.banks) when(wEn(i)) { mems(i).write(wAddr(i), wData(i)) }
+  for (i <- 0 until p.banks; ((lsb, w), g) <- p.groups.zipWithIndex) {
+    val en = Copy(wEn(i), Some(false.B))
+    val addr = Copy(wAddr(i))
+    val data = RegNext(wData(i)(lsb + w - 1, lsb))
+    when(en) { mems(i)(g).write(addr, data) }
+  }
   private val arm = io.arm && !sending
   when(arm) {
     val l = Mux(io.config.length === 0.U, 1.U, Mux(io.config.length > p.samples.U, p.samples.U, io.config.length))
@@ -164,29 +193,30 @@ class BurstCapture(val p: BurstParams) extends Module {
     }
   }
 
-  // ---- read-out: oldest first (the ring is full when Done, so the oldest is at wptr); the RAM's output is
-  // registered once more before the queue (the read mux across the block RAMs), so two reads are in flight ----
-  private val q = Module(new Queue(UInt(BurstLayout.width.W), 3))
+  // ---- read-out: oldest first (the ring is full when Done, so the oldest is at wptr). A read goes through the
+  // group's address register, the RAM, the group's output register and the bank mux's register: p.readLatency
+  // reads in flight, the queue holds them all ----
+  private val q = Module(new Queue(UInt(BurstLayout.width.W), p.readLatency + 1))
   private val raddr = RegInit(0.U(p.addrBits.W))
   private val issued = RegInit(0.U(p.countBits.W))
-  private val read1 = RegInit(false.B)
-  private val read2 = RegInit(false.B)
-  private val issue = sending && issued =/= len && (q.io.count +& read1.asUInt +& read2.asUInt) < 3.U
-  read1 := issue
-  read2 := read1
-  private val inflight = read1 || read2
-  q.io.enq.valid := read2
-  // each bank reads from its own address register (one net across every block RAM of the burst limits the
-  // board tops): the copy of bank i is loaded whenever raddr takes a value in bank i, so it holds raddr's
-  // offset whenever raddr is in bank i; the bank is chosen after the RAMs
+  private val flight = RegInit(VecInit(Seq.fill(p.readLatency)(false.B)))
+  private val inflight = flight.asUInt.orR
+  private val issue = sending && issued =/= len && (q.io.count +& PopCount(flight)) < (p.readLatency + 1).U
+  flight(0) := issue
+  for (k <- 1 until p.readLatency) flight(k) := flight(k - 1)
+  q.io.enq.valid := flight(p.readLatency - 1)
+  // the bank's read address register is loaded whenever raddr takes a value in that bank, so it holds raddr's
+  // offset whenever raddr is in that bank; each group follows it a clock later; every RAM reads every clock
   private val bankAddr = Reg(Vec(p.banks, UInt(p.bankAddrBits.W)))
   private def setRaddr(a: UInt): Unit = {
     raddr := a
     for (i <- 0 until p.banks) when(bankOf(a) === i.U) { bankAddr(i) := inBank(a) }
   }
-  private val reads = VecInit(mems.zipWithIndex.map { case (m, i) => m.read(bankAddr(i), issue && bankOf(raddr) === i.U) })
-  private val readBank = RegNext(bankOf(raddr))
-  q.io.enq.bits := RegNext(reads(readBank))
+  private val words = VecInit(mems.zipWithIndex.map { case (groups, i) =>
+    Cat(groups.reverse.map(m => RegNext(m.read(Copy(bankAddr(i)), true.B))))
+  })
+  private val readBank = ShiftRegister(bankOf(raddr), p.readLatency - 1)
+  q.io.enq.bits := RegNext(if (p.banks == 1) words(0) else words(readBank))
   io.out <> q.io.deq
   when(io.read && state === BurstState.Done.U && !sending) {
     sending := true.B; setRaddr(wptr); issued := 0.U
