@@ -72,7 +72,10 @@ class QuadComp(val p: QuadCompParams) extends Module with moire.emit.Latency {
   private val armed = RegInit(true.B)
   private val havePrev = RegInit(false.B)
   private val prevOctant = RegInit(0.U(3.W))
-  private val corr = FixedHw.shift(acc, p.averageLog2, r)(a - 1, 0).asSInt
+  private def rounded(v: SInt): SInt = FixedHw.shift(v, p.averageLog2, r)(a - 1, 0).asSInt
+  // the averaged correction, acc / 2^averageLog2 rounded, registered beside acc from acc's next value (the
+  // rounding is not in series with the quadrant tests that read it)
+  private val corr = RegInit(0.S(a.W))
   private val d = corr.pad(a + 2)
 
   private val zs = asin.io.out.bits.z.pad(a + 2)
@@ -93,8 +96,10 @@ class QuadComp(val p: QuadCompParams) extends Module with moire.emit.Latency {
 
   when(valid) {
     when(flag) {
-      acc := Mux(first, (pending << p.averageLog2).pad(accBits),
+      val next = Mux(first, (pending << p.averageLog2).pad(accBits),
         acc + pending.pad(accBits) - FixedHw.shift(acc, p.averageLog2, r))
+      acc := next
+      corr := rounded(next)
       first := false.B
     }
     flag := trig
