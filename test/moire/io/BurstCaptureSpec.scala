@@ -76,8 +76,10 @@ class BurstCaptureSpec extends AnyFlatSpec with ChiselScalatestTester with Match
 
   "BurstCapture" should "match BurstModel clock by clock and send the burst oldest first under back-pressure" in {
     for ((samples, group) <- cases.groupBy(_.samples).toSeq.sortBy(_._1)) {
-      // 32 and 64 samples in banks of 8 words (4 and 8 banks); the others in one RAM
-      val banked = BurstParams(samples, bankWords = if (samples >= 32) 8 else 16384)
+      // 32 and 64 samples in banks of 8 words (4 and 8 banks), the others in one; words in groups of 8 bits
+      // (4 groups), 5 bits (6, the last of 4) or one group of 29
+      val banked = BurstParams(samples, bankWords = if (samples >= 32) 8 else 16384,
+        groupBits = samples match { case 16 => BurstLayout.width; case 17 => 5; case _ => 8 })
       test(new BurstCapture(banked)) { dut =>
         for (c <- group) withClue(s"samples ${c.samples}, ${c.cfg}, arm at ${c.armAt}, seed ${c.seed}: ") {
           val m = new BurstModel(BurstParams(samples))
