@@ -132,11 +132,13 @@ class FrameTx(val n: Int, val countWidth: Int) extends Module {
   io.records.ready := io.out.valid && inRecords && io.out.ready && recByte === (recordBytes - 1).U
   io.burstWords.ready := busy && inWords && io.out.ready && recByte === 3.U
   when(io.burstWords.fire) { sent := sent + 1.U }
-  crcPending := false.B
+  // crcByte takes every byte (no enable: the handshake does not reach its flip-flops); crcPending says whether the
+  // CRC takes it
+  crcByte := byte
+  crcPending := io.out.fire && pos >= CrcFrom.U && pos < bodyEnd
   when(crcPending) { crc := Crc16.next(crc, crcByte) }
   when(io.out.fire) {
     pos := pos + 1.U
-    when(pos >= CrcFrom.U && pos < bodyEnd) { crcByte := byte; crcPending := true.B }
     when(inRecords) { recByte := Mux(recByte === (recordBytes - 1).U, 0.U, recByte + 1.U) }
     when(inWords) { recByte := Mux(recByte === 3.U, 0.U, recByte + 1.U) }
     when(pos === crcHiAt) { busy := false.B; seq := seq + 1.U }
