@@ -162,6 +162,7 @@ class CommandRx extends Module {
   private val crcAt = CommandBytes - CrcBytes
   private val crc = Reg(UInt(16.W))
   private val cmdV = RegInit(false.B)
+  private val wr = RegInit(false.B)
   private val err = RegInit(false.B)
   cmdV := false.B
   err := false.B
@@ -183,12 +184,13 @@ class CommandRx extends Module {
         val op = at(AtOp)
         val ok = got === crc && (op === OpRead.U || op === OpWrite.U)
         cmdV := ok
+        wr := op === OpWrite.U // decoded here, beside cmdV: the op compare is not in series with the core's writes
         err := !ok
       }
     }
   }
   io.cmd.valid := cmdV
-  io.cmd.bits.write := at(AtOp) === OpWrite.U
+  io.cmd.bits.write := wr
   io.cmd.bits.addr := at(AtCmdAddr)
   io.cmd.bits.value := Cat((0 until 4).reverse.map(i => at(AtCmdValue + i)))
   io.error := err
