@@ -218,7 +218,7 @@ class BoardCore(val p: BoardParams) extends Module {
     StatusBit.OtrCos -> otrCosSticky, StatusBit.Present -> present)
   private val statusWord = VecInit(Seq.tabulate(StatusBit.named.map(_._1).max + 1)(statusFlags.toMap.getOrElse(_, false.B))).asUInt
   private val adcFormatValue = if (p.adcFormat == AdcFormat.OffsetBinary) Registers.AdcOffsetBinary else Registers.AdcTwosComplement
-  private def read(addr: UInt): UInt = MuxLookup(addr, 0.U(32.W))(Seq(
+  private def readable: Seq[(Int, UInt)] = Seq(
     Registers.Id -> Registers.IdValue.U(32.W), Registers.Version -> StreamV1.Version.U, Registers.Status -> statusWord,
     Registers.Control -> enable.asUInt, Registers.Decimation -> decim, Registers.DroppedTotal -> droppedTotal,
     Registers.CmdErrors -> cmdErrors, Registers.Position -> livePos.asUInt, Registers.AdcClockHz -> p.adcClockHz.U,
@@ -227,8 +227,8 @@ class BoardCore(val p: BoardParams) extends Module {
     Registers.BurstTrigger -> burstCfg.mode, Registers.BurstLength -> burstCfg.length, Registers.BurstPre -> burstCfg.pre,
     Registers.BurstThreshold -> burstCfg.threshold, Registers.BurstTarget -> burstCfg.target.asUInt,
     Registers.BurstState -> Cat(burst.io.sending || infoPending, burst.io.state), Registers.BurstDepth -> p.burst.samples.U
-  ).map { case (r, v) => r.addr.U(8.W) -> Cat(0.U(32.W), v)(31, 0) } ++
-    harmonicKept.zipWithIndex.map { case (v, i) => (Registers.HarmonicBase + i).U(8.W) -> v })
+  ).map { case (r, v) => r.addr -> Cat(0.U(32.W), v)(31, 0) } ++
+    harmonicKept.zipWithIndex.map { case (v, i) => (Registers.HarmonicBase + i) -> v }
   private val cmd = cmdRx.io.cmd
   private val isWrite = cmd.valid && cmd.bits.write
   clear := isWrite && cmd.bits.addr === Registers.Control.addr.U && cmd.bits.value(ControlBit.Clear)
@@ -264,12 +264,16 @@ class BoardCore(val p: BoardParams) extends Module {
     when(harmonicPort.we && cmd.bits.addr === (Registers.HarmonicBase + i).U) { r := kept }
     r
   }
-  // The reply reads the register one clock later, so a write answers with the new value.
+  // The reply reads the register one clock later, so a write answers with the new value. The address is decoded
+  // to one select per register beside the command and the selected value registered: a reply takes 2 clocks.
   private val replies = Module(new Queue(new RegReply, 4))
-  private val replyAddr = RegNext(cmd.bits.addr)
-  replies.io.enq.valid := RegNext(cmd.valid, false.B)
+  private val regs = readable
+  require(regs.map(_._1).distinct.size == regs.size, "two readable registers share an address")
+  private val readSel = RegNext(VecInit(regs.map { case (a, _) => cmd.bits.addr === a.U }))
+  private val replyAddr = ShiftRegister(cmd.bits.addr, 2)
+  replies.io.enq.valid := ShiftRegister(cmd.valid, 2, false.B, true.B)
   replies.io.enq.bits.addr := replyAddr
-  replies.io.enq.bits.value := read(replyAddr)
+  replies.io.enq.bits.value := RegNext(Mux1H(readSel, regs.map(_._2)))
   framer.io.reply <> replies.io.deq
   private val lostReply = replies.io.enq.valid && !replies.io.enq.ready
   when(cmdRx.io.error || lostReply) { cmdErrors := cmdErrors + 1.U }
