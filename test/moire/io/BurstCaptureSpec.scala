@@ -80,7 +80,7 @@ class BurstCaptureSpec extends AnyFlatSpec with ChiselScalatestTester with Match
       // (4 groups), 5 bits (6, the last of 4) or one group of 29
       val banked = BurstParams(samples, bankWords = if (samples >= 32) 8 else 16384,
         groupBits = samples match { case 16 => BurstLayout.width; case 17 => 5; case _ => 8 })
-      test(new BurstCapture(banked)) { dut =>
+      test(new BurstCapture(banked)).withAnnotations(moire.cordic.SimSupport.backend) { dut =>
         for (c <- group) withClue(s"samples ${c.samples}, ${c.cfg}, arm at ${c.armAt}, seed ${c.seed}: ") {
           val m = new BurstModel(BurstParams(samples))
           val sched = schedule(c)
