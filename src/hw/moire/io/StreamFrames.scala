@@ -102,20 +102,28 @@ class FrameTx(val n: Int, val countWidth: Int) extends Module {
   private val header = VecInit(Seq(Sync0.U(8.W), Sync1.U(8.W), frameType) ++ le(seq, 2))
   require(header.size == HeaderBytes && replyBytes.size == ReplyBytes - CrcBytes - AtReplyAddr &&
     infoBytes.size == BurstInfoBytes - CrcBytes - AtBurstLength)
-  // the first CRC byte, by kind, and the one after it, registered: they change only when a frame starts (kind and
-  // words), and the two clocks after that (pos 0 to 1, header bytes) read neither
-  private val bodyEnd = RegNext(VecInit(Seq(
-    (refRecordFrameBytes(n) - CrcBytes).U(16.W), (ReplyBytes - CrcBytes).U(16.W), (BurstInfoBytes - CrcBytes).U(16.W),
-    (AtBurstWords.U(16.W) + (words << 2)).pad(16)))(kind), "hffff".U)
-  private val crcHiAt = RegNext(bodyEnd +& 1.U, "h1ffff".U)
   private val isRecords = kind === Kind.Records.U
   private val isSamples = kind === Kind.Samples.U
-  private val inRecords = isRecords && pos >= AtRecords.U && pos < bodyEnd
-  private val inWords = isSamples && pos >= AtBurstWords.U && pos < bodyEnd
+  // Where pos is, as flags registered beside it (no compare of pos with the frame's end in front of the byte mux or
+  // the handshake): the header, the records or words, the first and the second CRC byte. pos only goes to 0 (a frame
+  // starts) or up by one (a byte goes out), so each flag's next value is known from pos one clock ahead.
+  // bodyEndLess1, the position before the first CRC byte, is registered from kind and words: on a frame's first
+  // byte it still holds the previous frame's value, which is above the header like every kind's, so the flags for
+  // pos 1 hold.
+  private val bodyEndLess1 = RegNext(VecInit(Seq(
+    (refRecordFrameBytes(n) - CrcBytes).U(16.W), (ReplyBytes - CrcBytes).U(16.W), (BurstInfoBytes - CrcBytes).U(16.W),
+    (AtBurstWords.U(16.W) + (words << 2)).pad(16)))(kind) - 1.U, "hffff".U)
+  private val bodyStartLess1 = Mux(isRecords, (AtRecords - 1).U, (AtBurstWords - 1).U)
+  private val atHeader = RegInit(false.B)
+  private val inBody = RegInit(false.B)
+  private val atCrcLo = RegInit(false.B)
+  private val atCrcHi = RegInit(false.B)
+  private val inRecords = isRecords && inBody
+  private val inWords = isSamples && inBody
   private val byte = WireDefault(0.U(8.W))
-  when(pos < HeaderBytes.U) { byte := pick(header, pos) }
-    .elsewhen(pos === bodyEnd) { byte := crc(7, 0) }
-    .elsewhen(pos === crcHiAt) { byte := crc(15, 8) }
+  when(atHeader) { byte := pick(header, pos) }
+    .elsewhen(atCrcLo) { byte := crc(7, 0) }
+    .elsewhen(atCrcHi) { byte := crc(15, 8) }
     .elsewhen(kind === Kind.Reply.U) { byte := pick(replyBytes, pos - AtReplyAddr.U) }
     .elsewhen(kind === Kind.Info.U) { byte := pick(infoBytes, pos - AtBurstLength.U) }
     .elsewhen(isSamples && pos < AtBurstCount.U) { byte := pick(offsetBytes, pos - AtBurstOffset.U) }
@@ -127,7 +135,7 @@ class FrameTx(val n: Int, val countWidth: Int) extends Module {
     .otherwise { byte := recBytes(recByte) }
   // a sample frame waits for its next word (the burst RAM answers within a few clocks), a record's first
   // byte for the registered copy, the CRC bytes for the CRC to take the last body byte
-  io.out.valid := busy && !(inWords && !io.burstWords.valid) && !(inRecords && !recFresh) && !(pos === bodyEnd && crcPending)
+  io.out.valid := busy && !(inWords && !io.burstWords.valid) && !(inRecords && !recFresh) && !(atCrcLo && crcPending)
   io.out.bits := byte
   io.records.ready := io.out.valid && inRecords && io.out.ready && recByte === (recordBytes - 1).U
   io.burstWords.ready := busy && inWords && io.out.ready && recByte === 3.U
@@ -135,13 +143,20 @@ class FrameTx(val n: Int, val countWidth: Int) extends Module {
   // crcByte takes every byte (no enable: the handshake does not reach its flip-flops); crcPending says whether the
   // CRC takes it
   crcByte := byte
-  crcPending := io.out.fire && pos >= CrcFrom.U && pos < bodyEnd
+  crcPending := io.out.fire && pos >= CrcFrom.U && !atCrcLo && !atCrcHi
   when(crcPending) { crc := Crc16.next(crc, crcByte) }
   when(io.out.fire) {
     pos := pos + 1.U
+    atHeader := pos < (HeaderBytes - 1).U
+    inBody := pos === bodyStartLess1 || inBody && pos =/= bodyEndLess1
+    atCrcLo := pos === bodyEndLess1
+    atCrcHi := atCrcLo
     when(inRecords) { recByte := Mux(recByte === (recordBytes - 1).U, 0.U, recByte + 1.U) }
     when(inWords) { recByte := Mux(recByte === 3.U, 0.U, recByte + 1.U) }
-    when(pos === crcHiAt) { busy := false.B; seq := seq + 1.U }
+    when(atCrcHi) { busy := false.B; seq := seq + 1.U }
+  }
+  when(startRec || startReply || startInfo || startSamples) {
+    atHeader := true.B; inBody := false.B; atCrcLo := false.B; atCrcHi := false.B
   }
 }
 
