@@ -53,11 +53,14 @@ class HarmonicCompensator(val p: HarmonicParams) extends Module with moire.emit.
     }
   }
 
-  // ---- angle stage: k theta + phi_k modulo one turn ----
+  // ---- angle stage, two clocks: k theta modulo one turn (a multiplier block), then + phi_k ----
+  private val kTheta = reg(Vec(p.harmonics, UInt(p.countBits.W)), VecInit((0 until p.harmonics).map { j =>
+    (io.in.bits * orders(j))(p.countBits - 1, 0)
+  }), "k_theta")
   private val angles = reg(Vec(p.harmonics, UInt(p.countBits.W)), VecInit((0 until p.harmonics).map { j =>
-    ((io.in.bits * orders(j))(p.countBits - 1, 0) + phases(j))(p.countBits - 1, 0)
+    (kTheta(j) + phases(j))(p.countBits - 1, 0)
   }), "angle")
-  private val angleValid = RegNext(io.in.valid, false.B)
+  private val angleValid = ShiftRegister(io.in.valid, 2, false.B, true.B)
 
   // ---- m parallel sine CORDICs ----
   private val sines = (0 until p.harmonics).map { j =>

@@ -84,9 +84,9 @@ case class HarmonicParams(
   val outWidth: Int = countBits + outFrac
 
   /** Clock cycles from in.valid to out.valid: angle stage, CORDIC, product ([[PieceMul]], three
-    * clocks), sum, scale to counts (PieceMul again), rounding, subtract.
+    * clocks), sum, scale to counts (PieceMul again), rounding, subtract; the angle stage is two clocks (k theta, + phi).
     */
-  val latency: Int = 1 + cordic.latency + 2 * PieceMul.latency + 3
+  val latency: Int = 2 + cordic.latency + 2 * PieceMul.latency + 3
 
   def moduleName: String =
     s"HarmonicComp_m${harmonics}_c$countBits" + s"_n${iterations}_b$dataBits" +
