@@ -13,7 +13,7 @@ class TimingLiveSpec extends AnyFlatSpec with Matchers {
   private lazy val cache = os.temp.dir(prefix = "moire-timing-cache-")
   private lazy val opts = TimingOptions(speeds = Seq(6), cache = cache)
   private val rotate = moire.cordic.CordicParams(mode = moire.cordic.CordicMode.Rotate, iterations = 16, width = 18)
-  private val gen = moire.designs.Designs.find("cordic", rotate).toOption.get.place
+  private val gen = moire.designs.Designs.cordic(rotate).place
   private lazy val first = Timing.run(tools, "cordic", gen, opts, _ => ())
 
   "timing" should "place a rotate-mode CORDIC at speed grade 6 at or above 65 MHz" in {
