@@ -53,7 +53,7 @@ class CriticalPathSpec extends AnyFlatSpec with Matchers {
   }
 
   "a missed target" should "show as negative slack" in {
-    val r = SpeedResult(6, 65, Map("clock" -> 50.0), None, 0, 0, 0, 0, Ecp5Cells(Map.empty), 0, cached = false)
+    val r = SpeedResult(6, 65, Map("clock" -> 50.0), None, 0, 0, 0, 0, Ecp5Cells(Map.empty), 0, cached = false, router = "router2")
     r.meets shouldBe false
     r.slackNs shouldBe (1000 / 65.0 - 20.0) +- 1e-9
     r.json("slack_ns").num should be < 0.0

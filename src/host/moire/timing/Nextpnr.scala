@@ -14,9 +14,12 @@ final case class PnrOptions(speed: Int, targetMhz: Double, router: String, outOf
 }
 
 object Nextpnr {
-  /** Runs nextpnr in `work` (which holds synth.json and the .lpf); returns the seconds taken. */
+  /** Runs nextpnr in `work` (which holds synth.json and the .lpf); returns the seconds taken.
+    * Throws [[ToolRun.Stopped]] when router2 does not converge ([[NextpnrWatch]]).
+    */
   def run(tools: Ecp5Tools, o: PnrOptions, work: os.Path, timeoutSeconds: Int, progress: String => Unit): Double =
-    ToolRun.run(s"nextpnr-ecp5 speed ${o.speed}", tools.nextpnr +: o.args, work, work / "nextpnr.log", timeoutSeconds, progress)
+    ToolRun.run(s"nextpnr-ecp5 speed ${o.speed}", tools.nextpnr +: o.args, work, work / "nextpnr.log", timeoutSeconds, progress,
+      new NextpnrWatch)
 
   /** (Fmax per clock, used cells per bel type, worst path per clock) of a `--report` file. */
   def report(text: String, rtl: String => Option[IndexedSeq[String]]): (Map[String, Double], Map[String, Long], Seq[CriticalPath]) = {

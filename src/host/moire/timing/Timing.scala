@@ -64,16 +64,27 @@ object Timing {
   def place(tools: Ecp5Tools, synthDir: os.Path, top: String, p: PnrOptions, timeoutSeconds: Int, progress: String => Unit): SpeedResult = {
     val dir = synthDir / p.tag
     val cached = os.exists(dir / "report.json")
-    var seconds = 0.0
     if (!cached) {
       val tmp = tmpDir(synthDir, p.tag)
       os.copy.over(synthDir / "synth.json", tmp / "synth.json")
       p.lpf.foreach(f => os.copy.over(synthDir / f, tmp / f))
-      progress(s"nextpnr-ecp5 $top, speed ${p.speed}, target ${p.targetMhz} MHz, ${p.router}${if (p.outOfContext) ", out of context" else ""}")
-      seconds = Nextpnr.run(tools, p, tmp, timeoutSeconds, progress)
+      def pnr(q: PnrOptions): Double = {
+        progress(s"nextpnr-ecp5 $top, speed ${q.speed}, target ${q.targetMhz} MHz, ${q.router}${if (q.outOfContext) ", out of context" else ""}")
+        Nextpnr.run(tools, q, tmp, timeoutSeconds, progress)
+      }
+      // router2 that turns and climbs (a congested placement) is given up for router1, and the result says so.
+      val (seconds, router) = try (pnr(p), p.router) catch {
+        case e: ToolRun.Stopped if p.router == "router2" =>
+          progress(s"${e.getMessage}; again with router1")
+          os.move.over(tmp / "nextpnr.log", tmp / "nextpnr-router2.log")
+          (pnr(p.copy(router = "router1")), s"router1 (${e.why})")
+      }
       os.write.over(tmp / "seconds", f"$seconds%.1f")
+      os.write.over(tmp / "router", router)
       os.remove.all(dir); os.move(tmp, dir)
-    } else seconds = os.read(dir / "seconds").trim.toDoubleOption.getOrElse(0.0)
+    }
+    val seconds = os.read(dir / "seconds").trim.toDoubleOption.getOrElse(0.0)
+    val router = if (os.isFile(dir / "router")) os.read(dir / "router").trim else p.router
     def rtl(name: String): Option[IndexedSeq[String]] = {
       val f = synthDir / os.RelPath(name).last
       if (os.isFile(f)) Some(os.read.lines(f)) else None
@@ -84,7 +95,7 @@ object Timing {
     val worst = if (fmax.isEmpty) paths.sortBy(-_.delayNs).headOption
       else paths.filter(_.clock == fmax.minBy(_._2)._1).sortBy(-_.delayNs).headOption.orElse(paths.sortBy(-_.delayNs).headOption)
     SpeedResult(p.speed, p.targetMhz, fmax, worst, used.getOrElse("TRELLIS_COMB", 0L), used.getOrElse("TRELLIS_FF", 0L),
-      used.getOrElse("DP16KD", 0L), used.getOrElse("MULT18X18D", 0L), cells, seconds, cached)
+      used.getOrElse("DP16KD", 0L), used.getOrElse("MULT18X18D", 0L), cells, seconds, cached, router)
   }
 
   /** The whole flow for one design. */

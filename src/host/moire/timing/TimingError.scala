@@ -1,4 +1,4 @@
 package moire.timing
 
 /** A timing run that cannot go on (tools missing, a tool failed), said in one line. */
-final class TimingError(msg: String) extends moire.MoireError(msg)
+class TimingError(msg: String) extends moire.MoireError(msg)

@@ -4,10 +4,11 @@ package moire.timing
   * @param fmaxMhz achieved Fmax per clock (nextpnr's names; `clock` out of context)
   * @param luts TRELLIS_COMB sites used (LUT4s, carry halves and route-through LUTs)
   * @param synth cells after `synth_ecp5` (LUT4, CCU2C carry cells, ...), shared by every speed grade
+  * @param router the nextpnr router that made the result, with why when it is not the one asked for
   */
 final case class SpeedResult(speed: Int, targetMhz: Double, fmaxMhz: Map[String, Double], criticalPath: Option[CriticalPath],
                              luts: Long, registers: Long, brams: Long, multipliers: Long, synth: Ecp5Cells,
-                             seconds: Double, cached: Boolean) {
+                             seconds: Double, cached: Boolean, router: String) {
   /** The slowest clock's Fmax. */
   def fmax: Double = if (fmaxMhz.isEmpty) Double.PositiveInfinity else fmaxMhz.values.min
   def slackNs: Double = 1000.0 / targetMhz - 1000.0 / fmax
@@ -18,7 +19,8 @@ final case class SpeedResult(speed: Int, targetMhz: Double, fmaxMhz: Map[String,
     "fmax_mhz_per_clock" -> ujson.Obj.from(fmaxMhz.toSeq.sortBy(_._1).map { case (c, f) => c -> ujson.Num(r2(f)) }),
     "critical_path" -> criticalPath.map(_.json).getOrElse(ujson.Null),
     "luts" -> n(luts), "lut4_logic" -> n(synth.lut4), "carry_cells" -> n(synth.carry), "registers" -> n(registers), "brams" -> n(brams),
-    "multipliers" -> n(multipliers), "pnr_seconds" -> math.round(seconds).toDouble, "cached" -> cached)
+    "multipliers" -> n(multipliers), "pnr_seconds" -> math.round(seconds).toDouble, "cached" -> cached,
+    "router" -> router)
 
   private def n(x: Long) = ujson.Num(x.toDouble)
   private def r2(x: Double) = if (x.isInfinite) 0.0 else math.round(x * 100) / 100.0
@@ -40,6 +42,7 @@ final case class TimingResult(design: String, top: String, outOfContext: Boolean
         s"${if (s.fmaxMhz.size > 1) s.fmaxMhz.toSeq.sortBy(_._1).map { case (c, f) => f"$c $f%.1f" }.mkString(" [", ", ", "]") else ""}\n"
       b ++= s"    ${s.luts} LUT4 sites (${s.synth.lut4} LUT4 + ${s.synth.carry} carry cells), ${s.registers} registers, ${s.brams} block RAMs, ${s.multipliers} multipliers\n"
       s.criticalPath.foreach(p => b ++= s"    critical path: ${p.text}\n")
+      if (s.router.contains(' ')) b ++= s"    routed with ${s.router}\n"
     }
     b.toString
   }
