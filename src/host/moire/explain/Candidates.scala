@@ -74,8 +74,7 @@ final class Candidates(e: SignalEngine) {
     * (of `idx` when given: a fold), scaled to n.
     */
   def profile(sp: ModelSpec, stride: Int, idx: Array[Int] = null): Double = {
-    val fcB = sp.bw.getOrElse("both", Double.PositiveInfinity); val fcS = sp.bw.getOrElse("sin", Double.PositiveInfinity)
-    val fcC = sp.bw.getOrElse("cos", Double.PositiveInfinity); val w = 2 * math.Pi * sp.skewS
+    val resp = new ChannelResponse(sp); val o = new Array[Double](4)
     val ms = new Array[Double](10); val mc = new Array[Double](10)
     def acc(m: Array[Double], x1: Double, x2: Double, y: Double): Unit = {
       m(0) += 1; m(1) += x1; m(2) += x2; m(3) += x1 * x1; m(4) += x1 * x2; m(5) += x2 * x2
@@ -84,16 +83,10 @@ final class Candidates(e: SignalEngine) {
     var k = 0; var cnt = 0; val end = if (idx == null) n else idx.length
     while (k < end) {
       val i = if (idx == null) k else idx(k)
-      val f = freq(i); var gs = 1.0; var gc = 1.0; var ls = -0.5 * w * f; var lc = 0.5 * w * f
-      if (!fcB.isInfinite) { val u = f / fcB; val g = 1 / math.sqrt(1 + u * u); gs *= g; gc *= g }
-      var lagS = 0.0; var lagC = 0.0
-      if (!fcS.isInfinite) { val u = f / fcS; gs /= math.sqrt(1 + u * u); lagS = math.atan(u) }
-      if (!fcC.isInfinite) { val u = f / fcC; gc /= math.sqrt(1 + u * u); lagC = math.atan(u) }
-      val m = 0.5 * (lagS + lagC); ls += m - lagS; lc += m - lagC
-      val cls = math.cos(ls); val sls = math.sin(ls); val clc = math.cos(lc); val slc = math.sin(lc)
-      val a = angle(i); val sn = math.sin(a); val cs = math.cos(a)
-      acc(ms, gs * (sn * cls + cs * sls), gs * (cs * cls - sn * sls), repS(i) - termS(i))
-      acc(mc, gc * (sn * clc + cs * slc), gc * (cs * clc - sn * slc), repC(i) - termC(i))
+      val a = angle(i)
+      resp(freq(i), math.sin(a), math.cos(a), o)
+      acc(ms, o(0), o(1), repS(i) - termS(i))
+      acc(mc, o(2), o(3), repC(i) - termC(i))
       cnt += 1; k += stride
     }
     def rss(m: Array[Double]): Double = {

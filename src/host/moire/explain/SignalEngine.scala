@@ -171,25 +171,13 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
 
   /** Fundamental columns of both channels under the skew and bandwidth of `sp`. */
   def fundamentals(sp: ModelSpec, a1: Array[Double], a2: Array[Double], b1: Array[Double], b2: Array[Double]): Unit = {
-    val fcB = sp.bw.getOrElse("both", Double.PositiveInfinity); val fcS = sp.bw.getOrElse("sin", Double.PositiveInfinity)
-    val fcC = sp.bw.getOrElse("cos", Double.PositiveInfinity)
     val plain = !sp.hasSkew && sp.bw.isEmpty
-    val w = 2 * math.Pi * sp.skewS
+    val resp = new ChannelResponse(sp); val o = new Array[Double](4)
     var i = 0
     while (i < n) {
       val a = angle(i); val sn = math.sin(a); val cs = math.cos(a)
       if (plain) { a1(i) = sn; a2(i) = cs; b1(i) = sn; b2(i) = cs }
-      else {
-        val f = freq(i); var gs = 1.0; var gc = 1.0; var ls = -0.5 * w * f; var lc = 0.5 * w * f
-        if (!fcB.isInfinite) { val u = f / fcB; val g = 1 / math.sqrt(1 + u * u); gs *= g; gc *= g }
-        var lagS = 0.0; var lagC = 0.0
-        if (!fcS.isInfinite) { val u = f / fcS; gs /= math.sqrt(1 + u * u); lagS = math.atan(u) }
-        if (!fcC.isInfinite) { val u = f / fcC; gc /= math.sqrt(1 + u * u); lagC = math.atan(u) }
-        val m = 0.5 * (lagS + lagC); ls += m - lagS; lc += m - lagC
-        val cls = math.cos(ls); val sls = math.sin(ls); val clc = math.cos(lc); val slc = math.sin(lc)
-        a1(i) = gs * (sn * cls + cs * sls); a2(i) = gs * (cs * cls - sn * sls)
-        b1(i) = gc * (sn * clc + cs * slc); b2(i) = gc * (cs * clc - sn * slc)
-      }
+      else { resp(freq(i), sn, cs, o); a1(i) = o(0); a2(i) = o(1); b1(i) = o(2); b2(i) = o(3) }
       i += 1
     }
   }
