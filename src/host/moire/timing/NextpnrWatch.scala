@@ -5,8 +5,7 @@ package moire.timing
   * router2 negotiates congestion: its overuse (wires wanted by more nets than they carry) falls
   * iteration by iteration to 0. On a congested placement it can turn and climb without end (the
   * ULX3S compensated top on b128437: 490 at iteration 43, 1,999 at 71, still rising after 45 min).
-  * Routes that converge wobble by a few wires near the end (at most 2 -> 15 in every run kept here),
-  * so the watch calls it diverging once the overuse is at least twice its best and 100 wires above it.
+  * The watch calls it diverging by [[moire.board.tools.Router2GiveUp]] (the rule the ULX3S build.sh uses too).
   */
 final class NextpnrWatch extends ToolRun.Watch {
   private val Iter = """.*iter=(\d+) wires=\d+ overused=\d+ overuse=(\d+).*""".r
@@ -21,7 +20,7 @@ final class NextpnrWatch extends ToolRun.Watch {
       val (it, over) = (i.toInt, u.toLong)
       if (over < best) { best = over; bestIter = it }
       stage = s"routing (router2), iteration $it, overuse $over"
-      if (gaveUp.isEmpty && over >= 2 * best && over >= best + 100)
+      if (gaveUp.isEmpty && moire.board.tools.Router2GiveUp(best, over))
         gaveUp = Some(s"router2 did not converge: overuse $best at iteration $bestIter, $over at iteration $it")
     case Router1(_, left) => stage = s"routing (router1), $left arcs left"
     case _ if l.contains("Running router2") || l.contains("Routing..") => stage = "routing"
