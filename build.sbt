@@ -53,7 +53,9 @@ lazy val host = layer("host", "src/host").dependsOn(boards).settings(
     "org.hipparchus" % "hipparchus-fft" % "4.0.3",
     "org.knowm.xchart" % "xchart" % "3.8.8",
     "me.tongfei" % "progressbar" % "0.10.2",
-    "com.fazecast" % "jSerialComm" % "2.11.4"
+    "com.fazecast" % "jSerialComm" % "2.11.4",
+    // `moire monitor`'s web server (cask 0.9.1 asks for upickle 3.0.0; the build's 3.1.0 is the same major)
+    "com.lihaoyi" %% "cask" % "0.9.1"
   )
 )
 
@@ -78,7 +80,10 @@ lazy val root = (project in file("."))
       "edu.berkeley.cs" %% "chiseltest" % "6.0.0" % Test,
       "org.scalatest" %% "scalatest" % "3.2.19" % Test,
       "org.scalatestplus" %% "scalacheck-1-18" % "3.2.19.0" % Test,
-      "org.scalacheck" %% "scalacheck" % "1.18.1" % Test
+      "org.scalacheck" %% "scalacheck" % "1.18.1" % Test,
+      // the browser tests (*Browser*): WebDriver to Debian's chromium through /usr/bin/chromedriver
+      "org.seleniumhq.selenium" % "selenium-chrome-driver" % "4.52.0" % Test,
+      "org.seleniumhq.selenium" % "selenium-support" % "4.52.0" % Test
     ),
     Compile / mainClass := Some("moire.cli.Main"),
     run / fork := true,

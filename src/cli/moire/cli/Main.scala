@@ -185,8 +185,10 @@ object Main {
               @arg(doc = "model JSON whose effects are part of the simulation (fitted, not reported)") model: Option[String] = None,
               @arg(doc = "no progress bar or text report") quiet: Flag = Flag(),
               @arg(doc = "emit-subdiv options of the board's subdivider, e.g. \"--counts 4096\" (default: from the metadata)") subdiv: Option[String] = None,
-              @arg(doc = "do not compare a recording's board outputs (position column) with the RTL") noRtl: Flag = Flag()): Unit =
-    moire.explain.ExplainCmd.explainArgs(files.value, jsonDir, plots, model, quiet.value, subdiv, noRtl.value)
+              @arg(doc = "do not compare a recording's board outputs (position column) with the RTL") noRtl: Flag = Flag(),
+              @arg(doc = "one self-contained HTML report (plots inline) of the one recording") html: Option[String] = None,
+              @arg(doc = "folder for one HTML report per recording") htmlDir: Option[String] = None): Unit =
+    moire.explain.ExplainCmd.explainArgs(files.value, jsonDir, plots, model, quiet.value, subdiv, noRtl.value, html, htmlDir)
 
   @main(doc = "Benchmark: simulate and explain one recording; print the time, samples per second and peak heap (also per million samples) of reading and of the whole explain.")
   def explainBench(@arg(doc = "samples in the recording (default 1000000)") samples: Int = 1000000,
@@ -253,6 +255,23 @@ object Main {
                @arg(doc = "harmonic coefficient file from calibrate (.coefficients.json or .registers.txt)") coefficients: Option[String] = None,
                @arg(doc = "milliseconds to wait for each register reply (default 500)") timeoutMs: Int = 500): Unit =
     moire.stream.BoardReg.run(moire.stream.BoardReg.Options(port, baud, read, write, coefficients, timeoutMs), println(_))
+
+  @main(doc = "Watch a board live in the browser: Lissajous figure, fitted ellipse, readouts with tolerance marks, position, flags, link; capture a burst and explain it (docs/monitor.md).")
+  def monitor(@arg(doc = "serial port of the board, e.g. /dev/ttyUSB0") port: Option[String] = None,
+              @arg(doc = "play a moire-recording v1 file at its own rate (in a loop) instead of a board") replay: Option[String] = None,
+              @arg(doc = "a simulated board (the physics model) instead of a board") simulate: Flag = Flag(),
+              @arg(doc = "with --simulate: an effect NAME:key=value,... (repeat; default a 3rd harmonic of 0.3 % on sin)") effect: Seq[String] = Nil,
+              @arg(doc = "UART baud rate (default 115200)") baud: Int = 115200,
+              @arg(doc = "write this decimation D to the board first") decimation: Option[Long] = None,
+              @arg(doc = "address the web server listens on (default 127.0.0.1, this computer only)") bind: String = "127.0.0.1",
+              @arg(doc = "TCP port of the web page (default 8642; 0 = any free port)") httpPort: Int = 8642,
+              @arg(doc = "folder that save writes into (default monitor)") out: String = "monitor",
+              @arg(doc = "counts per grating period M (default: the board's register or the recording's metadata)") countsPerPeriod: Option[Double] = None,
+              @arg(doc = "grating period in um: positions and speeds in um") periodUm: Option[Double] = None,
+              @arg(doc = "grating lines per revolution: positions in degrees and arcsec") linesPerRev: Option[Double] = None,
+              @arg(doc = "volts at ADC full scale 1.0 (AD9226 at 2 Vpp span: 1): amplitudes in volts") fullScaleV: Option[Double] = None): Unit =
+    moire.monitor.MonitorCmd.run(moire.monitor.MonitorCmd.Options(port, replay, simulate.value, effect, baud, decimation, bind, httpPort, out,
+      moire.monitor.Scale(countsPerPeriod, periodUm, linesPerRev, fullScaleV)), println(_), System.err.println(_))
 
   @main(doc = "Run a recording's ADC codes through the generated RTL (Verilator); see replay --help.")
   def replay(@arg(doc = "FILE [--design subdiv|corrected] [--out OUT.csv] [--quiet] [emit-subdiv options]") args: mainargs.Leftover[String]): Unit =

@@ -46,19 +46,23 @@ object ExplainCmd {
 
   /** Explains each file; writes `<stem>.json` into jsonDir and PNGs into plotDir. Returns the text reports. */
   def explain(files: Seq[String], jsonDir: Option[String], plotDir: Option[String], modelFile: Option[String], quiet: Boolean,
-              rtl: Option[Seq[String]] = Some(Nil)): Seq[Report] = {
+              rtl: Option[Seq[String]] = Some(Nil), html: Option[String] = None, htmlDir: Option[String] = None): Seq[Report] = {
     if (files.isEmpty) throw new ExplainError("explain: name at least one recording file")
+    if (html.isDefined && files.size > 1) throw new ExplainError(s"--html names one file, but ${files.size} recordings were given; use --html-dir DIR (one DIR/<name>.html each)")
+    if (html.isDefined && htmlDir.isDefined) throw new ExplainError("give --html FILE or --html-dir DIR, not both")
+    html.foreach(f => moire.files.SafeWrite.checkFile(os.Path(f, os.pwd)))
     val givenEffects = modelFile.map(f => PhysicsModel.effectsFromJson(PhysicsModel.jsonObject(readText(f), f), f, Nil)).getOrElse(Nil)
     val paths = files.map(f => os.Path(f, os.pwd))
     // Outputs are checked before the long work: writable folders, no two reports under one name.
-    val outDirs = (jsonDir ++ plotDir).map(d => os.Path(d, os.pwd))
+    val outDirs = (jsonDir ++ plotDir ++ htmlDir).map(d => os.Path(d, os.pwd))
     outDirs.foreach(moire.files.SafeWrite.checkFolder)
     if (outDirs.nonEmpty) paths.groupBy(_.last.stripSuffix(".csv")).collectFirst { case (stem, ps) if ps.distinct.size > 1 =>
       throw new ExplainError(s"${ps.distinct.mkString(" and ")} share the name $stem: their reports would overwrite each other; rename one")
     }
     // Every file gets its report or its one-line error; the command fails after all were tried.
     val results = paths.map { p =>
-      try Right(explainOne(p, givenEffects, jsonDir, plotDir, quiet, rtl))
+      val htmlFile = html.map(os.Path(_, os.pwd)).orElse(htmlDir.map(d => os.Path(d, os.pwd) / s"${p.last.stripSuffix(".csv")}.html"))
+      try Right(explainOne(p, givenEffects, jsonDir, plotDir, quiet, rtl, htmlFile))
       catch { case e: moire.MoireError => if (paths.size > 1) System.err.println(s"moire: ${e.getMessage}"); Left(e) }
     }
     val failed = results.collect { case Left(e) => e }
@@ -70,21 +74,26 @@ object ExplainCmd {
   }
 
   private def explainOne(p: os.Path, givenEffects: Seq[EffectSpec], jsonDir: Option[String], plotDir: Option[String],
-                         quiet: Boolean, rtl: Option[Seq[String]]): Report = {
+                         quiet: Boolean, rtl: Option[Seq[String]], html: Option[os.Path]): Report = {
     val kind = kindOf(p)
     val stem = p.last.stripSuffix(".csv")
     val progress = if (quiet) Progress.none else Progress.bar(stem)
+    // plots go to --plots, or (for the HTML alone) to a temporary folder
+    val plotFolder = plotDir.map(os.Path(_, os.pwd)).orElse(html.map(_ => os.temp.dir(prefix = "moire-explain-plots")))
+    var plotFiles = Seq.empty[os.Path]
+    var extra = Seq.empty[(String, ujson.Value)]
     val report = try {
       if (kind == "calibration") {
         val r = CalibrationExplain.run(p.toString, Calibration.read(p))
-        plotDir.foreach(d => CalibrationExplain.plots(r, os.Path(d, os.pwd), stem))
+        plotFolder.foreach(d => plotFiles = CalibrationExplain.plots(r, d, stem))
         r.report
       } else {
         val rec = Recording.read(p)
         checkSignals(p, rec)
         val r = SignalExplain.run(p.toString, rec, givenEffects, progress)
         progress.close()
-        plotDir.foreach(d => Plots.signals(r, os.Path(d, os.pwd), stem))
+        plotFolder.foreach(d => plotFiles = Plots.signals(r, d, stem))
+        extra :+= "interpolation_error" -> InterpolationError.of(rec, r.engine).json
         // Board outputs (a `position` column) against the RTL run on the recorded codes.
         rtl.filter(_ => rec.extra.contains("position")).map { opts =>
           val (f, notes) = BoardCheck.run(p.toString, rec, opts, s => if (!quiet) System.err.println(s"explain: $s"))
@@ -92,7 +101,16 @@ object ExplainCmd {
         }.getOrElse(r.report)
       }
     } finally progress.close()
-    jsonDir.foreach(d => moire.files.SafeWrite.text(os.Path(d, os.pwd) / s"$stem.json", ujson.write(report.json, indent = 2)))
+    // new keys beside the report's: the readouts of the interpolation error, the HTML and the plots written
+    val json = report.json
+    extra.foreach { case (k, v) => json(k) = v }
+    html.foreach(h => json("html") = h.toString)
+    if (plotDir.isDefined) json("plots") = ujson.Arr.from(plotFiles.map(f => ujson.Str(f.toString)))
+    html.foreach { h =>
+      moire.files.SafeWrite.text(h, HtmlReport.render(json, plotFiles.map(f => f.last -> os.read.bytes(f))))
+      if (plotDir.isEmpty) plotFolder.foreach(os.remove.all)
+    }
+    jsonDir.foreach(d => moire.files.SafeWrite.text(os.Path(d, os.pwd) / s"$stem.json", ujson.write(json, indent = 2)))
     if (!quiet) print(report.text)
     report
   }
@@ -110,9 +128,10 @@ object ExplainCmd {
 
   /** Options may also follow the file names (mainargs puts everything after the first file into `rest`). */
   def explainArgs(rest: Seq[String], jsonDir: Option[String], plots: Option[String], model: Option[String], quiet: Boolean,
-                  subdiv: Option[String] = None, noRtl: Boolean = false): Unit = {
+                  subdiv: Option[String] = None, noRtl: Boolean = false, html: Option[String] = None, htmlDir: Option[String] = None): Unit = {
     if (rest.contains("--help") || rest.contains("-h")) { println(Usage); return }
     var j = jsonDir; var p = plots; var m = model; var q = quiet; val files = Seq.newBuilder[String]
+    var h = html; var hd = htmlDir
     var sd = subdiv; var nr = noRtl
     var i = 0
     def value(o: String) = { i += 1; rest.lift(i).getOrElse(throw new ExplainError(s"$o needs a value")) }
@@ -124,20 +143,25 @@ object ExplainCmd {
         case "--quiet" => q = true
         case "--subdiv" => sd = Some(value("--subdiv"))
         case "--no-rtl" => nr = true
+        case "--html" => h = Some(value("--html"))
+        case "--html-dir" => hd = Some(value("--html-dir"))
         case o if o.startsWith("--") => throw new ExplainError(s"Unknown argument: $o (see --help)")
         case f => files += f
       }
       i += 1
     }
-    explain(files.result(), j, p, m, q, if (nr) None else Some(sd.toSeq.flatMap(_.trim.split("\\s+")).filter(_.nonEmpty)))
+    explain(files.result(), j, p, m, q, if (nr) None else Some(sd.toSeq.flatMap(_.trim.split("\\s+")).filter(_.nonEmpty)), h, hd)
   }
 
   val Usage: String =
-    """Usage: explain FILE... [--json-dir DIR] [--plots DIR] [--model MODEL.json] [--quiet]
+    """Usage: explain FILE... [--json-dir DIR] [--plots DIR] [--html FILE | --html-dir DIR] [--model MODEL.json] [--quiet]
       |  Fit the physics model to each recording (moire-recording v1) or calibration file (moire-calibration v1),
       |  locate where the residual departs from noise, and name the catalogued effects that lower BIC by more than 10.
       |    --json-dir DIR       one JSON report per file (DIR/<name>.json)
-      |    --plots DIR          PNG plots (residual against time, phase, frequency; one per finding)
+      |    --plots DIR          PNG plots (residual against time, phase, frequency; one per finding; Lissajous before
+      |                         and after correction; interpolation error); the JSON lists them under "plots"
+      |    --html FILE          one self-contained HTML report (plots inline; opens offline, prints); one recording only
+      |    --html-dir DIR       one HTML report per recording (DIR/<name>.html); the JSON names it under "html"
       |    --model MODEL.json   effects the simulation already has: fitted, not reported
       |    --quiet              no progress bar or text report
       |    --subdiv "OPTIONS"   emit-subdiv options of the board's subdivider (default: from the metadata adc_bits,

@@ -21,7 +21,9 @@ object Plots {
     val ok = xs.indices.filter(i => !xs(i).isNaN && !ys(i).isNaN && !ys(i).isInfinite)
     if (ok.nonEmpty) c.addSeries(name, ok.map(xs).toArray, ok.map(ys).toArray).setMarker(SeriesMarkers.NONE)
   }
+  /** Writes the chart as PNG, its axes at round values first (unless the chart set its own). */
   def save(c: XYChart, path: os.Path): os.Path = {
+    if (c.getStyler.getXAxisMin == null) Axes.round(c)
     moire.files.SafeWrite(path)(t => { val o = new java.io.FileOutputStream(t.toIO); try BitmapEncoder.saveBitmap(c, o, BitmapFormat.PNG) finally o.close() })
     path
   }
@@ -61,6 +63,11 @@ object Plots {
     out += spectrum(s"$stem: residual spectrum", snaps, e, dir / s"${stem}_residual_spectrum.png")
     // effects
     for (((f, b, a), k) <- r.steps.zipWithIndex) out += effect(f, b, a, e, dir / s"${stem}_effect_${k + 1}_${f.effect}.png", stem)
+    // the Lissajous figure before and after the Heydemann correction, the interpolation error
+    val ie = InterpolationError.of(e.rec, e)
+    out += save(LissajousPlot.before(s"$stem: Lissajous figure", e.yc, e.ys, ie.ellipse), dir / s"${stem}_lissajous_before.png")
+    ie.ellipse.foreach(el => out += save(LissajousPlot.after(s"$stem: Lissajous figure after correction", e.yc, e.ys, el), dir / s"${stem}_lissajous_after.png"))
+    out += save(InterpolationPlot.chart(s"$stem: interpolation error", ie), dir / s"${stem}_interpolation_error.png")
     out.result()
   }
 
@@ -96,11 +103,19 @@ object Plots {
     val title = s"$stem: ${f.effect} (${f.channel}), residual before and after"
     f.effect match {
       case "channel_skew" | "bandwidth" | "crosstalk" =>
-        val c = chart(title, "fringe frequency (kHz)", "phase (degree) / amplitude (%) left in the residual")
+        // phase on the left axis (degree), amplitudes on the right one (%)
+        val c = chart(title, "fringe frequency (kHz)", "cos - sin phase left in the residual (degree)")
         for (s <- Seq(b, a)) {
           val (x, ps, as) = phaseDev(s, e.us(_), e.vs(_), _.resS); val (_, pc, ac) = phaseDev(s, e.uc(_), e.vc(_), _.resC)
           line(c, s"cos - sin phase (degree), ${s.label}", x, pc.zip(ps).map { case (p, q) => p - q })
-          if (f.effect != "channel_skew") { line(c, s"sin amplitude (%), ${s.label}", x, as); line(c, s"cos amplitude (%), ${s.label}", x, ac) }
+          if (f.effect != "channel_skew") for ((ch, am) <- Seq("sin" -> as, "cos" -> ac)) {
+            line(c, s"$ch amplitude (%), ${s.label}", x, am)
+            Option(c.getSeriesMap.get(s"$ch amplitude (%), ${s.label}")).foreach(_.setYAxisGroup(1))
+          }
+        }
+        if (f.effect != "channel_skew") {
+          c.setYAxisGroupTitle(1, "amplitude left in the residual (%)")
+          c.getStyler.setYAxisGroupPosition(1, org.knowm.xchart.style.Styler.YAxisPosition.Right)
         }
         save(c, path)
       case "jitter" =>

@@ -1,0 +1,57 @@
+package moire.monitor
+
+import moire.recording.Recording
+
+/** `moire monitor`: a source (board, replay or simulated board), the live state and the web page, until Ctrl-C. */
+object MonitorCmd {
+  final case class Options(port: Option[String], replay: Option[String], simulate: Boolean, effects: Seq[String], baud: Int,
+                           decimation: Option[Long], bind: String, httpPort: Int, out: String, scale: Scale)
+
+  def validate(o: Options): Unit = {
+    val n = Seq(o.port.isDefined, o.replay.isDefined, o.simulate).count(identity)
+    if (n != 1) throw new MonitorError("monitor: give one of --port DEV (a board), --replay FILE (a recording) or --simulate (a simulated board)")
+    if (o.effects.nonEmpty && !o.simulate) throw new MonitorError("--effect belongs to --simulate")
+    if (o.httpPort < 0 || o.httpPort > 65535) throw new MonitorError(s"--http-port must be in 0..65535, got ${o.httpPort}")
+    if (o.baud < 300 || o.baud > 12000000) throw new MonitorError(s"--baud must be in 300..12000000, got ${o.baud}")
+    o.decimation.foreach(d => if (d < 1 || d > moire.protocol.Registers.MaxDecimation)
+      throw new MonitorError(s"--decimation must be in 1..${moire.protocol.Registers.MaxDecimation}, got $d"))
+    for ((k, v) <- Seq("--counts-per-period" -> o.scale.countsPerPeriod, "--period-um" -> o.scale.periodUm,
+      "--lines-per-rev" -> o.scale.linesPerRev, "--full-scale-v" -> o.scale.fullScaleV); x <- v)
+      if (!(x > 0) || x.isInfinite) throw new MonitorError(s"$k must be a positive number, got $x")
+    try java.net.InetAddress.getByName(o.bind) catch { case _: java.net.UnknownHostException => throw new MonitorError(s"--bind '${o.bind}' is not an address of this computer") }
+    moire.files.SafeWrite.checkFolder(os.Path(o.out, os.pwd))
+  }
+
+  /** The source the options name (a replayed file is read and checked first). */
+  def source(o: Options): Source = (o.port, o.replay) match {
+    case (Some(p), _) => new BoardSource(p, o.baud, o.decimation, o.scale)
+    case (_, Some(f)) =>
+      val p = os.Path(f, os.pwd)
+      if (!os.isFile(p)) throw new MonitorError(s"$f: no such file")
+      val rec = Recording.read(p)
+      moire.explain.ExplainCmd.checkSignals(p, rec)
+      new ReplaySource(rec, s"replay of ${p.last}", o.scale)
+    case _ => new ReplaySource(SimBoard.recording(if (o.effects.isEmpty) SimBoard.DefaultEffects else o.effects), "simulated board", o.scale)
+  }
+
+  /** Starts everything; the caller closes the result (the server, the source, the work folder). */
+  def start(o: Options, warn: String => Unit): (MonitorServer, AutoCloseable) = {
+    validate(o)
+    val loopback = try java.net.InetAddress.getByName(o.bind).isLoopbackAddress catch { case _: Exception => false }
+    if (!loopback) warn(s"WARNING: the monitor listens on ${o.bind}: anyone who reaches this computer there can watch the board, capture bursts and save files")
+    val src = source(o)
+    val live = new Live()
+    val work = os.temp.dir(prefix = "moire-monitor")
+    val app = new Monitor(live, src, os.Path(o.out, os.pwd), work)
+    src.start(live)
+    val server = try new MonitorServer(app, o.bind, o.httpPort) catch { case e: Throwable => src.close(); throw e }
+    (server, () => { server.close(); src.close(); os.remove.all(work) })
+  }
+
+  def run(o: Options, say: String => Unit, warn: String => Unit): Unit = {
+    val (server, all) = start(o, warn)
+    sys.addShutdownHook(all.close())
+    say(s"monitor: ${server.url} (Ctrl-C stops)")
+    Thread.currentThread().join()
+  }
+}
