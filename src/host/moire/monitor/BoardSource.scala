@@ -95,10 +95,10 @@ final class BoardSource(port: String, baud: Int, decimation: Option[Long], user:
       if (now - lastStatus > 1e9) { lastStatus = now; l.write(Encoder.command(Command.read(Registers.Status.addr))) }
       if (now - rateAt > 1e9) { val st = dec.stats; rate = (st.records - rateRecords) / ((now - rateAt) / 1e9); rateRecords = st.records; rateAt = now }
       val st = dec.stats
-      live.link(ujson.Obj("kind" -> "board", "port" -> port, "baud" -> baud, "decimation" -> setup.decimation, "frames" -> st.frames,
-        "records" -> st.records, "records_per_s" -> rate, "crc_errors" -> st.crcErrors, "bad_headers" -> st.badHeaders,
-        "frame_gaps" -> st.seqGaps, "missing_frames" -> st.seqMissing, "index_gaps" -> st.indexGaps, "missing_records" -> st.indexMissing,
-        "dropped_records" -> st.dropped))
+      live.link(ujson.Obj("kind" -> "board", "port" -> port, "baud" -> baud, "decimation" -> setup.decimation.toDouble, "frames" -> st.frames.toDouble,
+        "records" -> st.records.toDouble, "records_per_s" -> rate, "crc_errors" -> st.crcErrors.toDouble, "bad_headers" -> st.badHeaders.toDouble,
+        "frame_gaps" -> st.seqGaps.toDouble, "missing_frames" -> st.seqMissing.toDouble, "index_gaps" -> st.indexGaps.toDouble,
+        "missing_records" -> st.indexMissing.toDouble, "dropped_records" -> st.dropped.toDouble))
       if (burstTook) { burstTook = false; return }
     }
   }

@@ -66,7 +66,7 @@ final class Live(staleSeconds: Double = 2.0) {
         tol, burstState, count, disconnects)
     }
     val o = ujson.Obj("connected" -> up, "message" -> (if (!up && why == "streaming") f"no records for $age%.1f s" else why),
-      "source" -> s.fold[ujson.Value](ujson.Null)(_.label), "records_total" -> total, "disconnects" -> drops,
+      "source" -> s.fold[ujson.Value](ujson.Null)(_.label), "records_total" -> total.toDouble, "disconnects" -> drops.toDouble,
       "tolerances" -> t.json, "link" -> lf, "burst" -> b)
     s.foreach { s0 => o("setup") = ujson.Obj("sample_rate_hz" -> s0.sampleRateHz, "adc_bits" -> s0.adc.bits, "scale" -> s0.scale.json) }
     o("board_status") = st.fold[ujson.Value](ujson.Null)(v => ujson.Obj.from(

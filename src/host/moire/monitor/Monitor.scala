@@ -35,7 +35,7 @@ final class Monitor(val live: Live, source: Source, out: os.Path, work: os.Path)
   /** Starts a burst in the background; false when one is already running. */
   def startBurst(b: BurstOptions): Boolean = {
     if (!busy.compareAndSet(false, true)) return false
-    live.burst = ujson.Obj("state" -> "running", "message" -> s"capturing ${b.samples} samples (trigger ${b.trigger})", "samples" -> b.samples)
+    live.burst = ujson.Obj("state" -> "running", "message" -> s"capturing ${b.samples} samples (trigger ${b.trigger})", "samples" -> b.samples.toDouble)
     val t = new Thread(() => try runBurst(b) finally busy.set(false), "monitor-burst")
     t.setDaemon(true); t.start()
     true

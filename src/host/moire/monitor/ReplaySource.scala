@@ -18,6 +18,7 @@ final class ReplaySource(rec: Recording, label: String, user: Scale) extends Sou
   @volatile private var stop = false
   @volatile private var cursor = 0L // samples played since the start
   private var thread: Thread = _
+  private val rnd = new scala.util.Random(1)
 
   private def pos(k: Long): Long = (position((k % n).toInt) + (k / n) * span).toLong
 
@@ -31,14 +32,16 @@ final class ReplaySource(rec: Recording, label: String, user: Scale) extends Sou
         val now = ((System.nanoTime() - t0) / 1e9 * rec.sampleRateHz).toLong
         val from = cursor
         if (now > from) {
-          val step = math.max(1L, (now - from) / ReplaySource.PerTick)
-          val rs = (from until now by step).map { k =>
+          // at most PerTick records, at random places (an even stride would strobe the fringe: a few dots, no figure)
+          val ks = if (now - from <= ReplaySource.PerTick) (from until now).toArray
+            else Array.fill(ReplaySource.PerTick)(from + (rnd.nextDouble() * (now - from)).toLong).sorted
+          val rs = ks.toSeq.map { k =>
             val i = (k % n).toInt
             LiveRecord(rec.sin(i), rec.cos(i), k, pos(k), LiveRecord.Present)
           }
           live.add(rs)
           cursor = now
-          live.link(ujson.Obj("kind" -> "replay", "samples" -> n, "sample_rate_hz" -> rec.sampleRateHz, "played" -> now, "loops" -> now / n))
+          live.link(ujson.Obj("kind" -> "replay", "samples" -> n, "sample_rate_hz" -> rec.sampleRateHz, "played" -> now.toDouble, "loops" -> (now / n).toDouble))
         }
         Thread.sleep(50)
       }
