@@ -22,6 +22,9 @@ final class Browser private (val driver: ChromeDriver, profile: os.Path) extends
     (System.nanoTime() - t0) / 1e9
   }
   def js(script: String): AnyRef = driver.executeScript(script)
+  /** An element's text and an attribute, read in one script (the page redraws its tables several times a second). */
+  def text(id: String): String = String.valueOf(js(s"const e = document.getElementById('$id'); return e ? e.textContent : null"))
+  def attr(id: String, name: String): String = String.valueOf(js(s"const e = document.getElementById('$id'); return e ? e.getAttribute('$name') : null"))
   /** Console messages at level SEVERE (errors) since the last call. */
   def consoleErrors: Seq[String] = driver.manage().logs().get(LogType.BROWSER).getAll.asScala.toSeq
     .filter(_.getLevel == java.util.logging.Level.SEVERE).map(_.getMessage)

@@ -73,4 +73,42 @@ class BoardRegSpec extends AnyFlatSpec with Matchers {
     withClue(err) { code shouldBe 0 }
     out.linesIterator.map(_.split("\\s+").take(3).mkString(" ")).toSeq shouldBe Seq("0x08 adc_clock_hz 40000000", "0x0a counts_per_period 1024")
   }
+
+  "board-reg --save / --load" should "keep and restore the decimation and the harmonic slots, and refuse another kind of board" in PtyPair { pty =>
+    val dir = os.temp.dir(prefix = "moire-board-reg")
+    val file = dir / "board.json"
+    val h0 = Registers.HarmonicBase
+    try {
+      val saved = FakeBoard.registers(decimation = 250) ++ Seq(h0 -> 3L, (h0 + 1) -> 0x1234L, (h0 + 2) -> 77L, (h0 + 5) -> 0xFFFFFF00L)
+      val a = new FakeBoard(pty, saved, harmonicSlots = 2)
+      val out = try run(pty, _.copy(save = Some(file.toString))) finally a.close()
+      out.last should include("1 setting(s), 4 non-zero harmonic register(s)")
+      val j = ujson.read(os.read(file))
+      j("format").str shouldBe BoardRegFile.Format
+      j("model")("counts_per_period").num shouldBe 1024
+      j("registers").obj.keys.toSeq shouldBe Seq("decimation", "h0_order", "h0_c", "h0_phi", "h1_c")
+      // a board of the same model in another state ends as saved: listed registers written, the other slots cleared
+      val b = new FakeBoard(pty, FakeBoard.registers(decimation = 9) ++ Seq((h0 + 4) -> 5L), harmonicSlots = 2)
+      val loaded = try run(pty, _.copy(load = Some(file.toString))) finally b.close()
+      loaded.head should include(s"loaded $file")
+      b.registers(Registers.Decimation.addr) shouldBe 250
+      Seq(0, 1, 2, 4, 5).map(k => b.registers.getOrElse(h0 + k, 0L)) shouldBe Seq(3L, 0x1234L, 77L, 0L, 0xFFFFFF00L)
+      // another model: nothing written
+      val c = new FakeBoard(pty, FakeBoard.registers(countsPerPeriod = 4096), harmonicSlots = 2)
+      val e = try intercept[MoireError](run(pty, _.copy(load = Some(file.toString)))) finally c.close()
+      e.getMessage should include("saved from another kind of board: counts_per_period 1024 in the file, 4096 on the board")
+      c.commands.count(_.write) shouldBe 0
+      // a board without the compensator cannot keep the slots: the read-back says so
+      val d = new FakeBoard(pty, FakeBoard.registers(), harmonicSlots = 0)
+      try intercept[MoireError](run(pty, _.copy(load = Some(file.toString)))).getMessage should include("is the harmonic compensator in the design")
+      finally d.close()
+      // bad files fail before the port is opened
+      os.write.over(dir / "bad.json", """{"format": "moire-board-registers v1", "model": {}, "registers": {}}""")
+      intercept[MoireError](BoardReg.run(BoardReg.Options("/dev/nonexistent", load = Some((dir / "bad.json").toString)), _ => ()))
+        .getMessage should include("model.id is missing")
+      os.write.over(dir / "bad2.json", os.read(file).replace("\"h1_c\"", "\"status\""))
+      intercept[MoireError](BoardReg.run(BoardReg.Options("/dev/nonexistent", load = Some((dir / "bad2.json").toString)), _ => ()))
+        .getMessage should include("registers.status is not a setting board-reg saves")
+    } finally os.remove.all(dir)
+  }
 }

@@ -247,14 +247,16 @@ object Main {
     }
   }
 
-  @main(doc = "Read and write the board's registers by name (writes, then coefficients, then reads; none: read all).")
+  @main(doc = "Read and write the board's registers by name (load, writes, coefficients, reads, save; none: read all).")
   def boardReg(@arg(doc = "serial port, e.g. /dev/ttyUSB0") port: String,
                @arg(doc = "UART baud rate (default 115200)") baud: Int = 115200,
                @arg(doc = "register name or address to read (repeat)") read: Seq[String] = Nil,
                @arg(doc = "NAME=VALUE to write (repeat)") write: Seq[String] = Nil,
                @arg(doc = "harmonic coefficient file from calibrate (.coefficients.json or .registers.txt)") coefficients: Option[String] = None,
-               @arg(doc = "milliseconds to wait for each register reply (default 500)") timeoutMs: Int = 500): Unit =
-    moire.stream.BoardReg.run(moire.stream.BoardReg.Options(port, baud, read, write, coefficients, timeoutMs), println(_))
+               @arg(doc = "milliseconds to wait for each register reply (default 500)") timeoutMs: Int = 500,
+               @arg(doc = "save the decimation and the harmonic slots, with the board's model, to this JSON file (docs/recording.md)") save: Option[String] = None,
+               @arg(doc = "restore a file of --save (first; the board's model must match)") load: Option[String] = None): Unit =
+    moire.stream.BoardReg.run(moire.stream.BoardReg.Options(port, baud, read, write, coefficients, timeoutMs, save, load), println(_))
 
   @main(doc = "Watch a board live in the browser: Lissajous figure, fitted ellipse, readouts with tolerance marks, position, flags, link; capture a burst and explain it (docs/monitor.md).")
   def monitor(@arg(doc = "serial port of the board, e.g. /dev/ttyUSB0") port: Option[String] = None,

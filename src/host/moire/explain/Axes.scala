@@ -23,7 +23,11 @@ object Axes {
   def round(c: XYChart): Unit = {
     val series = c.getSeriesMap.values.asScala.toSeq
     val xs = finite(series.flatMap(_.getXData))
-    if (xs.nonEmpty) { val (lo, hi) = span(xs.min, xs.max); c.getStyler.setXAxisMin(lo); c.getStyler.setXAxisMax(hi) }
+    // a phase or angle axis over most of a turn: 0 to 360
+    val turn = xs.nonEmpty && xs.min >= 0 && xs.max <= 360 && xs.max - xs.min > 180 && c.getStyler.getXAxisDecimalPattern != null &&
+      c.getXAxisTitle.contains("(degree)")
+    if (turn) { c.getStyler.setXAxisMin(0.0); c.getStyler.setXAxisMax(360.0) }
+    else if (xs.nonEmpty) { val (lo, hi) = span(xs.min, xs.max); c.getStyler.setXAxisMin(lo); c.getStyler.setXAxisMax(hi) }
     for ((g, ss) <- series.groupBy(_.getYAxisGroup)) {
       val ys = finite(ss.flatMap(_.getYData))
       if (ys.nonEmpty) { val (lo, hi) = span(ys.min, ys.max); c.getStyler.setYAxisMin(g, lo); c.getStyler.setYAxisMax(g, hi) }

@@ -7,7 +7,7 @@ import org.knowm.xchart.XYChart
   */
 object InterpolationPlot {
   def chart(title: String, ie: InterpolationError): XYChart = {
-    val unit = ie.unit + ie.scaleUnit.zip(ie.perCount).fold("")({ case (u, f) => f"; 1 ${ie.unit} = $f%.4g $u" })
+    val unit = ie.unit + ie.scaleUnit.zip(ie.perCount).fold("")({ case (u, f) => f"; 1 ${ie.unit.stripSuffix("s")} = $f%.4g $u" })
     val c = Plots.chart(title, "fringe phase (degree)", s"interpolation error (${ie.unit})")
     c.setTitle(s"$title ($unit)")
     val deg = (i: Int) => 360 * (ie.fringe(i) - math.floor(ie.fringe(i)))

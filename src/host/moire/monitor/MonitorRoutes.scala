@@ -29,8 +29,9 @@ final class MonitorRoutes(app: Monitor, hub: LiveHub)(implicit cc: castor.Contex
     case Right(b) => if (app.startBurst(b)) json(app.live.burst, 202) else error(409, "a burst is already running; wait for its report")
   }
 
+  /** `t`: any value (the page adds the time, so that the frame loads the newest report). */
   @cask.get("/api/report")
-  def report(): cask.Response[String] = app.report.fold(error(404, "no burst report yet: capture a burst first"))(h =>
+  def report(t: String = ""): cask.Response[String] = app.report.fold(error(404, "no burst report yet: capture a burst first"))(h =>
     cask.Response(h, 200, Seq("Content-Type" -> "text/html; charset=utf-8", "Cache-Control" -> "no-store")))
 
   @cask.post("/api/save")

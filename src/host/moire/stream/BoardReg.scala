@@ -6,7 +6,8 @@ import moire.protocol.{Registers, StreamV1}
 /** `moire board-reg`: read and write the board's registers by name, load harmonic coefficients. */
 object BoardReg {
   final case class Options(port: String, baud: Int = 115200, reads: Seq[String] = Nil, writes: Seq[String] = Nil,
-                           coefficients: Option[String] = None, timeoutMs: Int = 500)
+                           coefficients: Option[String] = None, timeoutMs: Int = 500, save: Option[String] = None,
+                           load: Option[String] = None)
 
   private def parseWrite(s: String): (Int, Long) = s.split("=", 2) match {
     case Array(n, v) =>
@@ -17,8 +18,14 @@ object BoardReg {
     case _ => throw new StreamError(s"--write '$s' must be NAME=VALUE, like decimation=100")
   }
 
-  /** Writes first (in the order given), then coefficients, then reads; with none of them, reads the whole table. */
+  /** Load first (model check, then every saved register), then writes (in the order given), then coefficients,
+    * then reads, then save; with none of them, reads the whole table.
+    */
   def run(o: Options, say: String => Unit): Unit = {
+    val loadFile = o.load.map(os.Path(_, os.pwd))
+    loadFile.foreach(BoardRegFile.read) // a bad file fails before the port is opened
+    val saveFile = o.save.map(os.Path(_, os.pwd))
+    saveFile.foreach(moire.files.SafeWrite.checkFile)
     val writes = o.writes.map(parseWrite)
     val reads = o.reads.map(r => Registers.parse(r).fold(e => throw new StreamError(s"--read: $e"), identity))
     val coefs = o.coefficients.map(f => loadCoefficients(os.Path(f, os.pwd)))
@@ -29,6 +36,10 @@ object BoardReg {
       val c = new BoardClient(link, o.timeoutMs)
       BoardClient.check(c, o.baud, "")
       def ask[T](f: => T): T = try f catch { case e: NoAnswer => throw new StreamError(e.getMessage) }
+      for (f <- loadFile) {
+        val h = BoardRegFile.load(c, f, o.port, ask(_))
+        say(s"loaded $f: ${BoardRegFile.Settings.map(_.name).mkString(", ")} and ${BoardRegFile.Harmonic.size} harmonic registers ($h not zero), each read back")
+      }
       for ((a, v) <- writes) {
         val got = ask(c.write(a, v))
         say(s"wrote ${line(a, got)}")
@@ -42,8 +53,12 @@ object BoardReg {
         }
         say(s"loaded ${ws.size} harmonic registers (0x${"%02x".format(ws.map(_._1).min)}..0x${"%02x".format(ws.map(_._1).max)}) from $file, each read back")
       }
-      val toRead = if (reads.isEmpty && writes.isEmpty && coefs.isEmpty) Registers.all.map(_.addr) else reads
+      val toRead = if (reads.isEmpty && writes.isEmpty && coefs.isEmpty && loadFile.isEmpty && saveFile.isEmpty) Registers.all.map(_.addr) else reads
       toRead.foreach(a => say(line(a, ask(c.read(a)))))
+      for (f <- saveFile) {
+        val (s, h) = BoardRegFile.save(c, f, o.port, ask(_))
+        say(s"saved $f: $s setting(s), $h non-zero harmonic register(s) of ${BoardRegFile.Harmonic.size}, and the board's model")
+      }
     } finally link.close()
   }
 

@@ -1,0 +1,64 @@
+package moire.stream
+
+import moire.protocol.{Registers, StreamV1}
+
+/** `board-reg --save FILE` / `--load FILE`: the registers a board keeps that a user sets (the decimation and the
+  * turntable compensator's harmonic slots, `h<slot>_<order|c|phi>`) in one JSON file (docs/recording.md), with the
+  * board's model (id, stream version, ADC clock and format, counts per period, records per frame) to check on load.
+  * A harmonic register the file does not list is 0 (slot off): load writes every slot, so the board ends as saved.
+  */
+object BoardRegFile {
+  val Format = "moire-board-registers v1"
+  /** The registers that must read the same on the board a file is loaded into. */
+  val Model: Seq[moire.protocol.Reg] = Seq(Registers.Id, Registers.Version, Registers.AdcClockHz, Registers.AdcFormat,
+    Registers.CountsPerPeriod, Registers.FrameRecords)
+  /** The settings saved, besides the harmonic window. */
+  val Settings: Seq[moire.protocol.Reg] = Seq(Registers.Decimation)
+  /** Harmonic addresses: slots of 4 words (order, c, phi, unused) from [[Registers.HarmonicBase]] up to the burst registers. */
+  val Harmonic: Seq[Int] = (Registers.HarmonicBase until Registers.BurstControl.addr).filter(a => ((a - Registers.HarmonicBase) & 3) != 3)
+
+  def save(c: BoardClient, file: os.Path, port: String, ask: (=> Long) => Long): (Int, Int) = {
+    val model = Model.map(r => r.name -> ask(c.read(r)))
+    val settings = Settings.map(r => r.name -> ask(c.read(r)))
+    val harm = Harmonic.map(a => a -> ask(c.read(a))).filter(_._2 != 0)
+    val j = ujson.Obj("format" -> Format, "saved_utc" -> java.time.Instant.now().toString, "port" -> port,
+      "model" -> ujson.Obj.from(model.map { case (k, v) => k -> ujson.Num(v.toDouble) }),
+      "registers" -> ujson.Obj.from((settings ++ harm.map { case (a, v) => Registers.name(a) -> v }).map { case (k, v) => k -> ujson.Num(v.toDouble) }))
+    moire.files.SafeWrite.text(file, ujson.write(j, indent = 2) + "\n")
+    (settings.size, harm.size)
+  }
+
+  /** The file's model and the register writes (every harmonic register, 0 where the file lists none). */
+  def read(file: os.Path): (Map[String, Long], Seq[(Int, Long)]) = {
+    if (!os.isFile(file)) throw new StreamError(s"$file: no such file")
+    val j = try ujson.read(os.read(file)) catch { case e: Exception => throw new StreamError(s"$file: not valid JSON (${e.getMessage.linesIterator.next().take(80)})") }
+    val o = j.objOpt.getOrElse(throw new StreamError(s"$file: expected a JSON object"))
+    val fmt = o.get("format").flatMap(_.strOpt)
+    if (!fmt.contains(Format)) throw new StreamError(s"$file: format is ${fmt.getOrElse("missing")}, expected '$Format' (written by board-reg --save)")
+    def u32(where: String, v: ujson.Value): Long = v.numOpt.filter(x => x == math.rint(x) && x >= 0 && x <= StreamV1.MaxU32).map(_.toLong)
+      .getOrElse(throw new StreamError(s"$file: $where must be an integer in 0..${StreamV1.MaxU32}, got ${ujson.write(v).take(30)}"))
+    val model = o.get("model").flatMap(_.objOpt).getOrElse(throw new StreamError(s"$file: no 'model' object"))
+    val m = Model.map(r => r.name -> u32(s"model.${r.name}", model.getOrElse(r.name, throw new StreamError(s"$file: model.${r.name} is missing")))).toMap
+    val regs = o.get("registers").flatMap(_.objOpt).getOrElse(throw new StreamError(s"$file: no 'registers' object"))
+    val given = regs.toSeq.map { case (k, v) =>
+      val a = Registers.parse(k).toOption.filter(a => Settings.exists(_.addr == a) || Harmonic.contains(a))
+        .getOrElse(throw new StreamError(s"$file: registers.$k is not a setting board-reg saves (${Settings.map(_.name).mkString(", ")}, h<slot>_<order|c|phi>)"))
+      a -> u32(s"registers.$k", v)
+    }.toMap
+    Settings.foreach(r => if (!given.contains(r.addr)) throw new StreamError(s"$file: registers.${r.name} is missing"))
+    (m, Settings.map(r => r.addr -> given(r.addr)) ++ Harmonic.map(a => a -> given.getOrElse(a, 0L)))
+  }
+
+  /** Checks the model, then writes and reads back each register; the number of non-zero harmonic registers. */
+  def load(c: BoardClient, file: os.Path, port: String, ask: (=> Long) => Long): Int = {
+    val (model, writes) = read(file)
+    val differ = Model.flatMap { r => val b = ask(c.read(r)); if (b != model(r.name)) Some(s"${r.name} ${model(r.name)} in the file, $b on the board") else None }
+    if (differ.nonEmpty) throw new StreamError(s"$file was saved from another kind of board: ${differ.mkString("; ")}; nothing written")
+    for ((a, v) <- writes) {
+      val got = ask(c.write(a, v))
+      if (got != v) throw new StreamError(f"$port: wrote 0x$v%08x to ${Registers.name(a)}, the board kept 0x$got%08x" +
+        (if (a >= Registers.HarmonicBase) ": is the harmonic compensator in the design, with enough slots?" else ""))
+    }
+    writes.count { case (a, v) => a >= Registers.HarmonicBase && v != 0 }
+  }
+}
