@@ -47,6 +47,9 @@ class ReportBrowserSpec extends AnyFlatSpec {
       os.copy(dir / "sim.csv", dir / "sim2.csv")
       assert(intercept[moire.MoireError](ExplainCmd.explain(Seq((dir / "sim.csv").toString, (dir / "sim2.csv").toString), None, None, None,
         quiet = true, rtl = None, html = Some((dir / "x.html").toString))).getMessage.contains("--html-dir"))
+      val code = moire.cli.Main.run(Array("explain", (dir / "sim.csv").toString, (dir / "sim2.csv").toString, "--html-dir", (dir / "h").toString,
+        "--json-dir", (dir / "j2").toString, "--quiet", "--no-rtl"))
+      assert(code == 0 && Seq("sim", "sim2").forall(s => os.isFile(dir / "h" / s"$s.html") && ujson.read(os.read(dir / "j2" / s"$s.json"))("html").str == (dir / "h" / s"$s.html").toString))
     } finally os.remove.all(dir)
   }
 

@@ -12,7 +12,8 @@ object Plots {
 
   def chart(title: String, x: String, y: String): XYChart = {
     val c = new XYChartBuilder().width(900).height(500).title(title).xAxisTitle(x).yAxisTitle(y).build()
-    c.getStyler.setLegendPosition(org.knowm.xchart.style.Styler.LegendPosition.InsideNE)
+    // the legend below the plot: inside, it hides the curves it names
+    c.getStyler.setLegendPosition(org.knowm.xchart.style.Styler.LegendPosition.OutsideS)
     c.getStyler.setChartBackgroundColor(java.awt.Color.WHITE)
     c.getStyler.setXAxisDecimalPattern("0.###"); c.getStyler.setYAxisDecimalPattern("0.####")
     c
