@@ -96,6 +96,8 @@ function show(s) {
   st.dataset.connected = s.connected;
   st.className = s.connected ? "up" : "down";
   st.textContent = s.connected ? "connected" : "disconnected: " + s.message;
+  // what is shown while disconnected is the last the board sent: greyed out
+  document.querySelector("main").classList.toggle("stale", !s.connected);
   $("source").textContent = s.source || "-";
   drawLissajous(s); readouts(s); motion(s); flags(s); burst(s);
   const f = $("tol-form");
@@ -108,6 +110,7 @@ function connect() {
   ws.onmessage = m => show(JSON.parse(m.data));
   ws.onclose = () => {
     const st = $("status"); st.className = "down"; st.dataset.connected = "false"; st.textContent = "monitor server unreachable; retrying";
+    document.querySelector("main").classList.add("stale");
     setTimeout(connect, 1000);
   };
 }
