@@ -109,4 +109,26 @@ class MonitorApiSpec extends AnyFlatSpec {
     try assert(warned.result().exists(_.contains("WARNING: the monitor listens on 0.0.0.0")))
     finally all.close()
   }
+
+  "monitor --replay" should "play a recording at its own rate, its position from the fringe phase when it has no position column" in {
+    val dir = os.temp.dir(prefix = "moire-monitor-replay")
+    val m = moire.explain.PhysicsModel(moire.signal.SignalParams(amplitude = 0.7, phaseErrorDeg = -1.0, noiseRms = 0.0005, seed = 2),
+      moire.signal.Motion.Constant(200), 20000, 40000, moire.signal.Adc(12))
+    moire.recording.Recording.write(dir / "r.csv", m.generate()._1)
+    val o = MonitorCmd.Options(None, Some((dir / "r.csv").toString), simulate = false, Nil, 115200, None, "127.0.0.1", 0, (dir / "out").toString, Scale.none)
+    val (server, all) = MonitorCmd.start(o, w => fail(w))
+    try {
+      val t0 = System.nanoTime()
+      val st = until("an ellipse", 20) {
+        val j = ujson.read(get(server.url + "api/state").body)
+        if (!j("ellipse").isNull && j("records_total").num >= 2000) Some(j) else None
+      }
+      val played = st("link")("played").num; val wall = (System.nanoTime() - t0) / 1e9
+      assert(played <= (wall + 0.5) * 20000, s"$played samples in $wall s: faster than the recording's 20 kHz")
+      assert(st("setup")("scale")("counts_per_period").num == 4 && st("source").str == "replay of r.csv")
+      assert(math.abs(st("ellipse")("phase_error_deg").num + 1.0) < 0.1, st("ellipse"))
+      // 200 periods/s, 4 counts per period
+      assert(math.abs(st("speed")("counts_per_s").num - 800) < 20, st("speed"))
+    } finally { all.close(); os.remove.all(dir) }
+  }
 }

@@ -81,7 +81,7 @@ object HtmlReport {
         n("phase_error_deg").map(v => "phase error (departure from 90 degree)" -> f"$v%.4f degree"),
         n("noise_sin_fs").map(v => "noise sin (rms)" -> f"${100 * v}%.4f %% FS"), n("noise_cos_fs").map(v => "noise cos (rms)" -> f"${100 * v}%.4f %% FS"),
         n("typical_fringe_hz").map(v => "typical fringe frequency" -> f"$v%.6g Hz")).flatten
-      sb ++= "<h2>Readouts</h2><table>" + rows.map { case (k, v) => s"<tr><th>${esc(k)}</th><td>${esc(v)}</td></tr>" }.mkString + "</table>"
+      if (rows.nonEmpty) sb ++= "<h2>Readouts</h2><table>" + rows.map { case (k, v) => s"<tr><th>${esc(k)}</th><td>${esc(v)}</td></tr>" }.mkString + "</table>"
     }
     get("interpolation_error").objOpt.foreach { ie =>
       val u = value(ie("unit")); val su = ie.get("scaled_unit").flatMap(_.strOpt)

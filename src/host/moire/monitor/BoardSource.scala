@@ -38,18 +38,21 @@ final class BoardSource(port: String, baud: Int, decimation: Option[Long], user:
             lock.lock()
             val s = try {
               val c = new BoardClient(l, timeoutMs)
-              Some((Recorder.setup(c, opts(1, "monitor.csv")), c.decoder.pending))
+              val setup = Recorder.setup(c, opts(1, "monitor.csv"))
+              val depth = if (c.read(Registers.Version) >= 2) Some(c.read(Registers.BurstDepth)) else None
+              Some((setup, depth, c.decoder.pending))
             } catch {
+              case e: NoAnswer => live.connection(up = false, e.getMessage); None
               case e: StreamError if e.getMessage.contains("did not answer") || e.getMessage.contains("not a moire") =>
                 live.connection(up = false, e.getMessage); None
             } finally lock.unlock()
             s match {
               case None => pause(1)
-              case Some((setup, pending)) =>
+              case Some((setup, depth, pending)) =>
                 val meta = Map("source" -> "board (monitor)", "adc" -> "AD9226", "decimation" -> setup.decimation.toString,
                   "adc_clock_hz" -> Recorder.num(setup.adcClockHz), "counts_per_period" -> setup.countsPerPeriod.toString, "port" -> port, "baud" -> baud.toString)
                 live.setup(SourceSetup(setup.sampleRateHz, moire.signal.Adc(12, setup.adc),
-                  user.copy(countsPerPeriod = user.countsPerPeriod.orElse(Some(setup.countsPerPeriod.toDouble))), meta, s"board on $port"))
+                  user.copy(countsPerPeriod = user.countsPerPeriod.orElse(Some(setup.countsPerPeriod.toDouble))), meta, s"board on $port", depth))
                 live.connection(up = true, "streaming")
                 stream(l, live, setup, pending)
             }

@@ -68,9 +68,11 @@ final class Live(staleSeconds: Double = 2.0) {
     val o = ujson.Obj("connected" -> up, "message" -> (if (!up && why == "streaming") f"no records for $age%.1f s" else why),
       "source" -> s.fold[ujson.Value](ujson.Null)(_.label), "records_total" -> total.toDouble, "disconnects" -> drops.toDouble,
       "tolerances" -> t.json, "link" -> lf, "burst" -> b)
-    s.foreach { s0 => o("setup") = ujson.Obj("sample_rate_hz" -> s0.sampleRateHz, "adc_bits" -> s0.adc.bits, "scale" -> s0.scale.json) }
+    s.foreach { s0 => o("setup") = ujson.Obj("sample_rate_hz" -> s0.sampleRateHz, "adc_bits" -> s0.adc.bits, "scale" -> s0.scale.json,
+      "burst_depth" -> s0.burstDepth.fold[ujson.Value](ujson.Null)(d => ujson.Num(d.toDouble))) }
     o("board_status") = st.fold[ujson.Value](ujson.Null)(v => ujson.Obj.from(
       moire.protocol.Registers.StatusBit.named.map { case (bit, n) => n -> ujson.Bool(((v >> bit) & 1) != 0) } :+ ("value" -> ujson.Num(v.toDouble))))
+    o("ellipse") = ujson.Null; o("quality_pct") = 0 // until there are records
     for (r <- rec; s0 <- s) analyse(r, s0, t).foreach { case (k, v) => o(k) = v }
     o
   }

@@ -14,5 +14,8 @@ object LiveRecord {
       (if (r.otrSin) OtrSin else 0) | (if (r.otrCos) OtrCos else 0))
 }
 
-/** What a source tells before its records: rate, ADC, scale, metadata for a saved recording, a name for the page. */
-final case class SourceSetup(sampleRateHz: Double, adc: Adc, scale: Scale, meta: Map[String, String], label: String)
+/** What a source tells before its records: rate, ADC, scale, metadata for a saved recording, a name for the page, the
+  * longest burst it can capture.
+  */
+final case class SourceSetup(sampleRateHz: Double, adc: Adc, scale: Scale, meta: Map[String, String], label: String,
+                             burstDepth: Option[Long] = None)

@@ -2,6 +2,7 @@ package moire.monitor
 
 /** The web server (cask on Undertow) of a [[Monitor]], on `bind`:`port` (0 = a free port; `port` tells which). */
 final class MonitorServer(app: Monitor, bind: String, requestedPort: Int) extends AutoCloseable {
+  cask.main.Main.silenceJboss() // no XNIO / JBoss banner lines on the terminal
   private val hub = new LiveHub(app.live)
   private val main = new cask.Main {
     lazy val routes = new MonitorRoutes(app, hub)(actorContext, log)

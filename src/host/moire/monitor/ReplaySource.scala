@@ -23,7 +23,7 @@ final class ReplaySource(rec: Recording, label: String, user: Scale) extends Sou
   private def pos(k: Long): Long = (position((k % n).toInt) + (k / n) * span).toLong
 
   def start(live: Live): Unit = {
-    live.setup(SourceSetup(rec.sampleRateHz, rec.adc, scale, rec.meta ++ Map("source" -> s"monitor ($label)"), label))
+    live.setup(SourceSetup(rec.sampleRateHz, rec.adc, scale, rec.meta ++ Map("source" -> s"monitor ($label)"), label, Some(n.toLong)))
     live.connection(up = true, "streaming")
     live.link(ujson.Obj("kind" -> "replay", "samples" -> n, "sample_rate_hz" -> rec.sampleRateHz))
     thread = new Thread(() => {

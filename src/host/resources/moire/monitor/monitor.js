@@ -99,6 +99,9 @@ function show(s) {
   // what is shown while disconnected is the last the board sent: greyed out
   document.querySelector("main").classList.toggle("stale", !s.connected);
   $("source").textContent = s.source || "-";
+  // the burst length: at most what the source holds, until the user types one
+  const n = $("burst-samples");
+  if (s.setup && s.setup.burst_depth && !n.dataset.touched) n.value = Math.min(16384, s.setup.burst_depth);
   drawLissajous(s); readouts(s); motion(s); flags(s); burst(s);
   const f = $("tol-form");
   if (s.tolerances && !f.contains(document.activeElement))
@@ -122,6 +125,7 @@ async function post(url, body) {
   return j;
 }
 
+$("burst-samples").addEventListener("input", () => { $("burst-samples").dataset.touched = "yes"; });
 $("burst-form").addEventListener("submit", async ev => {
   ev.preventDefault();
   try {
