@@ -43,7 +43,7 @@ object HtmlReport {
       |h1{font-size:1.5em}h2{border-bottom:1px solid #ccc;margin-top:1.6em}table{border-collapse:collapse;margin:.5em 0}
       |th,td{border:1px solid #ccc;padding:.2em .5em;text-align:left;font-variant-numeric:tabular-nums}th{background:#f3f3f3}
       |figure{margin:.5em 0;display:inline-block;max-width:100%}img{max-width:100%}figcaption{font-size:.8em;color:#555}
-      |.finding{border:1px solid #ddd;padding:.5em 1em;margin:1em 0}.none{color:#777}.sum{font-size:1.1em}
+      |.pair figure{max-width:49%}.finding{border:1px solid #ddd;padding:.5em 1em;margin:1em 0}.none{color:#777}.sum{font-size:1.1em}
       |@media print{body{max-width:none}h2{break-after:avoid}.finding,figure,table{break-inside:avoid}img{max-width:90%}}""".stripMargin
 
   /** Keys with a section of their own; the rest are rendered generically, in their order. */
@@ -58,8 +58,8 @@ object HtmlReport {
     val findings = get("findings").arrOpt.getOrElse(Nil).toSeq
     val sb = new StringBuilder
     sb ++= s"""<!DOCTYPE html><html lang="en"><head><meta charset="utf-8"><title>explain: ${value(get("file"))}</title><style>$css</style></head><body>"""
-    sb ++= s"<h1>explain: ${value(get("file"))}</h1>"
-    sb ++= s"<p>${value(get("kind"))}, ${value(get("samples"))} samples, explained in ${value(get("seconds"))} s. ${value(get("criterion"))}.</p>"
+    sb ++= s"<h1>explain: ${esc(get("file").strOpt.fold("-")(_.split('/').last))}</h1>"
+    sb ++= s"<p>${value(get("file"))}: ${value(get("kind"))}, ${value(get("samples"))} samples, explained in ${value(get("seconds"))} s. ${value(get("criterion"))}.</p>"
     // summary
     val base = get("baseline"); val fin = get("final")
     val named = findings.map(f => s"${value(f("effect"))} (${value(f.obj.getOrElse("channel", ujson.Null))})")
@@ -96,7 +96,7 @@ object HtmlReport {
       sb ++= plot("_interpolation_error.png")
     }
     val liss = plot("_lissajous_before.png") + plot("_lissajous_after.png")
-    if (liss.nonEmpty) sb ++= s"<h2>Lissajous figure, before and after correction</h2>$liss"
+    if (liss.nonEmpty) sb ++= s"<h2>Lissajous figure, before and after correction</h2><div class=\"pair\">$liss</div>"
     // findings
     sb ++= "<h2>Findings</h2>"
     if (findings.isEmpty) sb ++= "<p class=\"none\">none: the default model explains the recording</p>"
