@@ -204,6 +204,53 @@ class BadInputSpec extends AnyFlatSpec with Matchers {
   behavior of "explain-bench"
   bad("--samples 0", "--samples must be in 10000..")("explain-bench", "--samples", "0")
 
+  behavior of "outputs (never over an input, a link, a pipe or a device)"
+  private val model = dir / "m.json"
+  os.write.over(model, """{"effects": []}""")
+  private val jdir = dir / "j"
+  os.makeDir.all(jdir)
+  private val jModel = jdir / "good.json"
+  os.write.over(jModel, """{"effects": []}""")
+  bad("an explain report that would replace the --model", "is an input of this command", Seq(jModel))(
+    "explain", good.toString, "--quiet", "--no-rtl", "--json-dir", jdir.toString, "--model", jModel.toString)
+  bad("a simulate --out that is its --model", "is an input of this command", Seq(model))(
+    "simulate", "--model", model.toString, "--out", model.toString, "--samples", "100")
+  private val portLink = dir / "ttyLink"
+  if (!os.exists(portLink, followLinks = false)) os.symlink(portLink, os.Path("/dev/null"))
+  bad("record --port A --out A (the port's link)", "is an input of this command", Seq(portLink))(
+    "record", "--port", portLink.toString, "--out", portLink.toString, "--seconds", "1")
+  private val link = dir / "link.csv"
+  if (!os.exists(link, followLinks = false)) os.symlink(link, existing)
+  bad("an --out that is a symbolic link", "is a symbolic link", Seq(existing))("simulate", "--out", link.toString, "--samples", "100")
+  private val fifo = dir / "fifo"
+  if (!os.exists(fifo, followLinks = false)) os.proc("mkfifo", fifo.toString).call()
+  bad("an --out that is a named pipe", "is a named pipe (FIFO)")("simulate", "--out", fifo.toString, "--samples", "100")
+  private val device = dir / "dev-null"
+  private val isRoot = os.proc("id", "-u").call().out.trim() == "0"
+  if (isRoot && !os.exists(device, followLinks = false)) os.proc("mknod", device.toString, "c", "1", "3").call()
+  if (isRoot) bad("an --out that is a device node", "is a character device")("simulate", "--out", device.toString, "--samples", "100")
+  else bad("an --out that is a device node", "is a character device")("simulate", "--out", "/dev/null", "--samples", "100")
+  it should "keep the pipe, the link and the device what they were" in {
+    os.isLink(link) shouldBe true
+    os.read(existing) shouldBe "keep me\n"
+    os.proc("test", "-p", fifo.toString).call(check = false).exitCode shouldBe 0
+    if (isRoot) os.proc("test", "-c", device.toString).call(check = false).exitCode shouldBe 0
+  }
+
+  behavior of "inputs that are no file (each says what it is)"
+  private val folderIn = dir / "a-folder"
+  os.makeDir.all(folderIn)
+  bad("explain of a folder", "is a folder, not a file")("explain", folderIn.toString)
+  bad("explain of a named pipe", "is a named pipe (FIFO), not a file")("explain", fifo.toString)
+  bad("explain of /dev/null", "is a character device, not a file")("explain", "/dev/null")
+  bad("replay of a folder", "is a folder, not a file")("replay", folderIn.toString)
+  bad("calibrate of a named pipe", "is a named pipe (FIFO), not a file")("calibrate", "--input", fifo.toString, "--out", calOut.toString)
+  bad("a --model that is a folder", "is a folder, not a file")("explain", good.toString, "--model", folderIn.toString)
+  bad("--coefficients /dev/null", "is a character device, not a file")("board-reg", "--port", port, "--coefficients", "/dev/null")
+  bad("explain-bench --recording of a folder", "is a folder, not a file")("explain-bench", "--recording", folderIn.toString)
+  bad("record --port of a folder", "is a folder, not a serial port")("record", "--port", folderIn.toString, "--seconds", "1", "--out", (dir / "r.csv").toString)
+  bad("record --port ''", "--port is empty")("record", "--port", "", "--seconds", "1", "--out", (dir / "r.csv").toString)
+
   "BadInputSpec" should s"cover at least 60 kinds of bad input (has $kinds)" in {
     info(s"$kinds kinds of bad input")
     kinds should be >= 60

@@ -15,20 +15,17 @@ object BoardProject {
     case _ => Designs.ulx3s("board-ulx3s", p)
   }
 
-  /** Writes the project into `dir` (its rtl/ folder is replaced); returns every file, the Verilog first. */
+  /** Writes the project into `dir` (its rtl/ folder and project files replaced as one); returns every file, the Verilog first. */
   def write(board: String, p: BoardParams, dir: os.Path): Seq[os.Path] = {
     BoardCmd.checkBoard(board)
     moire.files.SafeWrite.checkFolder(dir)   // before the elaboration, not after it
     val d = design(board, p)
-    board match {
-      case "de2-115" =>
-        val rtl = De2115.rtlDir(dir)
-        os.remove.all(rtl)
-        De2115.writeProject(p, dir, BoardCmd.checked(d.write(rtl, Target.SystemVerilog)))
-      case _ =>
-        val rtl = Ulx3s.rtlDir(dir)
-        os.remove.all(rtl)
-        Ulx3s.writeProject(p, dir, BoardCmd.checked(d.write(rtl, Target.Verilog)))
+    // written whole into a fresh folder, then swapped in: a failed or interrupted run leaves the old project whole
+    moire.files.SafeWrite.project(dir) { stage =>
+      board match {
+        case "de2-115" => De2115.writeProject(p, stage, BoardCmd.checked(d.write(De2115.rtlDir(stage), Target.SystemVerilog)))
+        case _ => Ulx3s.writeProject(p, stage, BoardCmd.checked(d.write(Ulx3s.rtlDir(stage), Target.Verilog)))
+      }
     }
   }
 

@@ -32,7 +32,7 @@ object ExplainCmd {
 
   private def readText(f: String): String = {
     val p = os.Path(f, os.pwd)
-    if (!os.isFile(p)) throw new ExplainError(s"$f: no such file")
+    moire.files.PathKind.notAFile(p).foreach(m => throw new ExplainError(m))
     os.read(p)
   }
 
@@ -40,6 +40,7 @@ object ExplainCmd {
     val m = model(o)
     val (rec, _) = try m.generate() catch { case e: IllegalArgumentException => throw new ExplainError(e.getMessage.stripPrefix("requirement failed: ")) }
     val path = os.Path(o.out, os.pwd)
+    moire.files.SafeWrite.refuseInputs(path, o.model.toSeq.map(os.Path(_, os.pwd)))
     Recording.write(path, rec)
     s"wrote $path (${rec.length} samples, ${m.effects.map(_.effect).mkString(", ") match { case "" => "default model only"; case s => s }})"
   }
@@ -53,6 +54,8 @@ object ExplainCmd {
     // Outputs are checked before the long work: writable folders, no two reports under one name.
     val outDirs = (jsonDir ++ plotDir).map(d => os.Path(d, os.pwd))
     outDirs.foreach(moire.files.SafeWrite.checkFolder)
+    for (d <- jsonDir; p <- paths)
+      moire.files.SafeWrite.refuseInputs(os.Path(d, os.pwd) / s"${p.last.stripSuffix(".csv")}.json", paths ++ modelFile.map(os.Path(_, os.pwd)))
     if (outDirs.nonEmpty) paths.groupBy(_.last.stripSuffix(".csv")).collectFirst { case (stem, ps) if ps.distinct.size > 1 =>
       throw new ExplainError(s"${ps.distinct.mkString(" and ")} share the name $stem: their reports would overwrite each other; rename one")
     }
@@ -146,7 +149,7 @@ object ExplainCmd {
       |    --no-rtl             do not compare board outputs with the RTL""".stripMargin
 
   def kindOf(p: os.Path): String = {
-    if (!os.isFile(p)) throw new ExplainError(s"$p: no such file")
+    moire.files.PathKind.notAFile(p).foreach(m => throw new ExplainError(m))
     val first = CsvText.firstLine(p).trim
     if (first == Calibration.Magic) "calibration"
     else if (first == Recording.Magic) "signals"
@@ -168,7 +171,7 @@ object ExplainCmd {
     val dir = out.map(os.Path(_, os.pwd)).getOrElse(os.temp.dir(prefix = "moire-bench"))
     val file = recording.map { f =>
       val p = os.Path(f, os.pwd)
-      if (!os.isFile(p)) throw new ExplainError(s"$f: no such file")
+      moire.files.PathKind.notAFile(p).foreach(m => throw new ExplainError(m))
       p
     }.getOrElse(benchRecording(samples, dir / "bench.csv"))
     val mb = os.size(file) / 1048576.0

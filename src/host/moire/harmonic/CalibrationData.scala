@@ -44,7 +44,7 @@ object CalibrationData {
   private val columns3 = columns2 :+ "direction"
 
   def read(path: os.Path): CalibrationData = {
-    if (!os.isFile(path)) throw new CalibrationError(s"$path: no such file")
+    moire.files.PathKind.notAFile(path).foreach(m => throw new CalibrationError(m))
     val text = try os.read(path) catch { case e: java.io.IOException => throw new CalibrationError(s"$path: cannot read (${moire.files.SafeWrite.reason(e)})") }
     parse(path.last, text)
   }

@@ -15,7 +15,7 @@ object Calibration {
   val Magic = "# moire-calibration v1"
 
   def read(path: os.Path): Calibration = {
-    if (!os.isFile(path)) throw new RecordingError(s"$path: no such file")
+    moire.files.PathKind.notAFile(path).foreach(m => throw new RecordingError(m))
     parse(path.toString, CsvText.lines(path))
   }
 

@@ -65,7 +65,7 @@ object Recording {
     * one RecordingError naming the file, the line and what is wrong.
     */
   def read(path: os.Path): Recording = {
-    if (!os.isFile(path)) throw new RecordingError(s"$path: no such file")
+    moire.files.PathKind.notAFile(path).foreach(m => throw new RecordingError(m))
     val in = try CsvText.reader(path) catch {
       case e: java.io.IOException => throw new RecordingError(s"$path: cannot read (${moire.files.SafeWrite.reason(e)})")
     }

@@ -58,6 +58,8 @@ object Recorder {
         "--counts-per-period" -> o.countsPerPeriod).collect { case (k, None) => k }
       if (missing.nonEmpty) throw new StreamError(s"--listen-only sends no commands, so give ${missing.mkString(", ")} by hand")
     }
+    if (o.port.trim.isEmpty) throw new StreamError("--port is empty: name a serial port, e.g. /dev/ttyUSB0")
+    moire.files.SafeWrite.refuseInputs(o.out, Seq(o.port))   // the port's link is no output
     moire.files.SafeWrite.checkFile(os.Path(o.out, os.pwd))   // before the port is opened and the capture runs
   }
 
@@ -193,6 +195,7 @@ object Recorder {
               if (inner && (idx.size >= 2 || firstOk)) return java.util.Arrays.copyOfRange(buf, i + 1, n)
               last = idx.last; lastSeq = f.seq
             case r: RegisterReply => lastSeq = r.seq
+            case _ => ()   // burst frames belong to a burst capture, not to the stream being settled
           }
           i += 1
         }
