@@ -138,7 +138,7 @@ class BadInputSpec extends AnyFlatSpec with Matchers {
   bad("no --seconds and no --burst", "give --seconds S")(recd(): _*)
   bad("--seconds NaN", "--seconds must be in (0, 86400], got NaN")(recd("--seconds", "NaN"): _*)
   bad("--baud 5", "--baud must be in 300..12000000, got 5")(recd("--seconds", "1", "--baud", "5"): _*)
-  bad("--adc-clock-hz Infinity", "--adc-clock-hz must be a positive number, got Infinity")(recd("--seconds", "1", "--adc-clock-hz", "Infinity"): _*)
+  bad("--adc-clock-hz Infinity", "--adc-clock-hz must be a positive number up to 200000000 (the fastest board clock), got Infinity")(recd("--seconds", "1", "--adc-clock-hz", "Infinity"): _*)
   bad("--listen-only without the board's figures", "--listen-only sends no commands")(recd("--seconds", "1", "--listen-only"): _*)
   bad("--timeout-ms 0", "--timeout-ms must be in 10..60000, got 0")(recd("--seconds", "1", "--timeout-ms", "0"): _*)
   bad("--burst 0", "--burst must be in 1..")(recd("--burst", "0"): _*)
@@ -250,6 +250,23 @@ class BadInputSpec extends AnyFlatSpec with Matchers {
   bad("explain-bench --recording of a folder", "is a folder, not a file")("explain-bench", "--recording", folderIn.toString)
   bad("record --port of a folder", "is a folder, not a serial port")("record", "--port", folderIn.toString, "--seconds", "1", "--out", (dir / "r.csv").toString)
   bad("record --port ''", "--port is empty")("record", "--port", "", "--seconds", "1", "--out", (dir / "r.csv").toString)
+
+  behavior of "numbers (decimal only, the same everywhere)"
+  bad("a sample rate of 1000000d (Java syntax)", "sample_rate_hz '1000000d' is not a sample rate")(
+    "explain", rec("fsd.csv", "# moire-recording v1\n# sample_rate_hz: 1000000d\n# adc_bits: 12\nsin,cos\n" + rows(100)))
+  bad("a sample rate of 0x1p20 (hexadecimal)", "sample_rate_hz '0x1p20' is not a sample rate")(
+    "explain", rec("fshex.csv", "# moire-recording v1\n# sample_rate_hz: 0x1p20\n# adc_bits: 12\nsin,cos\n" + rows(100)))
+  bad("an extra column of 2.5f", "ref_deg '2.5f' is not a finite number")("explain", rec("colf.csv", head + "sin,cos,ref_deg\n1,2,2.5f\n"))
+  bad("--sample-rate-hz 1000000d", "'1000000d' is not a valid number", Seq(existing))(sim("--sample-rate-hz", "1000000d"): _*)
+  bad("--noise 0x1p-10", "'0x1p-10' is not a valid number", Seq(existing))(sim("--noise", "0x1p-10"): _*)
+  bad("a --motion speed of 2e4d", "--motion 'constant:2e4d'", Seq(existing))(sim("--motion", "constant:2e4d"): _*)
+  bad("an effect parameter 0x10", "order '0x10' is not a finite number", Seq(existing))(sim("--effect", "harmonic:order=0x10"): _*)
+  bad("explain --subdiv \"--counts 3\"", "--subdiv: --counts")("explain", good.toString, "--quiet", "--subdiv", "--counts 3")
+  bad("explain --subdiv \"--bogus 1\"", "--subdiv: ")("explain", good.toString, "--quiet", "--subdiv", "--bogus 1")
+  bad("calibrate --max-order -5", "--max-order must be at least 1 (or left out for the default), got -5")(calib("--max-order", "-5"): _*)
+  bad("record --adc-clock-hz 1e12", "--adc-clock-hz must be a positive number up to 200000000")(recd("--seconds", "1", "--adc-clock-hz", "1e12"): _*)
+  bad("cost --sweep --sweep-widths ''", "--sweep-widths: give at least one integer")("cost", "--sweep", "--sweep-widths", "")
+  bad("cost --sweep --sweep-iterations ' , '", "--sweep-iterations: give at least one integer")("cost", "--sweep", "--sweep-iterations", " , ")
 
   "BadInputSpec" should s"cover at least 60 kinds of bad input (has $kinds)" in {
     info(s"$kinds kinds of bad input")

@@ -4,6 +4,7 @@ import mainargs.{Flag, ParserForClass, ParserForMethods, arg, main}
 import moire.cordic._
 import moire.emit.Target
 import moire.options.{SubdivCmd, SubdivConfig}
+import moire.options.DecimalReader._
 import moire.paper.{AccuracyRow, Reproduce}
 
 /** Options shared by every subcommand that builds a CORDIC. */

@@ -51,6 +51,9 @@ object ExplainCmd {
     if (files.isEmpty) throw new ExplainError("explain: name at least one recording file")
     val givenEffects = modelFile.map(f => PhysicsModel.effectsFromJson(PhysicsModel.jsonObject(readText(f), f), f, Nil)).getOrElse(Nil)
     val paths = files.map(f => os.Path(f, os.pwd))
+    // the subdivider's options are checked now, not found wrong file by file in a note
+    rtl.filter(_.nonEmpty).foreach(opts => try moire.replay.ReplayDesign("subdiv", moire.replay.ReplayCmd.config(opts, Map.empty))
+      catch { case e: moire.MoireError => throw new ExplainError(s"--subdiv: ${e.getMessage}") })
     // Outputs are checked before the long work: writable folders, no two reports under one name.
     val outDirs = (jsonDir ++ plotDir).map(d => os.Path(d, os.pwd))
     outDirs.foreach(moire.files.SafeWrite.checkFolder)

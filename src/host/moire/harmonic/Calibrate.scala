@@ -12,6 +12,7 @@ object Calibrate {
     moire.files.SafeWrite.checkFolder(out)   // before the work, not after it
     val data = CalibrationData.read(input)
     val distinct = data.points.map(a => math.round(a.angleDeg * 1e6)).distinct.size
+    if (maxOrderOpt < -1) throw new CalibrationError(s"--max-order must be at least 1 (or left out for the default), got $maxOrderOpt")
     val maxOrder = if (maxOrderOpt < 0) HarmonicFit.defaultMaxOrder(distinct) else maxOrderOpt
     if (maxOrder < 1) throw new CalibrationError(s"--max-order must be at least 1, got $maxOrder")
     if (maxOrderOpt < 0 && maxOrder < p.harmonics)

@@ -77,7 +77,7 @@ object CalibrationData {
           def num(col: Int): Double = {
             val s = cells(col)
             if (s.isEmpty) fail(n, s"missing ${h(col)}")
-            val v = s.toDoubleOption.getOrElse(fail(n, s"${h(col)} '$s' is not a number"))
+            val v = moire.numbers.Decimal.double(s).getOrElse(fail(n, s"${h(col)} '$s' is not a number"))
             if (v.isNaN || v.isInfinite) fail(n, s"${h(col)} is $s")
             v
           }
@@ -105,7 +105,7 @@ object CalibrationData {
 
   /** With `# step_deg: s`, every angle k s in [0, 360) must be present in each direction. */
   private def checkGrid(d: CalibrationData, step: String, line: Int): Unit = {
-    val s = step.toDoubleOption.filter(v => v > 0 && v <= 180 && !v.isNaN)
+    val s = moire.numbers.Decimal.double(step).filter(v => v > 0 && v <= 180 && !v.isNaN)
       .getOrElse(throw new CalibrationError(s"${d.file}:$line: step_deg '$step' must be a number in (0, 180]"))
     val n = math.round(360 / s).toInt
     if (math.abs(n * s - 360) > 1e-6) throw new CalibrationError(s"${d.file}:$line: step_deg $s does not divide 360")

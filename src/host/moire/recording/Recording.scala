@@ -15,7 +15,7 @@ final case class Recording(
 ) {
   require(sin.length == cos.length, "sin and cos must have the same length")
   def length: Int = sin.length
-  def linesPerRev: Option[Double] = meta.get("lines_per_rev").flatMap(_.toDoubleOption)
+  def linesPerRev: Option[Double] = meta.get("lines_per_rev").flatMap(moire.numbers.Decimal.double)
   /** Signed values in full-scale units (-1 .. 1) of one channel. */
   def values(codes: Array[Int]): Array[Double] = {
     val out = new Array[Double](codes.length); val lsb = adc.lsb
@@ -93,7 +93,7 @@ object Recording {
       bad(1, if (first.trim.isEmpty && !it.exists(_.trim.nonEmpty)) "empty file, expected '# moire-recording v1'" else s"first line must be '$Magic', got '${first.take(40)}'")
     val (meta, headerAt) = CsvText.metadata(name, it)
     def need(k: String) = meta.getOrElse(k, bad(headerAt + 1, s"metadata '$k' is missing (a line '# $k: value' before the header)"))
-    val fs = need("sample_rate_hz").toDoubleOption.filter(v => v > 0 && v <= MaxSampleRateHz)
+    val fs = moire.numbers.Decimal.double(need("sample_rate_hz")).filter(v => v > 0 && v <= MaxSampleRateHz)
       .getOrElse(bad(headerAt + 1, s"metadata sample_rate_hz '${meta("sample_rate_hz")}' is not a sample rate (a number above 0 and at most 1e11 Hz)"))
     val bits = need("adc_bits").toIntOption.filter(b => b >= 4 && b <= 24)
       .getOrElse(bad(headerAt + 1, s"metadata adc_bits '${meta("adc_bits")}' is not an integer in 4..24"))
@@ -107,7 +107,8 @@ object Recording {
     val extraIdx = header.indices.filter(i => i != si && i != ci).toArray
     // the `samples` line sizes the arrays when it is there (checked against the rows at the end)
     val expect = meta.get("samples").flatMap(_.toIntOption).filter(n => n > 0 && n < Int.MaxValue - 8)
-    var cap = expect.getOrElse(1 << 16)
+    // a hint only, never trusted for more than 4 Mi rows: a wrong `samples` line must not size the arrays
+    var cap = expect.fold(1 << 16)(math.min(_, 1 << 22))
     var sin = new Array[Int](cap); var cos = new Array[Int](cap)
     val extra = Array.fill(extraIdx.length)(new Array[Double](cap))
     val maxCode = (1 << bits) - 1
@@ -134,7 +135,7 @@ object Recording {
         var e = 0
         while (e < extraIdx.length) {
           val c = extraIdx(e)
-          extra(e)(n) = cells(c).trim.toDoubleOption.filter(v => !v.isNaN && !v.isInfinite)
+          extra(e)(n) = moire.numbers.Decimal.double(cells(c)).filter(v => !v.isNaN && !v.isInfinite)
             .getOrElse(bad(ln, s"${header(c)} '${cells(c).trim}' is not a finite number"))
           e += 1
         }

@@ -1,6 +1,7 @@
 package moire.replay
 
 import mainargs.ParserForClass
+import moire.options.DecimalReader._
 import moire.options.SubdivConfig
 import moire.recording.Recording
 
@@ -30,7 +31,7 @@ object ReplayCmd {
 
   /** The pins of a recording, or one line saying why it cannot be replayed exactly. */
   def pins(file: String, rec: Recording): PinStream = {
-    val dec = rec.meta.get("decimation").map(v => v.toDoubleOption.getOrElse(throw new ReplayError(s"$file: metadata decimation '$v' is not a number")))
+    val dec = rec.meta.get("decimation").map(v => moire.numbers.Decimal.double(v).getOrElse(throw new ReplayError(s"$file: metadata decimation '$v' is not a number")))
     dec.filter(_ != 1.0).foreach { d =>
       throw new ReplayError(s"$file: the recording is decimated (decimation ${fmt(d)}): the RTL needs every ADC sample, so it cannot be replayed exactly")
     }

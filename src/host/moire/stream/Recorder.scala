@@ -42,11 +42,15 @@ object Recorder {
   /** Records per second the link carries at `baud` with n records per frame (10 bits per byte on the wire). */
   def linkRecordsPerSecond(baud: Int, n: Long): Double = baud / 10.0 / StreamV1.recordFrameBytes(n.toInt) * n
 
+  /** The fastest ADC clock a board can run (its system clock's limit, 200 MHz). */
+  val MaxAdcClockHz = 200e6
+
   def validate(o: RecordOptions): Unit = {
     if (!(o.seconds > 0) || o.seconds > 86400) throw new StreamError(s"--seconds must be in (0, 86400], got ${o.seconds}")
     if (o.baud < 300 || o.baud > 12000000) throw new StreamError(s"--baud must be in 300..12000000, got ${o.baud}")
     o.decimation.foreach(d => if (d < 1 || d > Registers.MaxDecimation) throw new StreamError(s"--decimation must be in 1..${Registers.MaxDecimation}, got $d"))
-    o.adcClockHz.foreach(f => if (!(f > 0) || f.isInfinite) throw new StreamError(s"--adc-clock-hz must be a positive number, got $f"))
+    o.adcClockHz.foreach(f => if (!(f > 0) || f > MaxAdcClockHz)
+      throw new StreamError(s"--adc-clock-hz must be a positive number up to ${MaxAdcClockHz.toLong} (the fastest board clock), got $f"))
     o.adcFormat.foreach(f => AdcFormat.parse(f).left.foreach(e => throw new StreamError(s"--adc-format: $e")))
     o.countsPerPeriod.foreach(m => if (m < 1 || m > StreamV1.MaxU32) throw new StreamError(s"--counts-per-period must be a positive u32, got $m"))
     for ((k, v) <- Seq("--ref-counts-per-period" -> o.refCountsPerPeriod, "--ref-counts-per-turn" -> o.refCountsPerTurn); x <- v)
