@@ -83,7 +83,7 @@ lazy val root = (project in file("."))
     Compile / mainClass := Some("moire.cli.Main"),
     run / fork := true,
     run / outputStrategy := Some(StdoutOutput),
-    run / javaOptions ++= Seq("-Xss8m", "-Xmx4g"),
+    run / javaOptions ++= Seq("-Xss8m", "-Xmx4g", "-Dfile.encoding=UTF-8"),
     Test / fork := true,
     Test / javaOptions ++= Seq("-Xss8m", "-Xmx6g"),
     Test / testOptions += Tests.Argument(TestFrameworks.ScalaTest, "-oD"),
@@ -107,6 +107,7 @@ lazy val root = (project in file("."))
     // A quick start: no second JVM for the launcher's Java version check; the classes a start loads from
     // a CDS archive (lib/moire.jsa, written by `stage`); `--help` stops at the first JIT tier.
     bashScriptExtraDefines ++= Seq(
+      IO.read(baseDirectory.value / "src" / "cli" / "utf8-locale.sh"),
       "no_version_check=1",
       """[[ -f "$lib_dir/moire.jsa" ]] && addJava "-XX:SharedArchiveFile=$lib_dir/moire.jsa"""",
       """case " $* " in *" --help "*) addJava "-XX:TieredStopAtLevel=1"; addJava "-XX:+UseSerialGC";; esac"""),

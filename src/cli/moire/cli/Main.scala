@@ -297,6 +297,9 @@ object Main {
       case e: moire.MoireError => System.err.println(s"moire: ${e.getMessage}"); 2
       // Last resort: what a library let through still becomes one line in words, never a class name.
       case e: java.io.IOException => System.err.println(s"moire: ${moire.files.SafeWrite.reason(e)}"); 2
+      case e: java.nio.file.InvalidPathException =>
+        System.err.println(s"moire: ${plain(e.getInput)}: a file name this locale's character set (${System.getProperty("sun.jnu.encoding")}) " +
+          "cannot hold; run moire under a UTF-8 locale, e.g. LC_CTYPE=C.UTF-8"); 2
       case e: IllegalArgumentException =>
         System.err.println(s"moire: ${plain(Option(e.getMessage).getOrElse("invalid value").stripPrefix("requirement failed: "))}"); 2
       case e: OutOfMemoryError =>
