@@ -14,12 +14,18 @@ object BoardCmd {
   def checked[T](body: => T): T =
     try body catch { case e: IllegalArgumentException => bad("--" + e.getMessage.stripPrefix("requirement failed: ")) }
 
-  def params(design: String, adcClockHz: Int, adcFormat: String, decimation: Int, baud: Int, frameRecords: Int,
+  /** Each board's check of its system clock. */
+  private val clockProblem: Map[String, (Int, ClockSource) => Option[String]] =
+    Map("de2-115" -> moire.board.de2115.De2115.clockProblem, "ulx3s" -> moire.board.ulx3s.Ulx3s.clockProblem)
+
+  def params(board: String, design: String, adcClockHz: Int, adcFormat: String, decimation: Int, baud: Int, frameRecords: Int,
              fifoDepth: Int, glitchFilter: Int, counts: Int, clockSource: String, clockHz: Int = 50000000,
              lines: Int = 16384, harmonics: Int = 4): BoardParams = {
     val d = BoardDesign.parse(design).fold(bad, identity)
     val f = AdcFormat.parse(adcFormat).fold(e => bad(s"--adc-format: $e"), identity)
     val c = ClockSource.parse(clockSource).fold(bad, identity)
+    if (clockHz < 1000000 || clockHz > 200000000) bad(s"--clock-hz must be in 1000000..200000000, got $clockHz")
+    clockProblem.get(board).flatMap(_(clockHz, c)).foreach(bad)   // the board's clock first: --adc-clock-hz derives from it
     checked {
       val base = BoardParams()
       val sub = base.subdiv.copy(counts = counts)

@@ -12,6 +12,11 @@ object De2115 {
 
   def top(p: BoardParams): RawModule = new De2115Top(p)
 
+  /** Why this board cannot run its system clock at `clockHz` (None: it can). */
+  def clockProblem(clockHz: Int, source: moire.board.ClockSource): Option[String] =
+    Option.when(clockHz != clockHz0)(s"--clock-hz: the DE2-115 runs at $clockHz0 Hz (CLOCK_50, no PLL for the system clock), got $clockHz")
+  private def clockHz0 = De2115.clockHz
+
   /** Where [[writeProject]] expects the board's Verilog: `dir/rtl`. */
   def rtlDir(dir: os.Path): os.Path = dir / "rtl"
 

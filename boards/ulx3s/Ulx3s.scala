@@ -15,6 +15,13 @@ object Ulx3s {
 
   def top(p: BoardParams): RawModule = new Ulx3sTop(p)
 
+  /** Why this board cannot run its system clock at `clockHz` (None: it can). */
+  def clockProblem(clockHz: Int, source: moire.board.ClockSource): Option[String] = source match {
+    case moire.board.ClockSource.Logic => Option.when(clockHz != oscillatorHz)(
+      s"--clock-hz: with --clock-source logic the ULX3S runs on its $oscillatorHz Hz oscillator, got $clockHz")
+    case _ => Ecp5Pll.solve(oscillatorHz, clockHz).left.toOption.map(e => s"--clock-hz: $e")
+  }
+
   /** Where [[writeProject]] expects the board's Verilog: `dir/rtl`. */
   def rtlDir(dir: os.Path): os.Path = dir / "rtl"
   /** The build script [[writeProject]] writes into `dir`. */

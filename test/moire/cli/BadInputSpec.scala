@@ -188,9 +188,11 @@ class BadInputSpec extends AnyFlatSpec with Matchers {
   behavior of "timing (fails before any tool runs)"
   bad("an unknown --design", "--design: 'nosuch' is not a design")("timing", "--design", "nosuch")
   bad("--speeds 5", "--speeds: '5' is not an ECP5 speed grade")("timing", "--design", "cordic", "--speeds", "5")
-  bad("--target-mhz NaN", "--target-mhz: NaN is outside 0..1000 MHz")("timing", "--design", "cordic", "--target-mhz", "NaN")
-  bad("--target-mhz Infinity", "--target-mhz: Infinity is outside 0..1000 MHz")("timing", "--design", "cordic", "--target-mhz", "Infinity")
-  bad("--target-mhz -3", "--target-mhz: -3.0 is outside 0..1000 MHz")("timing", "--design", "cordic", "--target-mhz", "-3")
+  bad("--target-mhz NaN", "--target-mhz must be above 0 and below 1000 MHz, got NaN")("timing", "--design", "cordic", "--target-mhz", "NaN")
+  bad("--target-mhz Infinity", "--target-mhz must be above 0 and below 1000 MHz, got Infinity")("timing", "--design", "cordic", "--target-mhz", "Infinity")
+  bad("--target-mhz -3", "--target-mhz must be above 0 and below 1000 MHz, got -3.0")("timing", "--design", "cordic", "--target-mhz", "-3")
+  bad("--target-mhz 1000", "--target-mhz must be above 0 and below 1000 MHz, got 1000.0")("timing", "--design", "cordic", "--target-mhz", "1000")
+  bad("--target-mhz 0", "--target-mhz must be above 0 and below 1000 MHz, got 0.0")("timing", "--design", "cordic", "--target-mhz", "0")
   bad("a --json path through a file", "is a file, not a folder", Seq(aFile))("timing", "--design", "cordic", "--json", (aFile / "t.json").toString)
   bad("a --cache that is a file", "is a file, not a folder", Seq(aFile))("timing", "--design", "cordic", "--cache", aFile.toString)
 
@@ -267,6 +269,40 @@ class BadInputSpec extends AnyFlatSpec with Matchers {
   bad("record --adc-clock-hz 1e12", "--adc-clock-hz must be a positive number up to 200000000")(recd("--seconds", "1", "--adc-clock-hz", "1e12"): _*)
   bad("cost --sweep --sweep-widths ''", "--sweep-widths: give at least one integer")("cost", "--sweep", "--sweep-widths", "")
   bad("cost --sweep --sweep-iterations ' , '", "--sweep-iterations: give at least one integer")("cost", "--sweep", "--sweep-iterations", " , ")
+
+  behavior of "messages that say what is wrong"
+  bad("a '#' line among the data rows", "a '#' line among the data rows")("explain", rec("hashrow.csv", head + "sin,cos\n" + rows(100) + "# paused here\n" + rows(100)))
+  bad("# samples: 2000000000 in a 2000-row file", "metadata samples says '2000000000' but the file has 2000 data rows")(
+    "explain", rec("bigsamples.csv", head + "# samples: 2000000000\nsin,cos\n" + rows(2000)))
+  bad("board de2-115 --clock-hz 65000000 (the board's clock, not the ADC's)", "--clock-hz: the DE2-115 runs at 50000000 Hz")(
+    "board", "de2-115", "--clock-hz", "65000000", "--out", boardOut.toString)
+  bad("board ulx3s --clock-hz 66666666 (no exact PLL setting)", "--clock-hz: the ECP5 PLL cannot make exactly")(
+    "board", "ulx3s", "--clock-hz", "66666666", "--out", boardOut.toString)
+  bad("error_arcsec 1e400", "error_arcsec is 1e400: infinite")("calibrate", "--input", rec("calinf.csv", "# moire-calibration v1\nangle_deg,error_arcsec\n0,1\n10,1e400\n"))
+  bad("one ccw row among cw rows", "direction ccw has 1 point (first on line 39)")(
+    "calibrate", "--input", rec("calccw.csv", "# moire-calibration v1\nangle_deg,error_arcsec,direction\n" + (0 until 360 by 10).map { a =>
+      val t = math.toRadians(a); f"$a,${2 * math.sin(t)}%.4f,cw" }.mkString("\n") + "\n10,0.3,ccw\n"), "--out", calOut.toString)
+  private def binary(name: String, bytes: Array[Byte]): String = { os.write.over(dir / name, bytes); (dir / name).toString }
+  bad("a UTF-16 recording (shown as bytes)", "UTF-16 text (save it as UTF-8); it starts with '\\xff\\xfe#\\x00")(
+    "explain", binary("utf16.csv", Array(0xff, 0xfe).map(_.toByte) ++ (head + "sin,cos\n" + rows(10)).getBytes("UTF-16LE")))
+  bad("a gzip file (shown as bytes)", "gzip-compressed data (unpack it first); it starts with '\\x1f\\x8b")("explain", binary("rec.csv.gz", {
+    val b = new java.io.ByteArrayOutputStream; val z = new java.util.zip.GZIPOutputStream(b); z.write((head + "sin,cos\n" + rows(100)).getBytes); z.close(); b.toByteArray }))
+  bad("a file of NUL bytes (shown as bytes)", "binary data (it holds NUL bytes), not text; it starts with '\\x00\\x00")("explain", binary("nul.csv", new Array[Byte](4096)))
+  bad("control bytes on the first line", "got 'hello\\x01\\x07world'")("explain", rec("ctl.csv", "hello\u0001\u0007world\n"))
+  bad("a calibration of NUL bytes", "binary data (it holds NUL bytes)")("calibrate", "--input", binary("calnul.csv", new Array[Byte](100)), "--out", calOut.toString)
+  bad("one endless line (refused after 1 Mi characters, not read whole)", "a line longer than 1048576 characters")(
+    "explain", binary("zeros.csv", Array.fill[Byte](3 << 20)('0'.toByte)))
+  it should "refuse a 1 GB file of zeros quickly (the reader bounds a line's length)" in {
+    val f = dir / "gigabyte.csv"
+    val ch = java.nio.channels.FileChannel.open(f.toNIO, java.nio.file.StandardOpenOption.CREATE, java.nio.file.StandardOpenOption.WRITE)
+    try { val z = java.nio.ByteBuffer.wrap(Array.fill[Byte](1 << 20)('0'.toByte)); for (_ <- 0 until 1024) { z.rewind(); ch.write(z) } } finally ch.close()
+    val t0 = System.nanoTime()
+    val (code, err) = runCli("explain", f.toString, "--quiet")
+    val seconds = (System.nanoTime() - t0) / 1e9
+    info(f"refused in $seconds%.2f s")
+    os.remove(f)
+    withClue(err) { code shouldBe 2; err should include("a line longer than 1048576 characters") }
+  }
 
   "BadInputSpec" should s"cover at least 60 kinds of bad input (has $kinds)" in {
     info(s"$kinds kinds of bad input")

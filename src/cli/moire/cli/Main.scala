@@ -214,7 +214,7 @@ object Main {
     import moire.board.BoardCmd
     try {
       BoardCmd.checkBoard(name)
-      val p = BoardCmd.params(design, adcClockHz, adcFormat, decimation, baud, frameRecords, fifoDepth, glitchFilter, counts, clockSource,
+      val p = BoardCmd.params(name, design, adcClockHz, adcFormat, decimation, baud, frameRecords, fifoDepth, glitchFilter, counts, clockSource,
         clockHz, lines, harmonics)
       moire.designs.BoardProject.run(name, p, os.Path(out.getOrElse(s"generated/$name"), os.pwd)).foreach(println)
     } catch { case e: BoardCmd.BadOption => throw new UsageError(e.getMessage) }

@@ -153,10 +153,11 @@ object ExplainCmd {
 
   def kindOf(p: os.Path): String = {
     moire.files.PathKind.notAFile(p).foreach(m => throw new ExplainError(m))
+    CsvText.checkText(p)
     val first = CsvText.firstLine(p).trim
     if (first == Calibration.Magic) "calibration"
     else if (first == Recording.Magic) "signals"
-    else throw new ExplainError(s"$p:1: first line must be '${Recording.Magic}' or '${Calibration.Magic}', got '${first.take(40)}'")
+    else throw new ExplainError(s"$p:1: first line must be '${Recording.Magic}' or '${Calibration.Magic}', got '${moire.files.Shown.text(first)}'")
   }
 
   /** explain-bench's range of --samples: a few fringe periods of the ramp up to the 2^31-sample limit of an array. */

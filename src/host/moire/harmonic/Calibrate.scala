@@ -21,6 +21,10 @@ object Calibrate {
     val dirs = data.directions.filter(_.nonEmpty)
     val byDir = if (dirs.size > 1) dirs.map { d =>
       val ps = data.of(d)
+      val need = 2 * fit.harmonics.size + 1
+      if (ps.size < need) throw new CalibrationError(s"${data.file}: direction $d has ${ps.size} point${if (ps.size == 1) "" else "s"} " +
+        s"(first on line ${ps.head.line}); each direction is fitted on its own and needs at least $need for the ${fit.harmonics.size} " +
+        "harmonics kept: give it its full set of angles, or fewer --harmonics")
       d -> HarmonicFit.fit(ps.map(_.angleDeg), ps.map(_.errorArcsec), fit.harmonics.map(_.order))
     } else Nil
     val reversal = if (dirs.toSet == Set("cw", "ccw")) {

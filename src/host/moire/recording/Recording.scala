@@ -1,5 +1,6 @@
 package moire.recording
 
+import moire.files.Shown
 import moire.signal.{Adc, AdcFormat}
 
 /** A `moire-recording v1` file: ADC pin codes of the sin and cos channels, with metadata.
@@ -66,6 +67,7 @@ object Recording {
     */
   def read(path: os.Path): Recording = {
     moire.files.PathKind.notAFile(path).foreach(m => throw new RecordingError(m))
+    CsvText.checkText(path)
     val in = try CsvText.reader(path) catch {
       case e: java.io.IOException => throw new RecordingError(s"$path: cannot read (${moire.files.SafeWrite.reason(e)})")
     }
@@ -90,7 +92,7 @@ object Recording {
     if (!it.hasNext) bad(1, "empty file, expected '# moire-recording v1'")
     val first = it.next()
     if (first.stripPrefix("\uFEFF").trim != Magic)
-      bad(1, if (first.trim.isEmpty && !it.exists(_.trim.nonEmpty)) "empty file, expected '# moire-recording v1'" else s"first line must be '$Magic', got '${first.take(40)}'")
+      bad(1, if (first.trim.isEmpty && !it.exists(_.trim.nonEmpty)) "empty file, expected '# moire-recording v1'" else s"first line must be '$Magic', got '${Shown.text(first)}'")
     val (meta, headerAt) = CsvText.metadata(name, it)
     def need(k: String) = meta.getOrElse(k, bad(headerAt + 1, s"metadata '$k' is missing (a line '# $k: value' before the header)"))
     val fs = moire.numbers.Decimal.double(need("sample_rate_hz")).filter(v => v > 0 && v <= MaxSampleRateHz)
@@ -103,7 +105,7 @@ object Recording {
     val header = headerLine.split(",", -1).map(_.trim)
     header.groupBy(identity).collectFirst { case (c, cs) if cs.length > 1 => bad(headerAt + 1, s"column '$c' appears ${cs.length} times in the header") }
     val si = header.indexOf("sin"); val ci = header.indexOf("cos")
-    if (si < 0 || ci < 0) bad(headerAt + 1, s"header must name columns sin and cos, got '${headerLine.take(60)}'")
+    if (si < 0 || ci < 0) bad(headerAt + 1, s"header must name columns sin and cos, got '${Shown.text(headerLine)}'")
     val extraIdx = header.indices.filter(i => i != si && i != ci).toArray
     // the `samples` line sizes the arrays when it is there (checked against the rows at the end)
     val expect = meta.get("samples").flatMap(_.toIntOption).filter(n => n > 0 && n < Int.MaxValue - 8)
@@ -124,10 +126,11 @@ object Recording {
           var e = 0
           while (e < extra.length) { extra(e) = java.util.Arrays.copyOf(extra(e), cap); e += 1 }
         }
+        if (line.startsWith("#")) bad(ln, s"a '#' line among the data rows ('${Shown.text(line)}'): comments and metadata go before the header row")
         val cells = line.split(",", -1)
-        if (cells.length != header.length) bad(ln, s"${cells.length} cells, the header has ${header.length}")
+        if (cells.length != header.length) bad(ln, s"${cells.length} cells, the header has ${header.length}: '${Shown.text(line)}'")
         def code(c: Int, col: String): Int = {
-          val v = cells(c).trim.toIntOption.getOrElse(bad(ln, s"$col '${cells(c).trim}' is not an integer ADC code"))
+          val v = cells(c).trim.toIntOption.getOrElse(bad(ln, s"$col '${Shown.text(cells(c).trim)}' is not an integer ADC code"))
           if (v < 0 || v > maxCode) bad(ln, s"$col code $v is outside the $bits-bit ADC range 0..$maxCode")
           v
         }
@@ -136,7 +139,7 @@ object Recording {
         while (e < extraIdx.length) {
           val c = extraIdx(e)
           extra(e)(n) = moire.numbers.Decimal.double(cells(c)).filter(v => !v.isNaN && !v.isInfinite)
-            .getOrElse(bad(ln, s"${header(c)} '${cells(c).trim}' is not a finite number"))
+            .getOrElse(bad(ln, s"${Shown.text(header(c))} '${Shown.text(cells(c).trim)}' is not a finite number"))
           e += 1
         }
         n += 1
@@ -155,9 +158,19 @@ object Recording {
 
 /** Shared text helpers of the two CSV formats. */
 object CsvText {
+  /** The longest line a text file of moire may hold (a recording's row is a few dozen characters). */
+  val MaxLineChars: Int = 1 << 20
+
+  /** All lines of a (small) text file, read through the bounded reader. */
   def lines(path: os.Path): IndexedSeq[String] = {
-    val text = try os.read(path) catch { case e: java.io.IOException => throw new RecordingError(s"$path: cannot read (${moire.files.SafeWrite.reason(e)})") }
-    text.stripPrefix("\uFEFF").split("\r?\n", -1).toIndexedSeq match { case s if s.nonEmpty && s.last.isEmpty => s.init; case s => s }
+    checkText(path)
+    val in = try reader(path) catch { case e: java.io.IOException => throw new RecordingError(s"$path: cannot read (${moire.files.SafeWrite.reason(e)})") }
+    try lineIterator(path, in).toIndexedSeq finally in.close()
+  }
+
+  /** Refuses, from its first bytes, a file that is no text: gzip, UTF-16, a zip archive, NUL bytes. */
+  def checkText(path: os.Path): Unit = Shown.binaryKind(path).foreach { k =>
+    throw new RecordingError(s"$path: is $k; it starts with '${Shown.head(path, 16)}'")
   }
 
   /** A UTF-8 reader of a file; bytes that are not UTF-8 (a Latin-1 comment) become U+FFFD, never an error. */
@@ -176,9 +189,11 @@ object CsvText {
     * error is a RecordingError naming the file.
     */
   def lineIterator(path: os.Path, in: java.io.BufferedReader): Iterator[String] = new Iterator[String] {
+    private val bounded = new BoundedLines(in, MaxLineChars, line => throw new RecordingError(
+      s"$path:$line: a line longer than $MaxLineChars characters: not a moire text file (it starts with '${Shown.head(path, 16)}')"))
     private var first = true
     private var nextLine: String = read()
-    private def read(): String = try in.readLine() catch {
+    private def read(): String = try bounded.readLine() catch {
       case e: java.io.IOException => throw new RecordingError(s"$path: cannot read (${moire.files.SafeWrite.reason(e)})")
     }
     def hasNext: Boolean = nextLine != null
@@ -200,7 +215,7 @@ object CsvText {
       val body = line.stripPrefix("#").trim
       if (body.nonEmpty) {
         val at = body.indexOf(':')
-        if (at <= 0) throw new RecordingError(s"$name:${i + 1}: metadata line must be '# key: value', got '${line.take(60)}'")
+        if (at <= 0) throw new RecordingError(s"$name:${i + 1}: metadata line must be '# key: value', got '${Shown.text(line)}'")
         val key = body.substring(0, at).trim
         if (m.contains(key)) throw new RecordingError(s"$name:${i + 1}: metadata key '$key' appears twice")
         m(key) = body.substring(at + 1).trim
