@@ -72,7 +72,6 @@ class BadInputSpec extends AnyFlatSpec with Matchers {
   bad("NaN in an extra column", "is not a finite number")("explain", rec("nan.csv", head + "sin,cos,ref_deg\n1,2,NaN\n"))
   bad("1e400 in an extra column", "is not a finite number")("explain", rec("inf.csv", head + "sin,cos,ref_deg\n1,2,1e400\n"))
   bad("Infinity in an extra column", "is not a finite number")("explain", rec("inf2.csv", head + "sin,cos,ref_deg\n1,2,-Infinity\n"))
-  bad("a metadata line without a colon", "metadata line must be '# key: value'")("explain", rec("meta.csv", head + "# nonsense\nsin,cos\n1,2\n"))
   bad("a header but no rows", "no data rows")("explain", rec("norows.csv", head + "sin,cos\n"))
   bad("a 1-row recording", "1 samples; explain needs at least 64")("explain", rec("one.csv", head + "sin,cos\n1,2\n"))
   bad("a 10-row recording", "10 samples; explain needs at least 64")("explain", rec("ten.csv", head + "sin,cos\n" + rows(10)))

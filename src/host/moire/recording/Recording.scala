@@ -4,7 +4,8 @@ import moire.files.Shown
 import moire.signal.{Adc, AdcFormat}
 
 /** A `moire-recording v1` file: ADC pin codes of the sin and cos channels, with metadata.
-  * Codes are as the ADC drives its pins (`adc_format`); `extra` holds any further numeric columns.
+  * Codes are as the ADC drives its pins (`adc_format`); `extra` holds any further numeric columns; `comments`
+  * the header's comment lines (text without a `key: value` form), kept as they were.
   */
 final case class Recording(
   sampleRateHz: Double,
@@ -12,7 +13,8 @@ final case class Recording(
   sin: Array[Int],
   cos: Array[Int],
   meta: Map[String, String] = Map.empty,
-  extra: Map[String, Array[Double]] = Map.empty
+  extra: Map[String, Array[Double]] = Map.empty,
+  comments: Seq[String] = Nil
 ) {
   require(sin.length == cos.length, "sin and cos must have the same length")
   def length: Int = sin.length
@@ -46,6 +48,7 @@ object Recording {
       try {
         w.write(Magic); w.write('\n')
         for ((k, v) <- fixed ++ rest) { w.write("# "); w.write(k); w.write(": "); w.write(v); w.write('\n') }
+        for (c <- r.comments) { w.write("# "); w.write(c); w.write('\n') }
         w.write((Seq("sin", "cos") ++ cols).mkString(",")); w.write('\n')
         val sb = new java.lang.StringBuilder(128)
         var i = 0
@@ -93,7 +96,7 @@ object Recording {
     val first = it.next()
     if (first.stripPrefix("\uFEFF").trim != Magic)
       bad(1, if (first.trim.isEmpty && !it.exists(_.trim.nonEmpty)) "empty file, expected '# moire-recording v1'" else s"first line must be '$Magic', got '${Shown.text(first)}'")
-    val (meta, headerAt) = CsvText.metadata(name, it)
+    val (meta, comments, headerAt) = CsvText.header(name, it)
     def need(k: String) = meta.getOrElse(k, bad(headerAt + 1, s"metadata '$k' is missing (a line '# $k: value' before the header)"))
     val fs = moire.numbers.Decimal.double(need("sample_rate_hz")).filter(v => v > 0 && v <= MaxSampleRateHz)
       .getOrElse(bad(headerAt + 1, s"metadata sample_rate_hz '${meta("sample_rate_hz")}' is not a sample rate (a number above 0 and at most 1e11 Hz)"))
@@ -114,11 +117,16 @@ object Recording {
     var sin = new Array[Int](cap); var cos = new Array[Int](cap)
     val extra = Array.fill(extraIdx.length)(new Array[Double](cap))
     val maxCode = (1 << bits) - 1
+    // two's complement: signed codes (-2^(b-1)..2^(b-1)-1) or pin patterns (0..2^b-1), told apart by the values
+    val signedOk = adc.format == AdcFormat.TwosComplement
+    val minCode = if (signedOk) -(1 << (bits - 1)) else 0
+    var firstNegative = 0L; var firstHigh = 0L
     var n = 0
     var ln = headerAt + 1L
     while (it.hasNext) {
       val line = it.next(); ln += 1
       if (line.trim.nonEmpty) {
+        def badRow(msg: String) = bad(ln, s"$msg: '${Shown.text(line)}'")
         if (n == cap) {
           if (cap >= Int.MaxValue / 2) bad(ln, s"more than $cap rows: too long for one recording")
           cap *= 2
@@ -126,20 +134,26 @@ object Recording {
           var e = 0
           while (e < extra.length) { extra(e) = java.util.Arrays.copyOf(extra(e), cap); e += 1 }
         }
-        if (line.startsWith("#")) bad(ln, s"a '#' line among the data rows ('${Shown.text(line)}'): comments and metadata go before the header row")
+        if (line.startsWith("#")) badRow("a '#' line among the data rows (comments and metadata go before the header row)")
         val cells = line.split(",", -1)
-        if (cells.length != header.length) bad(ln, s"${cells.length} cells, the header has ${header.length}: '${Shown.text(line)}'")
+        if (cells.length != header.length) badRow(s"${cells.length} cells, the header has ${header.length}")
         def code(c: Int, col: String): Int = {
-          val v = cells(c).trim.toIntOption.getOrElse(bad(ln, s"$col '${Shown.text(cells(c).trim)}' is not an integer ADC code"))
-          if (v < 0 || v > maxCode) bad(ln, s"$col code $v is outside the $bits-bit ADC range 0..$maxCode")
-          v
+          val v = cells(c).trim.toIntOption.getOrElse(badRow(s"$col '${Shown.text(cells(c).trim)}' is not an integer ADC code"))
+          if (v < minCode || v > maxCode)
+            badRow(s"$col code $v is outside the $bits-bit ADC range ${if (signedOk) s"$minCode..$maxCode (signed codes or pin patterns)" else s"0..$maxCode"}")
+          if (v < 0) { if (firstNegative == 0) firstNegative = ln }
+          else if (v > (maxCode >> 1) && firstHigh == 0) firstHigh = ln
+          if (firstNegative != 0 && firstHigh != 0)
+            bad(ln, s"signed codes (a negative one on line $firstNegative) and pin patterns above ${maxCode >> 1} (line $firstHigh) in one file: " +
+              "a two's-complement file holds one or the other")
+          v & maxCode
         }
         sin(n) = code(si, "sin"); cos(n) = code(ci, "cos")
         var e = 0
         while (e < extraIdx.length) {
           val c = extraIdx(e)
           extra(e)(n) = moire.numbers.Decimal.double(cells(c)).filter(v => !v.isNaN && !v.isInfinite)
-            .getOrElse(bad(ln, s"${Shown.text(header(c))} '${Shown.text(cells(c).trim)}' is not a finite number"))
+            .getOrElse(badRow(s"${Shown.text(header(c))} '${Shown.text(cells(c).trim)}' is not a finite number"))
           e += 1
         }
         n += 1
@@ -152,7 +166,7 @@ object Recording {
     }
     def trim[A](a: Array[A], copy: (Array[A], Int) => Array[A]): Array[A] = if (a.length == n) a else copy(a, n)
     Recording(fs, adc, trim[Int](sin, (a, k) => java.util.Arrays.copyOf(a, k)), trim[Int](cos, (a, k) => java.util.Arrays.copyOf(a, k)), meta,
-      extraIdx.indices.map(e => header(extraIdx(e)) -> trim[Double](extra(e), (a, k) => java.util.Arrays.copyOf(a, k))).toMap)
+      extraIdx.indices.map(e => header(extraIdx(e)) -> trim[Double](extra(e), (a, k) => java.util.Arrays.copyOf(a, k))).toMap, comments)
   }
 }
 
@@ -205,23 +219,29 @@ object CsvText {
     }
   }
 
-  /** `# key: value` lines after the first, taken from `it` (which is left at the first other line); returns
-    * the map and the index (0-based line number) of that line.
+  /** A metadata key: a plain identifier (letters, digits, `_`, not starting with a digit). */
+  private val Key = """[A-Za-z_][A-Za-z0-9_]*""".r
+
+  /** The `#` lines after the first, taken from `it` (which is left at the first other line): `# key: value`
+    * lines whose key is a plain identifier are metadata; every other `#` line is a comment, kept as its text
+    * (`# exported by scope-dump rev 7 (CH1 = sin, CH2 = cos)`, `# taken at 12:30`). Returns the metadata, the
+    * comments and the index (0-based line number) of the line after them.
     */
-  def metadata(name: String, it: scala.collection.BufferedIterator[String]): (Map[String, String], Int) = {
-    var i = 1; val m = scala.collection.mutable.LinkedHashMap.empty[String, String]
+  def header(name: String, it: scala.collection.BufferedIterator[String]): (Map[String, String], Seq[String], Int) = {
+    var i = 1; val m = scala.collection.mutable.LinkedHashMap.empty[String, String]; val comments = Seq.newBuilder[String]
     while (it.hasNext && (it.head.startsWith("#") || it.head.trim.isEmpty)) {
       val line = it.next()
       val body = line.stripPrefix("#").trim
       if (body.nonEmpty) {
         val at = body.indexOf(':')
-        if (at <= 0) throw new RecordingError(s"$name:${i + 1}: metadata line must be '# key: value', got '${Shown.text(line)}'")
-        val key = body.substring(0, at).trim
-        if (m.contains(key)) throw new RecordingError(s"$name:${i + 1}: metadata key '$key' appears twice")
-        m(key) = body.substring(at + 1).trim
+        val key = if (at > 0) body.substring(0, at).trim else ""
+        if (Key.matches(key)) {
+          if (m.contains(key)) throw new RecordingError(s"$name:${i + 1}: metadata key '$key' appears twice")
+          m(key) = body.substring(at + 1).trim
+        } else comments += body
       }
       i += 1
     }
-    (m.toMap, i)
+    (m.toMap, comments.result(), i)
   }
 }
