@@ -59,7 +59,16 @@ lazy val host = layer("host", "src/host").dependsOn(boards).settings(
 
 /** The command line: parses options, calls the libraries, turns their errors into one line and an exit code. */
 lazy val cli = layer("cli", "src/cli").dependsOn(host).settings(
-  libraryDependencies += "com.lihaoyi" %% "mainargs" % "0.7.6"
+  libraryDependencies += "com.lihaoyi" %% "mainargs" % "0.7.6",
+  // `moire --version`: the version and the git commit of the build ("unknown" outside a git checkout)
+  Compile / resourceGenerators += Def.task {
+    val commit = scala.util.Try(scala.sys.process.Process(Seq("git", "rev-parse", "--short=12", "HEAD"), (ThisBuild / baseDirectory).value)
+      .!!(scala.sys.process.ProcessLogger(_ => ())).trim).toOption.filter(_.nonEmpty).getOrElse("unknown")
+    val f = (Compile / resourceManaged).value / "moire-version.properties"
+    val text = s"version=${version.value}\ncommit=$commit\n"
+    if (!f.exists || IO.read(f) != text) IO.write(f, text)
+    Seq(f)
+  }.taskValue
 )
 
 lazy val root = (project in file("."))
@@ -81,6 +90,8 @@ lazy val root = (project in file("."))
       "org.scalacheck" %% "scalacheck" % "1.18.1" % Test
     ),
     Compile / mainClass := Some("moire.cli.Main"),
+    // `./sbt run` alone writes the flagship DE2-115 project, as it always has; the staged `moire` alone prints the overview
+    Compile / run / mainClass := Some("moire.cli.SbtRun"),
     run / fork := true,
     run / outputStrategy := Some(StdoutOutput),
     run / javaOptions ++= Seq("-Xss8m", "-Xmx4g", "-Dfile.encoding=UTF-8"),
@@ -108,6 +119,8 @@ lazy val root = (project in file("."))
     // a CDS archive (lib/moire.jsa, written by `stage`); `--help` stops at the first JIT tier.
     bashScriptExtraDefines ++= Seq(
       IO.read(baseDirectory.value / "src" / "cli" / "utf8-locale.sh"),
+      // -h is moire's, not the launcher script's (whose usage text would exit 1)
+      """_moire_args=(); for a in "$@"; do [[ "$a" == "-h" ]] && a=--help; _moire_args+=("$a"); done; set -- "${_moire_args[@]}"""",
       "no_version_check=1",
       """[[ -f "$lib_dir/moire.jsa" ]] && addJava "-XX:SharedArchiveFile=$lib_dir/moire.jsa"""",
       """case " $* " in *" --help "*) addJava "-XX:TieredStopAtLevel=1"; addJava "-XX:+UseSerialGC";; esac"""),

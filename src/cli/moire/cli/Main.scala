@@ -261,33 +261,47 @@ object Main {
 
   def oneLine(msg: String): String = SubdivCmd.oneLine(msg)
 
+  /** The subcommands' names, as typed. */
+  def commandNames: Seq[String] = ParserForMethods(this).mains.value.map(_.name(mainargs.Util.kebabCaseNameMapper))
+
+  /** `help CMD` and `CMD --help`: the command's options with their defaults. */
+  private def commandHelp(mains: Seq[mainargs.MainData[Any, Main.type]], cmd: String): Int =
+    mains.find(_.name(mainargs.Util.kebabCaseNameMapper) == cmd) match {
+      case None => System.err.println(s"moire: '$cmd' is not a command (moire --help lists them)"); 2
+      case Some(_) if cmd == "replay" => moire.replay.ReplayCmd.main(Seq("--help")); 0
+      case Some(m) =>
+        val effects = if (cmd != "simulate") "" else "effects (--effect NAME:key=value,...,channel=sin|cos|both):\n" +
+          moire.explain.EffectSpec.catalogue.map { case (n, keys, doc) => s"  $n (${keys.mkString(", ")}): $doc" }.mkString("\n")
+        println(Help.command(m, this, effects)); 0
+    }
+
   def main(args: Array[String]): Unit = { val code = run(args); if (code != 0) sys.exit(code) }
 
   /** The command line without leaving the JVM: the exit code (2 for a user's mistake, told in one line). */
   def run(args: Array[String]): Int = {
-    // No arguments: the flagship, the DE2-115 project of the subdivider (as `board de2-115`).
-    val argv0 = if (args.isEmpty) Array("board", "de2-115") else args
-    // `board de2-115 --out DIR`: the board name as a positional word.
-    val argv = if (argv0.length > 1 && argv0(0) == "board" && !argv0(1).startsWith("-")) Array("board", "--name") ++ argv0.tail else argv0
     val parser = ParserForMethods(this)
-    val help = argv.contains("--help") || argv.contains("-h")
-    if (help && (argv.head == "--help" || argv.head == "-h")) {
-      println("moire: signal processing generators for optical gratings\nsubcommands:")
-      println(parser.helpText(sorted = false))
-      return 0
+    val mains = parser.mains.value
+    // the launcher's own words: the overview (also with no argument: it writes nothing), help, the version
+    args.toSeq match {
+      case Seq() | Seq("-h") | Seq("--help") | Seq("help") => println(Help.overview(mains)); return 0
+      case Seq("--version") | Seq("-V") => println(s"moire ${Version.text}"); return 0
+      case Seq("help", cmd) => return commandHelp(mains, cmd)
+      case Seq("help", _*) => System.err.println("moire: help takes one command name, e.g. moire help explain"); return 2
+      case a if a.head.startsWith("-") =>
+        System.err.println(s"moire: '${a.head}' is not a command; moire COMMAND [options] (moire --help lists the commands)"); return 2
+      case a if a.tail.exists(x => x == "--help" || x == "-h") => return commandHelp(mains, a.head)
+      case _ => ()
     }
+    // `board de2-115 --out DIR`: the board name as a positional word.
+    val argv = if (args.length > 1 && args(0) == "board" && !args(1).startsWith("-")) Array("board", "--name") ++ args.tail else args
     try {
       // runRaw hands back what a command threw (runEither would print it with its class name)
-      if (!help) parser.runRaw(argv.toSeq, allowPositional = false) match {
+      parser.runRaw(argv.toSeq, allowPositional = false) match {
         case mainargs.Result.Success(_) => return 0
         case mainargs.Result.Failure.Exception(t) => throw t
         case _ => () // a parse error: worded by runEither below, which fails the same way before running anything
       }
       parser.runEither(argv.toSeq, allowPositional = false) match {
-        case Left(msg) if help =>
-          val at = msg.indexOf("Expected Signature:")
-          println(if (at >= 0) "Usage: " + msg.substring(at + "Expected Signature:".length).trim else msg)
-          0
         case Left(msg) =>
           System.err.println(s"moire: ${oneLine(msg)}")
           2
