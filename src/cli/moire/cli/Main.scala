@@ -195,8 +195,8 @@ object Main {
                    @arg(doc = "explain this moire-recording v1 file instead of a simulated one (--samples is then ignored)") recording: Option[String] = None): Unit =
     moire.explain.ExplainCmd.bench(samples, out, recording, println(_))
 
-  @main(doc = "Write a board project: de2-115 (SystemVerilog, .qsf, .sdc, .qpf, flash.sh for Quartus) or ulx3s (Verilog, .lpf, build.sh for the open ECP5 flow).")
-  def board(@arg(doc = "board name: de2-115 | ulx3s (also accepted as the first word after board)") name: String,
+  @main(doc = "Write a board project: the board's top in Verilog inside its vendor project, and the command to run next.")
+  def board(@arg(doc = "board name, one of the boards below (also accepted as the first word after board)") name: String,
             @arg(doc = "output folder (default generated/NAME)") out: Option[String] = None,
             @arg(doc = "subdiv | corrected | compensated (subdiv + turntable harmonic compensation, coefficients by board-reg)") design: String = "subdiv",
             @arg(doc = "system clock in Hz: de2-115 50000000 only; ulx3s what its PLL makes exactly from 25 MHz, e.g. 65000000 (default 50000000)") clockHz: Int = 50000000,
@@ -270,9 +270,14 @@ object Main {
       case None => System.err.println(s"moire: '$cmd' is not a command (moire --help lists them)"); 2
       case Some(_) if cmd == "replay" => moire.replay.ReplayCmd.main(Seq("--help")); 0
       case Some(m) =>
-        val effects = if (cmd != "simulate") "" else "effects (--effect NAME:key=value,...,channel=sin|cos|both):\n" +
-          moire.explain.EffectSpec.catalogue.map { case (n, keys, doc) => s"  $n (${keys.mkString(", ")}): $doc" }.mkString("\n")
-        println(Help.command(m, this, effects)); 0
+        val extra = cmd match {
+          case "simulate" => "effects (--effect NAME:key=value,...,channel=sin|cos|both):\n" +
+            moire.explain.EffectSpec.catalogue.map { case (n, keys, doc) => s"  $n (${keys.mkString(", ")}): $doc" }.mkString("\n")
+          case "board" => "boards:\n" + moire.board.Boards.all.map(b =>
+            s"  ${b.name} (${b.title}): ${b.target.toString.toLowerCase} files, designs ${b.registryDesigns.map(_.name).mkString(", ")}").mkString("\n")
+          case _ => ""
+        }
+        println(Help.command(m, this, extra)); 0
     }
 
   def main(args: Array[String]): Unit = { val code = run(args); if (code != 0) sys.exit(code) }
