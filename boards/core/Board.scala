@@ -47,5 +47,5 @@ object Boards {
 
   /** The board called `name`, or a one-line message naming the boards there are. */
   def find(name: String): Either[String, Board] =
-    all.find(_.name == name).toRight(s"board '$name' is unknown; allowed: ${names.mkString(", ")}")
+    moire.choice.Choice(all, name, s"board '$name' is unknown")(_.name)
 }

@@ -257,7 +257,7 @@ object Main {
 
   @main(doc = "Run a recording's ADC codes through the generated RTL (Verilator); see replay --help.")
   def replay(@arg(doc = "FILE [--design subdiv|corrected] [--out OUT.csv] [--quiet] [emit-subdiv options]") args: mainargs.Leftover[String]): Unit =
-    moire.replay.ReplayCmd.main(args.value)
+    if (!moire.replay.ReplayCmd.run(ReplayArgs.parse(args.value))) sys.exit(1)
 
   def oneLine(msg: String): String = SubdivCmd.oneLine(msg)
 
@@ -268,7 +268,7 @@ object Main {
   private def commandHelp(mains: Seq[mainargs.MainData[Any, Main.type]], cmd: String): Int =
     mains.find(_.name(mainargs.Util.kebabCaseNameMapper) == cmd) match {
       case None => System.err.println(s"moire: '$cmd' is not a command (moire --help lists them)"); 2
-      case Some(_) if cmd == "replay" => moire.replay.ReplayCmd.main(Seq("--help")); 0
+      case Some(_) if cmd == "replay" => println(moire.replay.ReplayCmd.Usage); 0
       case Some(m) =>
         val extra = cmd match {
           case "simulate" => "effects (--effect NAME:key=value,...,channel=sin|cos|both):\n" +

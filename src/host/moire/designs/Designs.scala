@@ -85,5 +85,5 @@ object Designs {
 
   /** The design called `name`, or a one-line message naming the allowed ones. */
   def find(name: String, cordicParams: CordicParams = CordicParams()): Either[String, Design] =
-    all(cordicParams).find(_.name == name).toRight(s"--design: '$name' is not a design; allowed: ${names.mkString(", ")}")
+    moire.choice.Choice(all(cordicParams), name, s"--design: '$name' is not a design")(_.name)
 }
