@@ -5,7 +5,8 @@ import moire.cordic._
 import moire.emit.Target
 import moire.options.{SubdivCmd, SubdivConfig}
 import moire.options.DecimalReader._
-import moire.paper.{AccuracyRow, Reproduce}
+import moire.paper.AccuracyRow
+import moire.reproduce.Reproduce
 
 /** Options shared by every subcommand that builds a CORDIC. */
 @main

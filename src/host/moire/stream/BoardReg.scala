@@ -1,6 +1,6 @@
 package moire.stream
 
-import moire.harmonic.CoefficientFile
+import moire.calibration.CoefficientFile
 import moire.protocol.{Registers, StreamV1}
 
 /** `moire board-reg`: read and write the board's registers by name, load harmonic coefficients. */

@@ -1,4 +1,6 @@
-package moire.harmonic
+package moire.calibration
+
+import moire.harmonic._
 
 /** The `calibrate` subcommand: calibration CSV -> harmonic fit -> coefficient file, register listing, plot. */
 object Calibrate {

@@ -1,4 +1,6 @@
-package moire.harmonic
+package moire.calibration
+
+import moire.harmonic._
 
 /** A user mistake in a calibration file or option: one line, naming file and line where there is one. */
 final class CalibrationError(msg: String) extends Exception(msg)
