@@ -64,12 +64,24 @@ object SafeWrite {
         // folders first, each swapped with its old self (moved aside, then removed), then the files one by one
         val (folders, plain) = entries.partition(os.isDir)
         val aside = folders.map(f => dir / s".${f.last}.old-$tag")
-        for ((f, old) <- folders.zip(aside)) {
-          if (os.exists(dir / f.last)) Files.move((dir / f.last).toNIO, old.toNIO, StandardCopyOption.ATOMIC_MOVE)
-          Files.move(f.toNIO, (dir / f.last).toNIO, StandardCopyOption.ATOMIC_MOVE)
-        }
-        for (f <- plain) Files.move(f.toNIO, (dir / f.last).toNIO, StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.ATOMIC_MOVE)
-        aside.foreach(os.remove.all(_))
+        aside.foreach(Temporaries.add)
+        var replaced = 0
+        try {
+          for ((f, old) <- folders.zip(aside)) {
+            if (os.exists(dir / f.last)) Files.move((dir / f.last).toNIO, old.toNIO, StandardCopyOption.ATOMIC_MOVE)
+            Files.move(f.toNIO, (dir / f.last).toNIO, StandardCopyOption.ATOMIC_MOVE)
+          }
+          for (f <- plain) { Files.move(f.toNIO, (dir / f.last).toNIO, StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.ATOMIC_MOVE); replaced += 1 }
+        } catch {
+          case e: IOException =>
+            // the old folders back in place; a file already replaced cannot be (say which)
+            if (replaced == 0) for ((f, old) <- folders.zip(aside) if os.exists(old)) {
+              if (os.exists(dir / f.last)) os.remove.all(dir / f.last)
+              Files.move(old.toNIO, (dir / f.last).toNIO, StandardCopyOption.ATOMIC_MOVE)
+            }
+            val kept = if (replaced == 0) "nothing was changed" else s"${plain.take(replaced).map(_.last).mkString(", ")} and the folders already replaced"
+            throw new FileError(s"$dir: cannot write the project (${reason(e)}); $kept")
+        } finally aside.foreach { old => try os.remove.all(old) catch { case _: IOException => () }; Temporaries.done(old) }
       }
       files.map(f => dir / f.relativeTo(stage))
     } catch {
