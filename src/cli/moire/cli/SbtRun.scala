@@ -4,5 +4,5 @@ package moire.cli
   * `board de2-115`), as it always has; with arguments it is the launcher. The staged `moire` alone prints the overview.
   */
 object SbtRun {
-  def main(args: Array[String]): Unit = Main.main(if (args.isEmpty) Array("board", "de2-115") else args)
+  def main(args: Array[String]): Unit = Main.main(if (args.isEmpty) Array("board", moire.board.de2115.De2115.name) else args)
 }
