@@ -61,7 +61,17 @@ lazy val host = layer("host", "src/host").dependsOn(boards).settings(
 
 /** The command line: parses options, calls the libraries, turns their errors into one line and an exit code. */
 lazy val cli = layer("cli", "src/cli").dependsOn(host).settings(
-  libraryDependencies += "com.lihaoyi" %% "mainargs" % "0.7.6"
+  libraryDependencies += "com.lihaoyi" %% "mainargs" % "0.7.6",
+  Compile / mainClass := Some("moire.cli.Main"),
+  // `moire --version`: the version and the git commit of the build ("unknown" outside a git checkout)
+  Compile / resourceGenerators += Def.task {
+    val commit = scala.util.Try(scala.sys.process.Process(Seq("git", "rev-parse", "--short=12", "HEAD"), (ThisBuild / baseDirectory).value)
+      .!!(scala.sys.process.ProcessLogger(_ => ())).trim).toOption.filter(_.nonEmpty).getOrElse("unknown")
+    val f = (Compile / resourceManaged).value / "moire-version.properties"
+    val text = s"version=${version.value}\ncommit=$commit\n"
+    if (!f.exists || IO.read(f) != text) IO.write(f, text)
+    Seq(f)
+  }.taskValue
 )
 
 lazy val root = (project in file("."))
@@ -86,9 +96,11 @@ lazy val root = (project in file("."))
       "org.seleniumhq.selenium" % "selenium-support" % "4.52.0" % Test
     ),
     Compile / mainClass := Some("moire.cli.Main"),
+    // `./sbt run` alone writes the flagship DE2-115 project, as it always has; the staged `moire` alone prints the overview
+    Compile / run / mainClass := Some("moire.cli.SbtRun"),
     run / fork := true,
     run / outputStrategy := Some(StdoutOutput),
-    run / javaOptions ++= Seq("-Xss8m", "-Xmx4g"),
+    run / javaOptions ++= Seq("-Xss8m", "-Xmx4g", "-Dfile.encoding=UTF-8"),
     Test / fork := true,
     Test / javaOptions ++= Seq("-Xss8m", "-Xmx6g"),
     Test / testOptions += Tests.Argument(TestFrameworks.ScalaTest, "-oD"),
@@ -112,6 +124,9 @@ lazy val root = (project in file("."))
     // A quick start: no second JVM for the launcher's Java version check; the classes a start loads from
     // a CDS archive (lib/moire.jsa, written by `stage`); `--help` stops at the first JIT tier.
     bashScriptExtraDefines ++= Seq(
+      IO.read(baseDirectory.value / "src" / "cli" / "utf8-locale.sh"),
+      // -h is moire's, not the launcher script's (whose usage text would exit 1)
+      """_moire_args=(); for a in "$@"; do [[ "$a" == "-h" ]] && a=--help; _moire_args+=("$a"); done; set -- "${_moire_args[@]}"""",
       "no_version_check=1",
       """[[ -f "$lib_dir/moire.jsa" ]] && addJava "-XX:SharedArchiveFile=$lib_dir/moire.jsa"""",
       """case " $* " in *" --help "*) addJava "-XX:TieredStopAtLevel=1"; addJava "-XX:+UseSerialGC";; esac"""),

@@ -3,6 +3,8 @@
 # from Maven Central once (with mvn) and runs it with Maven Central as the only repository.
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
+# a UTF-8 character set for sbt's JVM too, which reads the command line first (non-ASCII file names under LANG=C)
+. "$here/src/cli/utf8-locale.sh"
 version=1.11.7
 
 # Use a real sbt on PATH, but not this script itself.

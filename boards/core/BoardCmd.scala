@@ -7,19 +7,20 @@ import moire.signal.AdcFormat
   */
 object BoardCmd {
   final class BadOption(msg: String) extends Exception(msg)
-  val boards: Seq[String] = Seq("de2-115", "ulx3s")
 
   private def bad(m: String) = throw new BadOption(m)
   /** `body`, its IllegalArgumentException (a failed `require`) as a [[BadOption]] naming the option. */
   def checked[T](body: => T): T =
     try body catch { case e: IllegalArgumentException => bad("--" + e.getMessage.stripPrefix("requirement failed: ")) }
 
-  def params(design: String, adcClockHz: Int, adcFormat: String, decimation: Int, baud: Int, frameRecords: Int,
+  def params(board: String, design: String, adcClockHz: Int, adcFormat: String, decimation: Int, baud: Int, frameRecords: Int,
              fifoDepth: Int, glitchFilter: Int, counts: Int, clockSource: String, clockHz: Int = 50000000,
              lines: Int = 16384, harmonics: Int = 4): BoardParams = {
     val d = BoardDesign.parse(design).fold(bad, identity)
     val f = AdcFormat.parse(adcFormat).fold(e => bad(s"--adc-format: $e"), identity)
     val c = ClockSource.parse(clockSource).fold(bad, identity)
+    if (clockHz < 1000000 || clockHz > 200000000) bad(s"--clock-hz must be in 1000000..200000000, got $clockHz")
+    Boards.find(board).toOption.flatMap(_.clockProblem(clockHz, c)).foreach(bad)   // the board's clock first: --adc-clock-hz derives from it
     checked {
       val base = BoardParams()
       val sub = base.subdiv.copy(counts = counts)
@@ -32,6 +33,5 @@ object BoardCmd {
   }
 
   /** Nothing, or a [[BadOption]] naming the boards there are. */
-  def checkBoard(board: String): Unit =
-    if (!boards.contains(board)) bad(s"board '$board' is unknown; allowed: ${boards.mkString(", ")}")
+  def checkBoard(board: String): Unit = Boards.find(board).left.foreach(bad)
 }

@@ -18,7 +18,7 @@ object BoardDesign {
   case object Compensated extends BoardDesign("compensated")
   val all: Seq[BoardDesign] = Seq(Subdiv, Corrected, Compensated)
   def parse(s: String): Either[String, BoardDesign] =
-    all.find(_.name == s).toRight(s"--design: '$s' is not a board design; allowed: ${all.map(_.name).mkString(", ")}")
+    moire.choice.Choice(all, s, s"--design: '$s' is not a board design")(_.name)
 }
 
 /** How the AD9226 clock is made. */
@@ -32,7 +32,7 @@ object ClockSource {
   case object Logic extends ClockSource("logic")
   val all: Seq[ClockSource] = Seq(Pll, Logic)
   def parse(s: String): Either[String, ClockSource] =
-    all.find(_.name == s).toRight(s"--clock-source: '$s' is unknown; allowed: ${all.map(_.name).mkString(", ")}")
+    moire.choice.Choice(all, s, s"--clock-source: '$s' is unknown")(_.name)
 }
 
 /** Parameters of a board: the core ([[BoardCore]]) and its harness (DE2-115 or ULX3S top).

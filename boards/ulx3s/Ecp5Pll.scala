@@ -16,7 +16,7 @@ final case class Ecp5PllParams(inHz: Long, refDiv: Int, fbDiv: Int, outDiv: Int)
   /** Coarse phase of a 0-degree output: DIV - 1 (Lattice's setting; emard's ecp5pll.sv gives the same). */
   def cphase: Int = outDiv - 1
   override def toString: String =
-    s"EHXPLLL ${Mhz(inHz)} MHz / CLKI_DIV $refDiv * CLKFB_DIV $fbDiv = ${Mhz(outHz)} MHz, VCO ${Mhz(vcoHz)} MHz (CLKOP_DIV $outDiv)"
+    s"EHXPLLL ${Mhz(inHz.toDouble)} MHz / CLKI_DIV $refDiv * CLKFB_DIV $fbDiv = ${Mhz(outHz)} MHz, VCO ${Mhz(vcoHz)} MHz (CLKOP_DIV $outDiv)"
 }
 
 /** The divider search of Project Trellis' `ecppll`, in exact integer arithmetic and for exact
@@ -36,7 +36,7 @@ object Ecp5Pll {
       o <- 1 to 128 if outHz * o >= vcoMinHz && outHz * o <= vcoMaxHz
     } yield Ecp5PllParams(inHz, r, f, o)
     exact.sortBy(q => math.abs(outHz * q.outDiv - 600000000L)).headOption // stable: the first on a tie
-      .toRight(s"the ECP5 PLL cannot make exactly ${Mhz(outHz)} MHz from ${Mhz(inHz)} MHz " +
+      .toRight(s"the ECP5 PLL cannot make exactly ${Mhz(outHz.toDouble)} MHz from ${Mhz(inHz.toDouble)} MHz " +
         s"(f_in * CLKFB_DIV / CLKI_DIV with CLKFB_DIV <= 80, VCO 400..800 MHz); e.g. 50, 62.5, 65, 75 or 100 MHz")
   }
 }

@@ -1,10 +1,14 @@
 package moire.board.ulx3s
 
 import chisel3.RawModule
-import moire.board.BoardParams
+import moire.board.{Board, BoardDesign, BoardParams, ClockSource}
+import moire.emit.Target
 
 /** The ULX3S top, its .lpf and the open-flow build script (the Verilog comes from the design registry, moire.designs). */
-object Ulx3s {
+object Ulx3s extends Board {
+  val name = "ulx3s"
+  val title = "ULX3S"
+  val target: Target = Target.Verilog
   val oscillatorHz: Int = 25000000
   val projectName: String = "moire_ulx3s"
   def topName(p: BoardParams): String = s"Ulx3s_${p.tag}"
@@ -14,9 +18,26 @@ object Ulx3s {
     Ecp5Pll.solve(oscillatorHz, p.clockHz).fold(e => throw new IllegalArgumentException(s"clock-hz: $e"), identity)
 
   def top(p: BoardParams): RawModule = new Ulx3sTop(p)
+  /** Placed out of context by `timing` with its clock from the pin of the 25 MHz oscillator (the PLL is a primitive
+    * out-of-context synthesis does not know; `build.sh` places it with the PLL at its clock).
+    */
+  def placeParams(p: BoardParams): BoardParams = p.copy(clockSource = ClockSource.Logic, clockHz = oscillatorHz, adcClockHz = oscillatorHz)
+  val registryDesigns: Seq[BoardDesign] = Seq(BoardDesign.Subdiv, BoardDesign.Compensated)
 
-  /** Where [[writeProject]] expects the board's Verilog: `dir/rtl`. */
-  def rtlDir(dir: os.Path): os.Path = dir / "rtl"
+  def pins: Seq[String] = Ulx3sPins.all.map(p => s"${p.port} ${p.site} ${p.ioType} PULLMODE=${p.pull}")
+
+  override def notes(p: BoardParams): Seq[String] = if (p.clockSource == ClockSource.Pll) Seq(pll(p).toString) else Nil
+  def nextStep(p: BoardParams, dir: os.Path): String =
+    s"next: ${buildScript(dir)}  (yosys and nextpnr, speed ${Ulx3sProject.speed}, exit 1 on a timing miss), " +
+      s"then openFPGALoader -b ulx3s -m ${bitstream(dir)}"
+
+  /** Why this board cannot run its system clock at `clockHz` (None: it can). */
+  def clockProblem(clockHz: Int, source: ClockSource): Option[String] = source match {
+    case ClockSource.Logic => Option.when(clockHz != oscillatorHz)(
+      s"--clock-hz: with --clock-source logic the ULX3S runs on its $oscillatorHz Hz oscillator, got $clockHz")
+    case _ => Ecp5Pll.solve(oscillatorHz, clockHz).left.toOption.map(e => s"--clock-hz: $e")
+  }
+
   /** The build script [[writeProject]] writes into `dir`. */
   def buildScript(dir: os.Path): os.Path = dir / "build.sh"
   /** The bitstream the build script makes in `dir`. */

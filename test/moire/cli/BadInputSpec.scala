@@ -72,7 +72,6 @@ class BadInputSpec extends AnyFlatSpec with Matchers {
   bad("NaN in an extra column", "is not a finite number")("explain", rec("nan.csv", head + "sin,cos,ref_deg\n1,2,NaN\n"))
   bad("1e400 in an extra column", "is not a finite number")("explain", rec("inf.csv", head + "sin,cos,ref_deg\n1,2,1e400\n"))
   bad("Infinity in an extra column", "is not a finite number")("explain", rec("inf2.csv", head + "sin,cos,ref_deg\n1,2,-Infinity\n"))
-  bad("a metadata line without a colon", "metadata line must be '# key: value'")("explain", rec("meta.csv", head + "# nonsense\nsin,cos\n1,2\n"))
   bad("a header but no rows", "no data rows")("explain", rec("norows.csv", head + "sin,cos\n"))
   bad("a 1-row recording", "1 samples; explain needs at least 64")("explain", rec("one.csv", head + "sin,cos\n1,2\n"))
   bad("a 10-row recording", "10 samples; explain needs at least 64")("explain", rec("ten.csv", head + "sin,cos\n" + rows(10)))
@@ -138,7 +137,7 @@ class BadInputSpec extends AnyFlatSpec with Matchers {
   bad("no --seconds and no --burst", "give --seconds S")(recd(): _*)
   bad("--seconds NaN", "--seconds must be in (0, 86400], got NaN")(recd("--seconds", "NaN"): _*)
   bad("--baud 5", "--baud must be in 300..12000000, got 5")(recd("--seconds", "1", "--baud", "5"): _*)
-  bad("--adc-clock-hz Infinity", "--adc-clock-hz must be a positive number, got Infinity")(recd("--seconds", "1", "--adc-clock-hz", "Infinity"): _*)
+  bad("--adc-clock-hz Infinity", "--adc-clock-hz must be a positive number up to 200000000 (the fastest board clock), got Infinity")(recd("--seconds", "1", "--adc-clock-hz", "Infinity"): _*)
   bad("--listen-only without the board's figures", "--listen-only sends no commands")(recd("--seconds", "1", "--listen-only"): _*)
   bad("--timeout-ms 0", "--timeout-ms must be in 10..60000, got 0")(recd("--seconds", "1", "--timeout-ms", "0"): _*)
   bad("--burst 0", "--burst must be in 1..")(recd("--burst", "0"): _*)
@@ -188,9 +187,11 @@ class BadInputSpec extends AnyFlatSpec with Matchers {
   behavior of "timing (fails before any tool runs)"
   bad("an unknown --design", "--design: 'nosuch' is not a design")("timing", "--design", "nosuch")
   bad("--speeds 5", "--speeds: '5' is not an ECP5 speed grade")("timing", "--design", "cordic", "--speeds", "5")
-  bad("--target-mhz NaN", "--target-mhz: NaN is outside 0..1000 MHz")("timing", "--design", "cordic", "--target-mhz", "NaN")
-  bad("--target-mhz Infinity", "--target-mhz: Infinity is outside 0..1000 MHz")("timing", "--design", "cordic", "--target-mhz", "Infinity")
-  bad("--target-mhz -3", "--target-mhz: -3.0 is outside 0..1000 MHz")("timing", "--design", "cordic", "--target-mhz", "-3")
+  bad("--target-mhz NaN", "--target-mhz must be above 0 and below 1000 MHz, got NaN")("timing", "--design", "cordic", "--target-mhz", "NaN")
+  bad("--target-mhz Infinity", "--target-mhz must be above 0 and below 1000 MHz, got Infinity")("timing", "--design", "cordic", "--target-mhz", "Infinity")
+  bad("--target-mhz -3", "--target-mhz must be above 0 and below 1000 MHz, got -3.0")("timing", "--design", "cordic", "--target-mhz", "-3")
+  bad("--target-mhz 1000", "--target-mhz must be above 0 and below 1000 MHz, got 1000.0")("timing", "--design", "cordic", "--target-mhz", "1000")
+  bad("--target-mhz 0", "--target-mhz must be above 0 and below 1000 MHz, got 0.0")("timing", "--design", "cordic", "--target-mhz", "0")
   bad("a --json path through a file", "is a file, not a folder", Seq(aFile))("timing", "--design", "cordic", "--json", (aFile / "t.json").toString)
   bad("a --cache that is a file", "is a file, not a folder", Seq(aFile))("timing", "--design", "cordic", "--cache", aFile.toString)
 
@@ -203,6 +204,104 @@ class BadInputSpec extends AnyFlatSpec with Matchers {
 
   behavior of "explain-bench"
   bad("--samples 0", "--samples must be in 10000..")("explain-bench", "--samples", "0")
+
+  behavior of "outputs (never over an input, a link, a pipe or a device)"
+  private val model = dir / "m.json"
+  os.write.over(model, """{"effects": []}""")
+  private val jdir = dir / "j"
+  os.makeDir.all(jdir)
+  private val jModel = jdir / "good.json"
+  os.write.over(jModel, """{"effects": []}""")
+  bad("an explain report that would replace the --model", "is an input of this command", Seq(jModel))(
+    "explain", good.toString, "--quiet", "--no-rtl", "--json-dir", jdir.toString, "--model", jModel.toString)
+  bad("a simulate --out that is its --model", "is an input of this command", Seq(model))(
+    "simulate", "--model", model.toString, "--out", model.toString, "--samples", "100")
+  private val portLink = dir / "ttyLink"
+  if (!os.exists(portLink, followLinks = false)) os.symlink(portLink, os.Path("/dev/null"))
+  bad("record --port A --out A (the port's link)", "is an input of this command", Seq(portLink))(
+    "record", "--port", portLink.toString, "--out", portLink.toString, "--seconds", "1")
+  private val link = dir / "link.csv"
+  if (!os.exists(link, followLinks = false)) os.symlink(link, existing)
+  bad("an --out that is a symbolic link", "is a symbolic link", Seq(existing))("simulate", "--out", link.toString, "--samples", "100")
+  private val fifo = dir / "fifo"
+  if (!os.exists(fifo, followLinks = false)) os.proc("mkfifo", fifo.toString).call()
+  bad("an --out that is a named pipe", "is a named pipe (FIFO)")("simulate", "--out", fifo.toString, "--samples", "100")
+  private val device = dir / "dev-null"
+  private val isRoot = os.proc("id", "-u").call().out.trim() == "0"
+  if (isRoot && !os.exists(device, followLinks = false)) os.proc("mknod", device.toString, "c", "1", "3").call()
+  if (isRoot) bad("an --out that is a device node", "is a character device")("simulate", "--out", device.toString, "--samples", "100")
+  else bad("an --out that is a device node", "is a character device")("simulate", "--out", "/dev/null", "--samples", "100")
+  it should "keep the pipe, the link and the device what they were" in {
+    os.isLink(link) shouldBe true
+    os.read(existing) shouldBe "keep me\n"
+    os.proc("test", "-p", fifo.toString).call(check = false).exitCode shouldBe 0
+    if (isRoot) os.proc("test", "-c", device.toString).call(check = false).exitCode shouldBe 0
+  }
+
+  behavior of "inputs that are no file (each says what it is)"
+  private val folderIn = dir / "a-folder"
+  os.makeDir.all(folderIn)
+  bad("explain of a folder", "is a folder, not a file")("explain", folderIn.toString)
+  bad("explain of a named pipe", "is a named pipe (FIFO), not a file")("explain", fifo.toString)
+  bad("explain of /dev/null", "is a character device, not a file")("explain", "/dev/null")
+  bad("replay of a folder", "is a folder, not a file")("replay", folderIn.toString)
+  bad("calibrate of a named pipe", "is a named pipe (FIFO), not a file")("calibrate", "--input", fifo.toString, "--out", calOut.toString)
+  bad("a --model that is a folder", "is a folder, not a file")("explain", good.toString, "--model", folderIn.toString)
+  bad("--coefficients /dev/null", "is a character device, not a file")("board-reg", "--port", port, "--coefficients", "/dev/null")
+  bad("explain-bench --recording of a folder", "is a folder, not a file")("explain-bench", "--recording", folderIn.toString)
+  bad("record --port of a folder", "is a folder, not a serial port")("record", "--port", folderIn.toString, "--seconds", "1", "--out", (dir / "r.csv").toString)
+  bad("record --port ''", "--port is empty")("record", "--port", "", "--seconds", "1", "--out", (dir / "r.csv").toString)
+
+  behavior of "numbers (decimal only, the same everywhere)"
+  bad("a sample rate of 1000000d (Java syntax)", "sample_rate_hz '1000000d' is not a sample rate")(
+    "explain", rec("fsd.csv", "# moire-recording v1\n# sample_rate_hz: 1000000d\n# adc_bits: 12\nsin,cos\n" + rows(100)))
+  bad("a sample rate of 0x1p20 (hexadecimal)", "sample_rate_hz '0x1p20' is not a sample rate")(
+    "explain", rec("fshex.csv", "# moire-recording v1\n# sample_rate_hz: 0x1p20\n# adc_bits: 12\nsin,cos\n" + rows(100)))
+  bad("an extra column of 2.5f", "ref_deg '2.5f' is not a finite number")("explain", rec("colf.csv", head + "sin,cos,ref_deg\n1,2,2.5f\n"))
+  bad("--sample-rate-hz 1000000d", "'1000000d' is not a valid number", Seq(existing))(sim("--sample-rate-hz", "1000000d"): _*)
+  bad("--noise 0x1p-10", "'0x1p-10' is not a valid number", Seq(existing))(sim("--noise", "0x1p-10"): _*)
+  bad("a --motion speed of 2e4d", "--motion 'constant:2e4d'", Seq(existing))(sim("--motion", "constant:2e4d"): _*)
+  bad("an effect parameter 0x10", "order '0x10' is not a finite number", Seq(existing))(sim("--effect", "harmonic:order=0x10"): _*)
+  bad("explain --subdiv \"--counts 3\"", "--subdiv: --counts")("explain", good.toString, "--quiet", "--subdiv", "--counts 3")
+  bad("explain --subdiv \"--bogus 1\"", "--subdiv: ")("explain", good.toString, "--quiet", "--subdiv", "--bogus 1")
+  bad("calibrate --max-order -5", "--max-order must be at least 1 (or left out for the default), got -5")(calib("--max-order", "-5"): _*)
+  bad("record --adc-clock-hz 1e12", "--adc-clock-hz must be a positive number up to 200000000")(recd("--seconds", "1", "--adc-clock-hz", "1e12"): _*)
+  bad("cost --sweep --sweep-widths ''", "--sweep-widths: give at least one integer")("cost", "--sweep", "--sweep-widths", "")
+  bad("cost --sweep --sweep-iterations ' , '", "--sweep-iterations: give at least one integer")("cost", "--sweep", "--sweep-iterations", " , ")
+
+  behavior of "messages that say what is wrong"
+  bad("a '#' line among the data rows", "a '#' line among the data rows")("explain", rec("hashrow.csv", head + "sin,cos\n" + rows(100) + "# paused here\n" + rows(100)))
+  bad("# samples: 2000000000 in a 2000-row file", "metadata samples says '2000000000' but the file has 2000 data rows")(
+    "explain", rec("bigsamples.csv", head + "# samples: 2000000000\nsin,cos\n" + rows(2000)))
+  bad("board de2-115 --clock-hz 65000000 (the board's clock, not the ADC's)", "--clock-hz: the DE2-115 runs at 50000000 Hz")(
+    "board", "de2-115", "--clock-hz", "65000000", "--out", boardOut.toString)
+  bad("board ulx3s --clock-hz 66666666 (no exact PLL setting)", "--clock-hz: the ECP5 PLL cannot make exactly")(
+    "board", "ulx3s", "--clock-hz", "66666666", "--out", boardOut.toString)
+  bad("error_arcsec 1e400", "error_arcsec is 1e400: infinite")("calibrate", "--input", rec("calinf.csv", "# moire-calibration v1\nangle_deg,error_arcsec\n0,1\n10,1e400\n"))
+  bad("one ccw row among cw rows", "direction ccw has 1 point (first on line 39)")(
+    "calibrate", "--input", rec("calccw.csv", "# moire-calibration v1\nangle_deg,error_arcsec,direction\n" + (0 until 360 by 10).map { a =>
+      val t = math.toRadians(a); f"$a,${2 * math.sin(t)}%.4f,cw" }.mkString("\n") + "\n10,0.3,ccw\n"), "--out", calOut.toString)
+  private def binary(name: String, bytes: Array[Byte]): String = { os.write.over(dir / name, bytes); (dir / name).toString }
+  bad("a UTF-16 recording (shown as bytes)", "UTF-16 text (save it as UTF-8); it starts with '\\xff\\xfe#\\x00")(
+    "explain", binary("utf16.csv", Array(0xff, 0xfe).map(_.toByte) ++ (head + "sin,cos\n" + rows(10)).getBytes("UTF-16LE")))
+  bad("a gzip file (shown as bytes)", "gzip-compressed data (unpack it first); it starts with '\\x1f\\x8b")("explain", binary("rec.csv.gz", {
+    val b = new java.io.ByteArrayOutputStream; val z = new java.util.zip.GZIPOutputStream(b); z.write((head + "sin,cos\n" + rows(100)).getBytes); z.close(); b.toByteArray }))
+  bad("a file of NUL bytes (shown as bytes)", "binary data (it holds NUL bytes), not text; it starts with '\\x00\\x00")("explain", binary("nul.csv", new Array[Byte](4096)))
+  bad("control bytes on the first line", "got 'hello\\x01\\x07world'")("explain", rec("ctl.csv", "hello\u0001\u0007world\n"))
+  bad("a calibration of NUL bytes", "binary data (it holds NUL bytes)")("calibrate", "--input", binary("calnul.csv", new Array[Byte](100)), "--out", calOut.toString)
+  bad("one endless line (refused after 1 Mi characters, not read whole)", "a line longer than 1048576 characters")(
+    "explain", binary("zeros.csv", Array.fill[Byte](3 << 20)('0'.toByte)))
+  it should "refuse a 1 GB file of zeros quickly (the reader bounds a line's length)" in {
+    val f = dir / "gigabyte.csv"
+    val ch = java.nio.channels.FileChannel.open(f.toNIO, java.nio.file.StandardOpenOption.CREATE, java.nio.file.StandardOpenOption.WRITE)
+    try { val z = java.nio.ByteBuffer.wrap(Array.fill[Byte](1 << 20)('0'.toByte)); for (_ <- 0 until 1024) { z.rewind(); ch.write(z) } } finally ch.close()
+    val t0 = System.nanoTime()
+    val (code, err) = runCli("explain", f.toString, "--quiet")
+    val seconds = (System.nanoTime() - t0) / 1e9
+    info(f"refused in $seconds%.2f s")
+    os.remove(f)
+    withClue(err) { code shouldBe 2; err should include("a line longer than 1048576 characters") }
+  }
 
   "BadInputSpec" should s"cover at least 60 kinds of bad input (has $kinds)" in {
     info(s"$kinds kinds of bad input")

@@ -14,9 +14,9 @@ object CliProcess {
   def runWith(jvmOpts: Seq[String])(args: String*): (Int, String, String) = runIn(jvmOpts, os.pwd)(args: _*)
 
   /** As `runWith`, in the working folder `cwd`. */
-  def runIn(jvmOpts: Seq[String], cwd: os.Path)(args: String*): (Int, String, String) = {
+  def runIn(jvmOpts: Seq[String], cwd: os.Path, mainClass: String = "moire.cli.Main")(args: String*): (Int, String, String) = {
     val out = new StringBuilder; val err = new StringBuilder
-    val code = Process(Seq(javaBin, "-Xmx2g") ++ jvmOpts ++ Seq("-cp", cp, "moire.cli.Main") ++ args, cwd.toIO)
+    val code = Process(Seq(javaBin, "-Xmx2g") ++ jvmOpts ++ Seq("-cp", cp, mainClass) ++ args, cwd.toIO)
       .!(ProcessLogger(l => out.append(l).append('\n'), l => err.append(l).append('\n')))
     (code, out.toString, err.toString)
   }

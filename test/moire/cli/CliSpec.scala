@@ -51,10 +51,21 @@ class CliSpec extends AnyFlatSpec {
     assert(out.contains("latency 14 clocks"))
   }
 
-  "No arguments" should "write the DE2-115 project of the subdivider into generated/ and name the next command" in {
+  "No arguments" should "print the overview and write nothing" in {
     val cwd = os.temp.dir(prefix = "moire-noargs-")
     try {
       val (code, out, err) = moire.cli.CliProcess.runIn(Nil, cwd)()
+      assert(code == 0 && err.isEmpty, err)
+      assert(out.contains("Usage: moire COMMAND") && out.contains("record and explain:") && out.contains("moire help COMMAND"), out)
+      assert(out.linesIterator.size < 50, s"the overview is short: ${out.linesIterator.size} lines")
+      assert(os.list(cwd).isEmpty, s"wrote ${os.list(cwd)}")
+    } finally os.remove.all(cwd)
+  }
+
+  "./sbt run with no argument (SbtRun)" should "write the DE2-115 project of the subdivider into generated/ and name the next command" in {
+    val cwd = os.temp.dir(prefix = "moire-noargs-")
+    try {
+      val (code, out, err) = moire.cli.CliProcess.runIn(Nil, cwd, "moire.cli.SbtRun")()
       assert(code == 0, err)
       val dir = cwd / "generated" / "de2-115"
       val top = moire.board.de2115.De2115.topName(moire.board.BoardParams())

@@ -34,8 +34,8 @@ class DesignLintSpec extends AnyFlatSpec {
       Designs.adapt(AdaptParams(inputBits = 14, outputBits = 18, mulFrac = 2, harmonicEntries = 0)),
     "harmonic m2 every 4 out-frac 0" -> Designs.harmonic(HarmonicParams(harmonics = 2, pipelineEvery = 4, outFrac = 0)),
     "counter 16 bits, 3 sync stages" -> Designs.counter(QuadratureParams(16, 3)),
-    "board-de2-115 logic clock" -> Designs.de2115("board-de2-115-logic", logicClock),
-    "board-ulx3s logic clock" -> Designs.ulx3s("board-ulx3s-logic", logicClock.copy(clockHz = 25000000)))
+    "board-de2-115 logic clock" -> Designs.boardTop(moire.board.de2115.De2115, "board-de2-115-logic", logicClock),
+    "board-ulx3s logic clock" -> Designs.boardTop(moire.board.ulx3s.Ulx3s, "board-ulx3s-logic", logicClock.copy(clockHz = 25000000)))
 
   for ((label, d) <- designs) {
     s"$label" should "lint clean in verilator -Wall and read in yosys, as SystemVerilog and as Verilog" in {

@@ -97,6 +97,14 @@ class WriteErrorSpec extends AnyFlatSpec with Matchers {
       keepsEverything(out, _.ext == ext)("calibrate", "--input", cal.toString, "--out", out.toString, "--harmonics", "2")
   }
 
+  "board" should "keep the old project whole when the disk fills on the tenth file" in {
+    val out = dir / "board"
+    runCli("board", "de2-115", "--out", out.toString)._1 shouldBe 0
+    os.write(out / "notes.txt", "the user's own file\n")
+    var n = 0
+    keepsEverything(out, _ => { n += 1; n == 10 })("board", "de2-115", "--out", out.toString, "--design", "corrected")
+  }
+
   "a read-only folder" should "be refused before any work, the old file kept" in {
     val uid = os.proc("id", "-u").call().out.trim()
     assume(uid != "0", "running as root: chmod does not stop root's writes, so a read-only folder cannot be tested here")

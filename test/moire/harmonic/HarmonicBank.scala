@@ -1,5 +1,7 @@
 package moire.harmonic
 
+import moire.calibration._
+
 import chisel3._
 import chisel3.util._
 

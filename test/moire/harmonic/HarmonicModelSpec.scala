@@ -1,5 +1,7 @@
 package moire.harmonic
 
+import moire.calibration._
+
 import org.scalatest.flatspec.AnyFlatSpec
 
 /** The bit-accurate model against double precision, within the a priori bound, over a parameter sweep. */

@@ -77,7 +77,42 @@ class RecordingSpec extends AnyFlatSpec with Matchers {
     bad(good.updated(6, "2048,4095,NaN"), "f.csv:7: ref_deg 'NaN' is not a finite number")
     bad(good.take(6), "no data rows")
     bad(good.updated(5, "a,b"), "header must name columns sin and cos")
-    bad(good.updated(4, "# operator bench A"), "f.csv:5: metadata line must be")
+    bad(good.updated(5, "sin,cos,ref_deg,x"), "f.csv:7: 3 cells, the header has 4: '2048,4095,0.5'")
+  }
+
+  it should "show the offending line whole in its message, up to 200 characters" in {
+    val long = "2048,4095," + "9" * 150 + "x"
+    val e = intercept[MoireError](Recording.parse("f.csv", good.updated(6, long)))
+    e.getMessage should endWith(s"'$long'")
+    val longer = "2048,4095,1.5" + ",0" * 200
+    val e2 = intercept[MoireError](Recording.parse("f.csv", good.updated(6, longer)))
+    e2.getMessage should include(s"'${longer.take(200)}...'")
+  }
+
+  "The header" should "keep comment lines without a key (also with a colon in their text) and write them back" in {
+    val lines = good.take(5) ++ IndexedSeq("# exported by scope-dump rev 7 (CH1 = sin, CH2 = cos)", "# taken at 12:30 by J. Doe",
+      "# operator bench A", "#", "# Note: probe 5 cm from the grating") ++ good.drop(5)
+    val r = Recording.parse("f.csv", lines)
+    r.comments shouldBe Seq("exported by scope-dump rev 7 (CH1 = sin, CH2 = cos)", "taken at 12:30 by J. Doe", "operator bench A")
+    r.meta("Note") shouldBe "probe 5 cm from the grating"   // a plain identifier before the colon: a key
+    r.meta.keySet should not contain "taken at 12"
+    val p = os.temp(suffix = ".csv"); Recording.write(p, r)
+    Recording.read(p).comments shouldBe r.comments
+  }
+
+  "A twos-complement file" should "hold signed codes or pin patterns, told apart by the values" in {
+    def rec(rows: String*) = Recording.parse("t.csv", IndexedSeq("# moire-recording v1", "# sample_rate_hz: 1000000", "# adc_bits: 12",
+      "# adc_format: twos-complement", "sin,cos") ++ rows)
+    val signed = rec("-2048,2047", "-1,0", "100,-100")
+    val pins = rec("2048,2047", "4095,0", "100,3996")
+    signed.sin.toSeq shouldBe pins.sin.toSeq; signed.cos.toSeq shouldBe pins.cos.toSeq
+    signed.values(signed.sin).toSeq shouldBe Seq(-1.0, -1.0 / 2048, 100.0 / 2048)
+    // all in 0..2047: both readings are the same numbers
+    rec("0,2047", "5,6").values(rec("0,2047", "5,6").cos).toSeq shouldBe Seq(2047.0 / 2048, 6.0 / 2048)
+    val mixed = intercept[MoireError](rec("-5,0", "3000,0")).getMessage
+    mixed should include("t.csv:7: signed codes (a negative one on line 6) and pin patterns above 2047 (line 7)")
+    intercept[MoireError](rec("-2049,0")).getMessage should include("outside the 12-bit ADC range -2048..4095")
+    intercept[MoireError](Recording.parse("o.csv", good.updated(7, "-5,100,1.5"))).getMessage should include("outside the 12-bit ADC range 0..4095")
   }
 
   "Calibration" should "reject duplicate angles and bad directions, naming the line" in {

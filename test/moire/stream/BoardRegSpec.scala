@@ -2,7 +2,8 @@ package moire.stream
 
 import moire.MoireError
 import moire.cli.CliProcess
-import moire.harmonic.{CoefficientFile, Harmonic, HarmonicFitResult, HarmonicParams}
+import moire.harmonic.HarmonicParams
+import moire.calibration.{CoefficientFile, Harmonic, HarmonicFitResult}
 import moire.protocol.Registers
 import org.scalatest.flatspec.AnyFlatSpec
 import org.scalatest.matchers.should.Matchers

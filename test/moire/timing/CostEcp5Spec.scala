@@ -17,7 +17,7 @@ class CostEcp5Spec extends AnyFlatSpec with Matchers {
   for (name <- Seq("subdiv", "corrected")) {
     s"cost's multiplier count of $name" should "match the ECP5 flow's" in {
       assume(Yosys.available, "yosys not installed")
-      val tools = Ecp5Tools.find.getOrElse(cancel(s"ECP5 tools not installed: ${Ecp5Tools.installHint}"))
+      val tools = Ecp5Tools.status.fold(cancel(_), identity)
       val d = Designs.find(name, p).toOption.get
       val work = os.temp.dir(prefix = "moire-cost-ecp5-")
       val cost = try {

@@ -9,7 +9,7 @@ import org.scalatest.matchers.should.Matchers
   * Cancelled where the tools are not installed (boards/tools/ecp5-tools.sh; CI installs them).
   */
 class TimingLiveSpec extends AnyFlatSpec with Matchers {
-  private def tools: Ecp5Tools = Ecp5Tools.find.getOrElse(cancel(s"ECP5 tools not installed: ${Ecp5Tools.installHint}"))
+  private def tools: Ecp5Tools = Ecp5Tools.status.fold(cancel(_), identity)
   private lazy val cache = os.temp.dir(prefix = "moire-timing-cache-")
   private lazy val opts = TimingOptions(speeds = Seq(6), cache = cache)
   private val rotate = moire.cordic.CordicParams(mode = moire.cordic.CordicMode.Rotate, iterations = 16, width = 18)

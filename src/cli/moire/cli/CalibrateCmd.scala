@@ -1,6 +1,7 @@
 package moire.cli
 
-import moire.harmonic.{Calibrate, CalibrationError, HarmonicEmit, HarmonicParams}
+import moire.harmonic.HarmonicParams
+import moire.calibration.{Calibrate, CalibrationError, HarmonicEmit}
 
 /** `calibrate` and `emit-harmonic`: options to params, user mistakes to one-line [[UsageError]]s. */
 object CalibrateCmd {

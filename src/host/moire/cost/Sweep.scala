@@ -21,10 +21,9 @@ object Variant {
   )
   def parse(s: String): Either[String, Seq[Variant]] = {
     val names = s.split(",").map(_.trim).filter(_.nonEmpty).toSeq
-    names.find(n => !all.exists(_.name == n)) match {
-      case Some(bad) => Left(s"--variants: '$bad' is not a variant; allowed: ${all.map(_.name).mkString(", ")}")
-      case None => Right(all.filter(v => names.contains(v.name)))
-    }
+    // each name checked by the one choice reader; the sweep keeps the catalogue's order
+    names.foldLeft[Either[String, Unit]](Right(()))((ok, n) => ok.flatMap(_ => moire.choice.Choice(all, n, s"--variants: '$n' is not a variant")(_.name).map(_ => ())))
+      .map(_ => all.filter(v => names.contains(v.name)))
   }
 }
 

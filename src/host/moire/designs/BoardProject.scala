@@ -1,52 +1,33 @@
 package moire.designs
 
-import moire.board.{BoardCmd, BoardParams, ClockSource, Mhz}
-import moire.board.de2115.De2115
-import moire.board.ulx3s.{Ulx3s, Ulx3sProject}
-import moire.emit.Target
+import moire.board.{Board, BoardCmd, BoardParams, Boards, Mhz}
 
-/** `board NAME`: the board's top from the registry, emitted into `rtl/`, inside its vendor project:
-  * Quartus for the DE2-115 (SystemVerilog), the open ECP5 flow for the ULX3S (Verilog for yosys).
+/** `board NAME`: the board's top from the registry, emitted into `rtl/`, inside its vendor project (Quartus for
+  * the DE2-115, the open ECP5 flow for the ULX3S: each board's [[Board]] says which).
   */
 object BoardProject {
-  /** The registry entry of `board`'s top with these parameters. */
-  def design(board: String, p: BoardParams): Design = board match {
-    case "de2-115" => Designs.de2115("board-de2-115", p)
-    case _ => Designs.ulx3s("board-ulx3s", p)
-  }
+  /** The board called `name`, or a [[BoardCmd.BadOption]] naming the boards there are. */
+  def board(name: String): Board = Boards.find(name).fold(e => throw new BoardCmd.BadOption(e), identity)
 
-  /** Writes the project into `dir` (its rtl/ folder is replaced); returns every file, the Verilog first. */
-  def write(board: String, p: BoardParams, dir: os.Path): Seq[os.Path] = {
-    BoardCmd.checkBoard(board)
+  /** The registry entry of `board`'s top with these parameters. */
+  def design(board: Board, p: BoardParams): Design = Designs.boardTop(board, s"board-${board.name}", p)
+
+  /** Writes the project into `dir` (its rtl/ folder and project files replaced as one); returns every file, the Verilog first. */
+  def write(name: String, p: BoardParams, dir: os.Path): Seq[os.Path] = {
+    val b = board(name)
     moire.files.SafeWrite.checkFolder(dir)   // before the elaboration, not after it
-    val d = design(board, p)
-    board match {
-      case "de2-115" =>
-        val rtl = De2115.rtlDir(dir)
-        os.remove.all(rtl)
-        De2115.writeProject(p, dir, BoardCmd.checked(d.write(rtl, Target.SystemVerilog)))
-      case _ =>
-        val rtl = Ulx3s.rtlDir(dir)
-        os.remove.all(rtl)
-        Ulx3s.writeProject(p, dir, BoardCmd.checked(d.write(rtl, Target.Verilog)))
-    }
+    val d = design(b, p)
+    // written whole into a fresh folder, then swapped in: a failed or interrupted run leaves the old project whole
+    moire.files.SafeWrite.project(dir)(stage => b.writeProject(p, stage, BoardCmd.checked(d.write(b.rtlDir(stage), b.target))))
   }
 
   /** Writes the project and returns the lines to print: the files, the top, and the next command. */
-  def run(board: String, p: BoardParams, dir: os.Path): Seq[String] = {
-    val files = write(board, p, dir)
+  def run(name: String, p: BoardParams, dir: os.Path): Seq[String] = {
+    val b = board(name)
+    val files = write(name, p, dir)
     val summary = s"${p.design.name}, system clock ${Mhz(p.clockHz)} MHz, ADC ${p.adcClockHz} Hz ${p.formatName}, " +
       f"decimation ${p.decimation} (${p.recordRate}%.1f records/s; the UART carries ${p.uartRecordRate}%.0f at ${p.baud} baud)"
     val latency = s"datapath latency ${p.datapathLatency} clocks after the capture register"
-    files.map(f => s"wrote $f") ++ (board match {
-      case "de2-115" => Seq(s"top ${De2115.topName(p)}: $summary", latency,
-        s"next: ${dir / "flash.sh"}  (compiles with quartus_sh and programs the board over USB-Blaster JTAG; " +
-          s"or open ${dir / s"${De2115.projectName}.qpf"} in Quartus)")
-      case _ =>
-        val pll = if (p.clockSource == ClockSource.Pll) Seq(Ulx3s.pll(p).toString) else Nil
-        Seq(s"top ${Ulx3s.topName(p)}: $summary") ++ pll ++ Seq(latency,
-          s"next: ${Ulx3s.buildScript(dir)}  (yosys and nextpnr, speed ${Ulx3sProject.speed}, exit 1 on a timing miss), " +
-            s"then openFPGALoader -b ulx3s -m ${Ulx3s.bitstream(dir)}")
-    })
+    files.map(f => s"wrote $f") ++ Seq(s"top ${b.topName(p)}: $summary") ++ b.notes(p) ++ Seq(latency, b.nextStep(p, dir))
   }
 }

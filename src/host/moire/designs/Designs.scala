@@ -2,9 +2,7 @@ package moire.designs
 
 import chisel3.RawModule
 import moire.adapt.{AdaptParams, AdaptiveCorrector}
-import moire.board.{BoardDesign, BoardParams, ClockSource, Mhz}
-import moire.board.de2115.De2115
-import moire.board.ulx3s.Ulx3s
+import moire.board.{Board, BoardDesign, BoardParams, Boards, Mhz}
 import moire.chain.{CorrectedSubdivParams, CorrectedSubdivider}
 import moire.cordic.{Cordic, CordicParams}
 import moire.emit.{Emit, Latency, Target}
@@ -64,18 +62,10 @@ object Designs {
   def counter(p: QuadratureParams): Design =
     new Design("counter", s"A/B quadrature counter, ${p.countBits}-bit count", () => new QuadratureCounter(p))
 
-  private def boardWhat(board: String, p: BoardParams): String =
-    s"$board board top: ${p.design.name} datapath, ${p.clockSource.name} clock, ADC at ${Mhz(p.adcClockHz)} MHz ${p.formatName}, " +
-      "UART stream and registers, encoder I/O"
-  /** The DE2-115 top (what Quartus compiles); placed on the ECP5 with its clock from the pin. */
-  def de2115(name: String, p: BoardParams): Design = new Design(name, boardWhat("DE2-115", p), () => De2115.top(p),
-    () => De2115.top(p.copy(clockSource = ClockSource.Logic)))
-  /** The ULX3S top (what the open ECP5 flow builds); `timing` places it out of context with its clock from the pin
-    * of the 25 MHz oscillator (the PLL is a primitive out-of-context synthesis does not know; `build.sh` places it
-    * with the PLL at its clock).
-    */
-  def ulx3s(name: String, p: BoardParams): Design = new Design(name, boardWhat("ULX3S", p), () => Ulx3s.top(p),
-    () => Ulx3s.top(p.copy(clockSource = ClockSource.Logic, clockHz = Ulx3s.oscillatorHz, adcClockHz = Ulx3s.oscillatorHz)))
+  /** A board's top (what its vendor flow compiles); `timing` places it with [[Board.placeParams]]. */
+  def boardTop(b: Board, name: String, p: BoardParams): Design = new Design(name,
+    s"${b.title} board top: ${p.design.name} datapath, ${p.clockSource.name} clock, ADC at ${Mhz(p.adcClockHz)} MHz ${p.formatName}, " +
+      "UART stream and registers, encoder I/O", () => b.top(p), () => b.top(b.placeParams(p)))
 
   /** Every design at its defaults; `cordic` at the given CORDIC options. */
   def all(cordicParams: CordicParams = CordicParams()): Seq[Design] = Seq(
@@ -86,16 +76,14 @@ object Designs {
     corrected(CorrectedSubdivParams()),
     harmonic(HarmonicParams()),
     turntable(HarmonicParams()),
-    counter(QuadratureParams(HarmonicParams().countBits)),
-    de2115("board-de2-115", BoardParams()),
-    de2115("board-de2-115-corrected", BoardParams(design = BoardDesign.Corrected)),
-    de2115("board-de2-115-compensated", BoardParams(design = BoardDesign.Compensated)),
-    ulx3s("board-ulx3s", BoardParams()),
-    ulx3s("board-ulx3s-compensated", BoardParams(design = BoardDesign.Compensated)))
+    counter(QuadratureParams(HarmonicParams().countBits))) ++
+    // every board's tops: board-NAME (the subdivider), board-NAME-DESIGN
+    (for (b <- Boards.all; d <- b.registryDesigns)
+      yield boardTop(b, s"board-${b.name}" + (if (d == BoardDesign.Subdiv) "" else s"-${d.name}"), BoardParams(design = d)))
 
   lazy val names: Seq[String] = all().map(_.name)
 
   /** The design called `name`, or a one-line message naming the allowed ones. */
   def find(name: String, cordicParams: CordicParams = CordicParams()): Either[String, Design] =
-    all(cordicParams).find(_.name == name).toRight(s"--design: '$name' is not a design; allowed: ${names.mkString(", ")}")
+    moire.choice.Choice(all(cordicParams), name, s"--design: '$name' is not a design")(_.name)
 }

@@ -49,7 +49,7 @@ object EffectSpec {
       kv.split("=", 2) match {
         case Array("channel", v) => channel = checkChannel(v.trim)
         case Array(k, v) if allowed._2.contains(k.trim) =>
-          ps += k.trim -> v.trim.toDoubleOption.filter(x => !x.isNaN && !x.isInfinite)
+          ps += k.trim -> moire.numbers.Decimal.double(v).filter(x => !x.isNaN && !x.isInfinite)
             .getOrElse(throw new ExplainError(s"--effect $name: $k '$v' is not a finite number"))
         case _ => throw new ExplainError(s"--effect $name: '$kv' is not key=value with a key in ${(allowed._2 :+ "channel").mkString(", ")}")
       }

@@ -32,7 +32,7 @@ object ExplainCmd {
 
   private def readText(f: String): String = {
     val p = os.Path(f, os.pwd)
-    if (!os.isFile(p)) throw new ExplainError(s"$f: no such file")
+    moire.files.PathKind.notAFile(p).foreach(m => throw new ExplainError(m))
     os.read(p)
   }
 
@@ -40,6 +40,7 @@ object ExplainCmd {
     val m = model(o)
     val (rec, _) = try m.generate() catch { case e: IllegalArgumentException => throw new ExplainError(e.getMessage.stripPrefix("requirement failed: ")) }
     val path = os.Path(o.out, os.pwd)
+    moire.files.SafeWrite.refuseInputs(path, o.model.toSeq.map(os.Path(_, os.pwd)))
     Recording.write(path, rec)
     s"wrote $path (${rec.length} samples, ${m.effects.map(_.effect).mkString(", ") match { case "" => "default model only"; case s => s }})"
   }
@@ -53,9 +54,14 @@ object ExplainCmd {
     html.foreach(f => moire.files.SafeWrite.checkFile(os.Path(f, os.pwd)))
     val givenEffects = modelFile.map(f => PhysicsModel.effectsFromJson(PhysicsModel.jsonObject(readText(f), f), f, Nil)).getOrElse(Nil)
     val paths = files.map(f => os.Path(f, os.pwd))
+    // the subdivider's options are checked now, not found wrong file by file in a note
+    rtl.filter(_.nonEmpty).foreach(opts => try moire.replay.ReplayDesign("subdiv", moire.replay.ReplayCmd.config(opts, Map.empty))
+      catch { case e: moire.MoireError => throw new ExplainError(s"--subdiv: ${e.getMessage}") })
     // Outputs are checked before the long work: writable folders, no two reports under one name.
     val outDirs = (jsonDir ++ plotDir ++ htmlDir).map(d => os.Path(d, os.pwd))
     outDirs.foreach(moire.files.SafeWrite.checkFolder)
+    for (d <- jsonDir; p <- paths)
+      moire.files.SafeWrite.refuseInputs(os.Path(d, os.pwd) / s"${p.last.stripSuffix(".csv")}.json", paths ++ modelFile.map(os.Path(_, os.pwd)))
     if (outDirs.nonEmpty) paths.groupBy(_.last.stripSuffix(".csv")).collectFirst { case (stem, ps) if ps.distinct.size > 1 =>
       throw new ExplainError(s"${ps.distinct.mkString(" and ")} share the name $stem: their reports would overwrite each other; rename one")
     }
@@ -170,11 +176,12 @@ object ExplainCmd {
       |    --no-rtl             do not compare board outputs with the RTL""".stripMargin
 
   def kindOf(p: os.Path): String = {
-    if (!os.isFile(p)) throw new ExplainError(s"$p: no such file")
+    moire.files.PathKind.notAFile(p).foreach(m => throw new ExplainError(m))
+    CsvText.checkText(p)
     val first = CsvText.firstLine(p).trim
     if (first == Calibration.Magic) "calibration"
     else if (first == Recording.Magic) "signals"
-    else throw new ExplainError(s"$p:1: first line must be '${Recording.Magic}' or '${Calibration.Magic}', got '${first.take(40)}'")
+    else throw new ExplainError(s"$p:1: first line must be '${Recording.Magic}' or '${Calibration.Magic}', got '${moire.files.Shown.text(first)}'")
   }
 
   /** explain-bench's range of --samples: a few fringe periods of the ramp up to the 2^31-sample limit of an array. */
@@ -192,7 +199,7 @@ object ExplainCmd {
     val dir = out.map(os.Path(_, os.pwd)).getOrElse(os.temp.dir(prefix = "moire-bench"))
     val file = recording.map { f =>
       val p = os.Path(f, os.pwd)
-      if (!os.isFile(p)) throw new ExplainError(s"$f: no such file")
+      moire.files.PathKind.notAFile(p).foreach(m => throw new ExplainError(m))
       p
     }.getOrElse(benchRecording(samples, dir / "bench.csv"))
     val mb = os.size(file) / 1048576.0

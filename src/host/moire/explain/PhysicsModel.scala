@@ -169,7 +169,7 @@ object PhysicsModel {
   /** `constant:HZ`, `ramp:HZ0:HZ1:SECONDS` or `oscillate:PERIODS:RATE_HZ`. */
   def parseMotion(s: String): Motion = {
     val parts = s.split(":").map(_.trim)
-    def num(i: Int) = parts.lift(i).flatMap(_.toDoubleOption).filter(v => !v.isNaN && !v.isInfinite).getOrElse(
+    def num(i: Int) = parts.lift(i).flatMap(moire.numbers.Decimal.double).filter(v => !v.isNaN && !v.isInfinite).getOrElse(
       throw new ExplainError(s"--motion '$s': expected constant:HZ, ramp:HZ0:HZ1:SECONDS or oscillate:PERIODS:RATE_HZ"))
     parts.head match {
       case "constant" => Motion.Constant(num(1))

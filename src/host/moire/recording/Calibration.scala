@@ -1,6 +1,6 @@
 package moire.recording
 
-import moire.harmonic.{CalibrationData, CalibrationError}
+import moire.calibration.{CalibrationData, CalibrationError}
 
 /** Turntable calibration data (`moire-calibration v1`): error against angle, optionally per direction.
   * direction: +1 = cw, -1 = ccw, 0 = not given.
@@ -15,7 +15,7 @@ object Calibration {
   val Magic = "# moire-calibration v1"
 
   def read(path: os.Path): Calibration = {
-    if (!os.isFile(path)) throw new RecordingError(s"$path: no such file")
+    moire.files.PathKind.notAFile(path).foreach(m => throw new RecordingError(m))
     parse(path.toString, CsvText.lines(path))
   }
 
@@ -32,7 +32,7 @@ object Calibration {
     moire.files.SafeWrite.text(path, sb.toString)
   }
 
-  /** Parsed and checked by the one reader, [[moire.harmonic.CalibrationData]]; errors become one-line usage errors. */
+  /** Parsed and checked by the one reader, [[moire.calibration.CalibrationData]]; errors become one-line usage errors. */
   def parse(name: String, lines: IndexedSeq[String]): Calibration = {
     val d = try CalibrationData.parse(name, lines.mkString("\n"))
     catch { case e: CalibrationError => throw new RecordingError(e.getMessage) }

@@ -1,9 +1,11 @@
 package moire.recording
 
+import moire.files.Shown
 import moire.signal.{Adc, AdcFormat}
 
 /** A `moire-recording v1` file: ADC pin codes of the sin and cos channels, with metadata.
-  * Codes are as the ADC drives its pins (`adc_format`); `extra` holds any further numeric columns.
+  * Codes are as the ADC drives its pins (`adc_format`); `extra` holds any further numeric columns; `comments`
+  * the header's comment lines (text without a `key: value` form), kept as they were.
   */
 final case class Recording(
   sampleRateHz: Double,
@@ -11,11 +13,12 @@ final case class Recording(
   sin: Array[Int],
   cos: Array[Int],
   meta: Map[String, String] = Map.empty,
-  extra: Map[String, Array[Double]] = Map.empty
+  extra: Map[String, Array[Double]] = Map.empty,
+  comments: Seq[String] = Nil
 ) {
   require(sin.length == cos.length, "sin and cos must have the same length")
   def length: Int = sin.length
-  def linesPerRev: Option[Double] = meta.get("lines_per_rev").flatMap(_.toDoubleOption)
+  def linesPerRev: Option[Double] = meta.get("lines_per_rev").flatMap(moire.numbers.Decimal.double)
   /** Signed values in full-scale units (-1 .. 1) of one channel. */
   def values(codes: Array[Int]): Array[Double] = {
     val out = new Array[Double](codes.length); val lsb = adc.lsb
@@ -45,6 +48,7 @@ object Recording {
       try {
         w.write(Magic); w.write('\n')
         for ((k, v) <- fixed ++ rest) { w.write("# "); w.write(k); w.write(": "); w.write(v); w.write('\n') }
+        for (c <- r.comments) { w.write("# "); w.write(c); w.write('\n') }
         w.write((Seq("sin", "cos") ++ cols).mkString(",")); w.write('\n')
         val sb = new java.lang.StringBuilder(128)
         var i = 0
@@ -65,7 +69,8 @@ object Recording {
     * one RecordingError naming the file, the line and what is wrong.
     */
   def read(path: os.Path): Recording = {
-    if (!os.isFile(path)) throw new RecordingError(s"$path: no such file")
+    moire.files.PathKind.notAFile(path).foreach(m => throw new RecordingError(m))
+    CsvText.checkText(path)
     val in = try CsvText.reader(path) catch {
       case e: java.io.IOException => throw new RecordingError(s"$path: cannot read (${moire.files.SafeWrite.reason(e)})")
     }
@@ -90,10 +95,10 @@ object Recording {
     if (!it.hasNext) bad(1, "empty file, expected '# moire-recording v1'")
     val first = it.next()
     if (first.stripPrefix("\uFEFF").trim != Magic)
-      bad(1, if (first.trim.isEmpty && !it.exists(_.trim.nonEmpty)) "empty file, expected '# moire-recording v1'" else s"first line must be '$Magic', got '${first.take(40)}'")
-    val (meta, headerAt) = CsvText.metadata(name, it)
+      bad(1, if (first.trim.isEmpty && !it.exists(_.trim.nonEmpty)) "empty file, expected '# moire-recording v1'" else s"first line must be '$Magic', got '${Shown.text(first)}'")
+    val (meta, comments, headerAt) = CsvText.header(name, it)
     def need(k: String) = meta.getOrElse(k, bad(headerAt + 1, s"metadata '$k' is missing (a line '# $k: value' before the header)"))
-    val fs = need("sample_rate_hz").toDoubleOption.filter(v => v > 0 && v <= MaxSampleRateHz)
+    val fs = moire.numbers.Decimal.double(need("sample_rate_hz")).filter(v => v > 0 && v <= MaxSampleRateHz)
       .getOrElse(bad(headerAt + 1, s"metadata sample_rate_hz '${meta("sample_rate_hz")}' is not a sample rate (a number above 0 and at most 1e11 Hz)"))
     val bits = need("adc_bits").toIntOption.filter(b => b >= 4 && b <= 24)
       .getOrElse(bad(headerAt + 1, s"metadata adc_bits '${meta("adc_bits")}' is not an integer in 4..24"))
@@ -103,19 +108,25 @@ object Recording {
     val header = headerLine.split(",", -1).map(_.trim)
     header.groupBy(identity).collectFirst { case (c, cs) if cs.length > 1 => bad(headerAt + 1, s"column '$c' appears ${cs.length} times in the header") }
     val si = header.indexOf("sin"); val ci = header.indexOf("cos")
-    if (si < 0 || ci < 0) bad(headerAt + 1, s"header must name columns sin and cos, got '${headerLine.take(60)}'")
+    if (si < 0 || ci < 0) bad(headerAt + 1, s"header must name columns sin and cos, got '${Shown.text(headerLine)}'")
     val extraIdx = header.indices.filter(i => i != si && i != ci).toArray
     // the `samples` line sizes the arrays when it is there (checked against the rows at the end)
     val expect = meta.get("samples").flatMap(_.toIntOption).filter(n => n > 0 && n < Int.MaxValue - 8)
-    var cap = expect.getOrElse(1 << 16)
+    // a hint only, never trusted for more than 4 Mi rows: a wrong `samples` line must not size the arrays
+    var cap = expect.fold(1 << 16)(math.min(_, 1 << 22))
     var sin = new Array[Int](cap); var cos = new Array[Int](cap)
     val extra = Array.fill(extraIdx.length)(new Array[Double](cap))
     val maxCode = (1 << bits) - 1
+    // two's complement: signed codes (-2^(b-1)..2^(b-1)-1) or pin patterns (0..2^b-1), told apart by the values
+    val signedOk = adc.format == AdcFormat.TwosComplement
+    val minCode = if (signedOk) -(1 << (bits - 1)) else 0
+    var firstNegative = 0L; var firstHigh = 0L
     var n = 0
     var ln = headerAt + 1L
     while (it.hasNext) {
       val line = it.next(); ln += 1
       if (line.trim.nonEmpty) {
+        def badRow(msg: String) = bad(ln, s"$msg: '${Shown.text(line)}'")
         if (n == cap) {
           if (cap >= Int.MaxValue / 2) bad(ln, s"more than $cap rows: too long for one recording")
           cap *= 2
@@ -123,19 +134,26 @@ object Recording {
           var e = 0
           while (e < extra.length) { extra(e) = java.util.Arrays.copyOf(extra(e), cap); e += 1 }
         }
+        if (line.startsWith("#")) badRow("a '#' line among the data rows (comments and metadata go before the header row)")
         val cells = line.split(",", -1)
-        if (cells.length != header.length) bad(ln, s"${cells.length} cells, the header has ${header.length}")
+        if (cells.length != header.length) badRow(s"${cells.length} cells, the header has ${header.length}")
         def code(c: Int, col: String): Int = {
-          val v = cells(c).trim.toIntOption.getOrElse(bad(ln, s"$col '${cells(c).trim}' is not an integer ADC code"))
-          if (v < 0 || v > maxCode) bad(ln, s"$col code $v is outside the $bits-bit ADC range 0..$maxCode")
-          v
+          val v = cells(c).trim.toIntOption.getOrElse(badRow(s"$col '${Shown.text(cells(c).trim)}' is not an integer ADC code"))
+          if (v < minCode || v > maxCode)
+            badRow(s"$col code $v is outside the $bits-bit ADC range ${if (signedOk) s"$minCode..$maxCode (signed codes or pin patterns)" else s"0..$maxCode"}")
+          if (v < 0) { if (firstNegative == 0) firstNegative = ln }
+          else if (v > (maxCode >> 1) && firstHigh == 0) firstHigh = ln
+          if (firstNegative != 0 && firstHigh != 0)
+            bad(ln, s"signed codes (a negative one on line $firstNegative) and pin patterns above ${maxCode >> 1} (line $firstHigh) in one file: " +
+              "a two's-complement file holds one or the other")
+          v & maxCode
         }
         sin(n) = code(si, "sin"); cos(n) = code(ci, "cos")
         var e = 0
         while (e < extraIdx.length) {
           val c = extraIdx(e)
-          extra(e)(n) = cells(c).trim.toDoubleOption.filter(v => !v.isNaN && !v.isInfinite)
-            .getOrElse(bad(ln, s"${header(c)} '${cells(c).trim}' is not a finite number"))
+          extra(e)(n) = moire.numbers.Decimal.double(cells(c)).filter(v => !v.isNaN && !v.isInfinite)
+            .getOrElse(badRow(s"${Shown.text(header(c))} '${Shown.text(cells(c).trim)}' is not a finite number"))
           e += 1
         }
         n += 1
@@ -148,15 +166,25 @@ object Recording {
     }
     def trim[A](a: Array[A], copy: (Array[A], Int) => Array[A]): Array[A] = if (a.length == n) a else copy(a, n)
     Recording(fs, adc, trim[Int](sin, (a, k) => java.util.Arrays.copyOf(a, k)), trim[Int](cos, (a, k) => java.util.Arrays.copyOf(a, k)), meta,
-      extraIdx.indices.map(e => header(extraIdx(e)) -> trim[Double](extra(e), (a, k) => java.util.Arrays.copyOf(a, k))).toMap)
+      extraIdx.indices.map(e => header(extraIdx(e)) -> trim[Double](extra(e), (a, k) => java.util.Arrays.copyOf(a, k))).toMap, comments)
   }
 }
 
 /** Shared text helpers of the two CSV formats. */
 object CsvText {
+  /** The longest line a text file of moire may hold (a recording's row is a few dozen characters). */
+  val MaxLineChars: Int = 1 << 20
+
+  /** All lines of a (small) text file, read through the bounded reader. */
   def lines(path: os.Path): IndexedSeq[String] = {
-    val text = try os.read(path) catch { case e: java.io.IOException => throw new RecordingError(s"$path: cannot read (${moire.files.SafeWrite.reason(e)})") }
-    text.stripPrefix("\uFEFF").split("\r?\n", -1).toIndexedSeq match { case s if s.nonEmpty && s.last.isEmpty => s.init; case s => s }
+    checkText(path)
+    val in = try reader(path) catch { case e: java.io.IOException => throw new RecordingError(s"$path: cannot read (${moire.files.SafeWrite.reason(e)})") }
+    try lineIterator(path, in).toIndexedSeq finally in.close()
+  }
+
+  /** Refuses, from its first bytes, a file that is no text: gzip, UTF-16, a zip archive, NUL bytes. */
+  def checkText(path: os.Path): Unit = Shown.binaryKind(path).foreach { k =>
+    throw new RecordingError(s"$path: is $k; it starts with '${Shown.head(path, 16)}'")
   }
 
   /** A UTF-8 reader of a file; bytes that are not UTF-8 (a Latin-1 comment) become U+FFFD, never an error. */
@@ -175,9 +203,11 @@ object CsvText {
     * error is a RecordingError naming the file.
     */
   def lineIterator(path: os.Path, in: java.io.BufferedReader): Iterator[String] = new Iterator[String] {
+    private val bounded = new BoundedLines(in, MaxLineChars, line => throw new RecordingError(
+      s"$path:$line: a line longer than $MaxLineChars characters: not a moire text file (it starts with '${Shown.head(path, 16)}')"))
     private var first = true
     private var nextLine: String = read()
-    private def read(): String = try in.readLine() catch {
+    private def read(): String = try bounded.readLine() catch {
       case e: java.io.IOException => throw new RecordingError(s"$path: cannot read (${moire.files.SafeWrite.reason(e)})")
     }
     def hasNext: Boolean = nextLine != null
@@ -189,23 +219,29 @@ object CsvText {
     }
   }
 
-  /** `# key: value` lines after the first, taken from `it` (which is left at the first other line); returns
-    * the map and the index (0-based line number) of that line.
+  /** A metadata key: a plain identifier (letters, digits, `_`, not starting with a digit). */
+  private val Key = """[A-Za-z_][A-Za-z0-9_]*""".r
+
+  /** The `#` lines after the first, taken from `it` (which is left at the first other line): `# key: value`
+    * lines whose key is a plain identifier are metadata; every other `#` line is a comment, kept as its text
+    * (`# exported by scope-dump rev 7 (CH1 = sin, CH2 = cos)`, `# taken at 12:30`). Returns the metadata, the
+    * comments and the index (0-based line number) of the line after them.
     */
-  def metadata(name: String, it: scala.collection.BufferedIterator[String]): (Map[String, String], Int) = {
-    var i = 1; val m = scala.collection.mutable.LinkedHashMap.empty[String, String]
+  def header(name: String, it: scala.collection.BufferedIterator[String]): (Map[String, String], Seq[String], Int) = {
+    var i = 1; val m = scala.collection.mutable.LinkedHashMap.empty[String, String]; val comments = Seq.newBuilder[String]
     while (it.hasNext && (it.head.startsWith("#") || it.head.trim.isEmpty)) {
       val line = it.next()
       val body = line.stripPrefix("#").trim
       if (body.nonEmpty) {
         val at = body.indexOf(':')
-        if (at <= 0) throw new RecordingError(s"$name:${i + 1}: metadata line must be '# key: value', got '${line.take(60)}'")
-        val key = body.substring(0, at).trim
-        if (m.contains(key)) throw new RecordingError(s"$name:${i + 1}: metadata key '$key' appears twice")
-        m(key) = body.substring(at + 1).trim
+        val key = if (at > 0) body.substring(0, at).trim else ""
+        if (Key.matches(key)) {
+          if (m.contains(key)) throw new RecordingError(s"$name:${i + 1}: metadata key '$key' appears twice")
+          m(key) = body.substring(at + 1).trim
+        } else comments += body
       }
       i += 1
     }
-    (m.toMap, i)
+    (m.toMap, comments.result(), i)
   }
 }

@@ -23,10 +23,10 @@ object Reference {
     * error (Left, naming the key, the value and what is allowed).
     */
   def of(rec: Recording): Either[String, Option[Reference]] = {
-    val bad = ScaleKeys.flatMap(k => rec.meta.get(k).filter(v => !v.trim.toDoubleOption.exists(x => x > 0 && !x.isInfinite))
+    val bad = ScaleKeys.flatMap(k => rec.meta.get(k).filter(v => !moire.numbers.Decimal.double(v).exists(x => x > 0 && !x.isInfinite))
       .map(v => s"metadata $k '$v' is not a number above 0"))
     if (bad.nonEmpty) return Left(bad.head)
-    def key(k: String): Option[Double] = rec.meta.get(k).flatMap(_.trim.toDoubleOption)
+    def key(k: String): Option[Double] = rec.meta.get(k).flatMap(moire.numbers.Decimal.double)
     val (lpr, ppt) = (key("lines_per_rev"), key("periods_per_turn"))
     if (lpr.isDefined && ppt.isDefined && math.abs(lpr.get - ppt.get) > 1e-9 * lpr.get)
       return Left(s"metadata lines_per_rev ${lpr.get} and periods_per_turn ${ppt.get} disagree (both name the fringe periods per turn)")

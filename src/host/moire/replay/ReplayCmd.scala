@@ -1,6 +1,7 @@
 package moire.replay
 
 import mainargs.ParserForClass
+import moire.options.DecimalReader._
 import moire.options.SubdivConfig
 import moire.recording.Recording
 
@@ -30,7 +31,7 @@ object ReplayCmd {
 
   /** The pins of a recording, or one line saying why it cannot be replayed exactly. */
   def pins(file: String, rec: Recording): PinStream = {
-    val dec = rec.meta.get("decimation").map(v => v.toDoubleOption.getOrElse(throw new ReplayError(s"$file: metadata decimation '$v' is not a number")))
+    val dec = rec.meta.get("decimation").map(v => moire.numbers.Decimal.double(v).getOrElse(throw new ReplayError(s"$file: metadata decimation '$v' is not a number")))
     dec.filter(_ != 1.0).foreach { d =>
       throw new ReplayError(s"$file: the recording is decimated (decimation ${fmt(d)}): the RTL needs every ADC sample, so it cannot be replayed exactly")
     }
@@ -80,27 +81,13 @@ object ReplayCmd {
     (out, check)
   }
 
-  def main(args: Seq[String]): Unit = {
-    if (args.contains("--help") || args.contains("-h")) { println(Usage); return }
-    var design = "subdiv"; var out: Option[String] = None; var file: Option[String] = None; var quiet = false
-    var head = 100000; var windows = 20
-    def count(o: String, v: String, min: Int) = v.toIntOption.filter(_ >= min).getOrElse(throw new ReplayError(s"$o: '$v' is not an integer >= $min"))
-    val rest = Seq.newBuilder[String]
-    var i = 0
-    def value(o: String) = { i += 1; args.lift(i).getOrElse(throw new ReplayError(s"$o needs a value")) }
-    while (i < args.length) {
-      args(i) match {
-        case "--design" => design = value("--design")
-        case "--out" => out = Some(value("--out"))
-        case "--quiet" => quiet = true
-        case "--check-rows" => head = count("--check-rows", value("--check-rows"), 1)
-        case "--check-windows" => windows = count("--check-windows", value("--check-windows"), 0)
-        case o if o.startsWith("--") => rest += o; rest += value(o)
-        case f if file.isEmpty => file = Some(f)
-        case f => throw new ReplayError(s"replay: one recording at a time, got '${file.get}' and '$f'")
-      }
-      i += 1
-    }
+  /** `replay`'s options, parsed by the command line (moire.cli.ReplayArgs); `subdiv` holds the emit-subdiv options. */
+  final case class Options(file: Option[String], design: String = "subdiv", out: Option[String] = None, quiet: Boolean = false,
+                           checkRows: Int = 100000, checkWindows: Int = 20, subdiv: Seq[String] = Nil)
+
+  /** Replays a recording through the RTL and writes the outputs; true when the RTL matches the model. */
+  def run(opts: Options): Boolean = {
+    val (design, out, file, quiet, head, windows) = (opts.design, opts.out, opts.file, opts.quiet, opts.checkRows, opts.checkWindows)
     val f = file.getOrElse(throw new ReplayError("replay: name a recording file (see --help)"))
     val path = os.Path(f, os.pwd)
     // The output is checked before the long work: never one of the inputs, always writable.
@@ -111,7 +98,7 @@ object ReplayCmd {
     def lap(): Double = { val now = System.nanoTime(); val s = (now - t) / 1e9; t = now; s }
     val rec = Recording.read(path)
     val readS = lap()
-    val d = ReplayDesign(design, config(rest.result(), rec.meta))
+    val d = ReplayDesign(design, config(opts.subdiv, rec.meta))
     matchAdc(f, rec, d)
     val p = pins(f, rec)
     def log(s: String): Unit = if (!quiet) System.err.println(s"replay: $s")
@@ -123,7 +110,7 @@ object ReplayCmd {
     log(f"read CSV $readS%.1f s, emit + build + replay + check $replayS%.1f s, write CSV $writeS%.1f s")
     println(f"wrote $dest (${o.length} rows; harness ${o.length / o.loopSeconds / 1e6}%.2f M samples/s)")
     println(check.text)
-    if (!check.ok) sys.exit(1)
+    check.ok
   }
 }
 

@@ -41,11 +41,11 @@ object ReplayDesign {
   val names: Seq[String] = Seq("subdiv", "corrected")
 
   /** `subdiv` takes the emit-subdiv options; `corrected` is the corrected chain at its defaults (M = 1024). */
-  def apply(name: String, config: SubdivConfig): ReplayDesign = name match {
-    case "subdiv" => Subdiv(config.params, config.format)
-    case "corrected" => Corrected(CorrectedSubdivParams(format = config.format))
-    case other => throw new ReplayError(s"--design: '$other' is not a replayable design; allowed: ${names.mkString(", ")}")
-  }
+  def apply(name: String, config: SubdivConfig): ReplayDesign =
+    moire.choice.Choice(names, name, s"--design: '$name' is not a replayable design")(identity).fold(e => throw new ReplayError(e), identity) match {
+      case "subdiv" => Subdiv(config.params, config.format)
+      case _ => Corrected(CorrectedSubdivParams(format = config.format))
+    }
 
   final case class Subdiv(p: SubdivParams, format: AdcFormat) extends ReplayDesign {
     def name = "subdiv"

@@ -1,6 +1,6 @@
 package moire.stream
 
-import moire.harmonic.CoefficientFile
+import moire.calibration.CoefficientFile
 import moire.protocol.{Registers, StreamV1}
 
 /** `moire board-reg`: read and write the board's registers by name, load harmonic coefficients. */
@@ -82,7 +82,7 @@ object BoardReg {
     * Addresses in the file are within the harmonic window; the board's are [[Registers.HarmonicBase]] + them.
     */
   def loadCoefficients(path: os.Path): Seq[(Int, Long)] = {
-    if (!os.isFile(path)) throw new StreamError(s"$path: no such file")
+    moire.files.PathKind.notAFile(path).foreach(m => throw new StreamError(m))
     val text = try os.read(path) catch { case e: java.io.IOException => throw new StreamError(s"$path: cannot read (${e.getMessage})") }
     def place(where: String, a: Long, d: Long): (Int, Long) = {
       if (a < 0 || Registers.HarmonicBase + a > 0xFF) throw new StreamError(s"$where: window address $a is outside 0..${0xFF - Registers.HarmonicBase}")

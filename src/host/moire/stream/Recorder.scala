@@ -42,11 +42,15 @@ object Recorder {
   /** Records per second the link carries at `baud` with n records per frame (10 bits per byte on the wire). */
   def linkRecordsPerSecond(baud: Int, n: Long): Double = baud / 10.0 / StreamV1.recordFrameBytes(n.toInt) * n
 
+  /** The fastest ADC clock a board can run (its system clock's limit, 200 MHz). */
+  val MaxAdcClockHz = 200e6
+
   def validate(o: RecordOptions): Unit = {
     if (!(o.seconds > 0) || o.seconds > 86400) throw new StreamError(s"--seconds must be in (0, 86400], got ${o.seconds}")
     if (o.baud < 300 || o.baud > 12000000) throw new StreamError(s"--baud must be in 300..12000000, got ${o.baud}")
     o.decimation.foreach(d => if (d < 1 || d > Registers.MaxDecimation) throw new StreamError(s"--decimation must be in 1..${Registers.MaxDecimation}, got $d"))
-    o.adcClockHz.foreach(f => if (!(f > 0) || f.isInfinite) throw new StreamError(s"--adc-clock-hz must be a positive number, got $f"))
+    o.adcClockHz.foreach(f => if (!(f > 0) || f > MaxAdcClockHz)
+      throw new StreamError(s"--adc-clock-hz must be a positive number up to ${MaxAdcClockHz.toLong} (the fastest board clock), got $f"))
     o.adcFormat.foreach(f => AdcFormat.parse(f).left.foreach(e => throw new StreamError(s"--adc-format: $e")))
     o.countsPerPeriod.foreach(m => if (m < 1 || m > StreamV1.MaxU32) throw new StreamError(s"--counts-per-period must be a positive u32, got $m"))
     for ((k, v) <- Seq("--ref-counts-per-period" -> o.refCountsPerPeriod, "--ref-counts-per-turn" -> o.refCountsPerTurn); x <- v)
@@ -58,6 +62,8 @@ object Recorder {
         "--counts-per-period" -> o.countsPerPeriod).collect { case (k, None) => k }
       if (missing.nonEmpty) throw new StreamError(s"--listen-only sends no commands, so give ${missing.mkString(", ")} by hand")
     }
+    if (o.port.trim.isEmpty) throw new StreamError("--port is empty: name a serial port, e.g. /dev/ttyUSB0")
+    moire.files.SafeWrite.refuseInputs(o.out, Seq(o.port))   // the port's link is no output
     moire.files.SafeWrite.checkFile(os.Path(o.out, os.pwd))   // before the port is opened and the capture runs
   }
 
@@ -193,6 +199,7 @@ object Recorder {
               if (inner && (idx.size >= 2 || firstOk)) return java.util.Arrays.copyOfRange(buf, i + 1, n)
               last = idx.last; lastSeq = f.seq
             case r: RegisterReply => lastSeq = r.seq
+            case _ => ()   // burst frames belong to a burst capture, not to the stream being settled
           }
           i += 1
         }

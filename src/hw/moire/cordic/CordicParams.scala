@@ -26,7 +26,7 @@ object CordicMode {
 
   val all: Seq[CordicMode] = Seq(SinCos, Rotate, Atan2, Asin, AsinDouble, Acos, AcosDouble)
   def parse(s: String): Either[String, CordicMode] =
-    all.find(_.name == s).toRight(s"--mode: '$s' is not a mode; allowed: ${all.map(_.name).mkString(", ")}")
+    moire.choice.Choice(all, s, s"--mode: '$s' is not a mode")(_.name)
 }
 
 /** How a value loses its low bits: floor (plain arithmetic shift) or round half to even. */
@@ -36,7 +36,7 @@ object Rounding {
   case object HalfEven extends Rounding("half-even")
   val all: Seq[Rounding] = Seq(Truncate, HalfEven)
   def parse(s: String): Either[String, Rounding] =
-    all.find(_.name == s).toRight(s"--rounding: '$s' is not a rounding; allowed: ${all.map(_.name).mkString(", ")}")
+    moire.choice.Choice(all, s, s"--rounding: '$s' is not a rounding")(_.name)
 }
 
 /** Parameters of one CORDIC generator instance.

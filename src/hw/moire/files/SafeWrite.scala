@@ -26,34 +26,89 @@ object SafeWrite {
     targets.groupBy(identity).collectFirst { case (t, ts) if ts.size > 1 => throw new FileError(s"$t: named twice as an output of one command") }
     targets.foreach(checkFile)
     val tmps = targets.map(t => t / os.up / s".${t.last}.tmp-${ProcessHandle.current().pid()}-${Thread.currentThread().getId}")
+    tmps.foreach(Temporaries.add)
     var at = targets.head; var renamed = 0
     try {
       for (((t, write), tmp) <- writes.zip(tmps)) { at = t; write(tmp) }
       for (t <- targets) { at = t; beforeRename(t) }
-      for ((t, tmp) <- targets.zip(tmps)) {
-        at = t
-        Files.move(tmp.toNIO, t.toNIO, StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.ATOMIC_MOVE)
-        renamed += 1
+      Temporaries.commit {
+        for ((t, tmp) <- targets.zip(tmps)) {
+          at = t
+          Files.move(tmp.toNIO, t.toNIO, StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.ATOMIC_MOVE)
+          renamed += 1
+        }
       }
     } catch {
       case e: IOException =>
         val kept = if (renamed == 0) "nothing was changed" else s"${targets.take(renamed).mkString(", ")} already replaced, the rest kept"
         throw new FileError(s"$at: cannot write (${reason(e)}); $kept")
-    } finally tmps.foreach(tmp => try Files.deleteIfExists(tmp.toNIO) catch { case _: IOException => () })
+    } finally tmps.foreach { tmp => try Files.deleteIfExists(tmp.toNIO) catch { case _: IOException => () }; Temporaries.done(tmp) }
+  }
+
+  /** Writes a project folder as one: `write` fills a fresh folder (given to it) and returns its files; then each
+    * of that folder's entries replaces its namesake in `dir` (a sub-folder such as rtl/ as a whole, by renames).
+    * A failed or interrupted `write` leaves `dir` as it was; files of `dir` the new project does not name are
+    * kept. Returns the files as they are in `dir`.
+    */
+  def project(dir: os.Path)(write: os.Path => Seq[os.Path]): Seq[os.Path] = {
+    checkFolder(dir)
+    val tag = s"${ProcessHandle.current().pid()}-${Thread.currentThread().getId}"
+    val stage = dir / s".moire-new-$tag"
+    Temporaries.add(stage)
+    try {
+      os.remove.all(stage)
+      val files = write(stage)
+      val entries = os.list(stage)
+      entries.foreach(e => checkReplaceable(dir / e.last))
+      Temporaries.commit {
+        // folders first, each swapped with its old self (moved aside, then removed), then the files one by one
+        val (folders, plain) = entries.partition(os.isDir)
+        val aside = folders.map(f => dir / s".${f.last}.old-$tag")
+        aside.foreach(Temporaries.add)
+        var replaced = 0
+        try {
+          for ((f, old) <- folders.zip(aside)) {
+            if (os.exists(dir / f.last)) Files.move((dir / f.last).toNIO, old.toNIO, StandardCopyOption.ATOMIC_MOVE)
+            Files.move(f.toNIO, (dir / f.last).toNIO, StandardCopyOption.ATOMIC_MOVE)
+          }
+          for (f <- plain) { Files.move(f.toNIO, (dir / f.last).toNIO, StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.ATOMIC_MOVE); replaced += 1 }
+        } catch {
+          case e: IOException =>
+            // the old folders back in place; a file already replaced cannot be (say which)
+            if (replaced == 0) for ((f, old) <- folders.zip(aside) if os.exists(old)) {
+              if (os.exists(dir / f.last)) os.remove.all(dir / f.last)
+              Files.move(old.toNIO, (dir / f.last).toNIO, StandardCopyOption.ATOMIC_MOVE)
+            }
+            val kept = if (replaced == 0) "nothing was changed" else s"${plain.take(replaced).map(_.last).mkString(", ")} and the folders already replaced"
+            throw new FileError(s"$dir: cannot write the project (${reason(e)}); $kept")
+        } finally aside.foreach { old => try os.remove.all(old) catch { case _: IOException => () }; Temporaries.done(old) }
+      }
+      files.map(f => dir / f.relativeTo(stage))
+    } catch {
+      case e: IOException => throw new FileError(s"$dir: cannot write the project (${reason(e)}); nothing was changed")
+    } finally { try os.remove.all(stage) catch { case _: IOException => () }; Temporaries.done(stage) }
+  }
+
+  /** An existing output that is no plain file or folder is refused: a link, a pipe or a device is never replaced. */
+  private def checkReplaceable(target: os.Path): Unit = PathKind.of(target) match {
+    case Some(k) if k != "a file" && k != "a folder" =>
+      throw new FileError(s"$target: is $k; moire does not write over it (give a plain file's name)")
+    case _ => ()
   }
 
   def text(target: os.Path, s: String): Unit = apply(target)(t => os.write(t, s))
 
   /** Checks, before any work, that `dir` is (or can become) a writable folder. */
   def checkFolder(dir: os.Path): Unit = {
-    if (os.exists(dir) && !os.isDir(dir)) throw new FileError(s"$dir: is a file, not a folder")
+    if (os.exists(dir) && !os.isDir(dir)) throw new FileError(s"$dir: is ${PathKind.of(dir).getOrElse("a file")}, not a folder")
     try os.makeDir.all(dir) catch { case e: IOException => throw new FileError(s"$dir: cannot make the folder (${reason(e)})") }
     if (!Files.isWritable(dir.toNIO)) throw new FileError(s"$dir: the folder is not writable")
   }
 
   /** Checks, before any work, that `target` can be written: its folder is writable and it is no folder. */
   def checkFile(target: os.Path): Unit = {
-    if (os.isDir(target)) throw new FileError(s"$target: is a folder, not a file")
+    if (os.isDir(target, followLinks = false)) throw new FileError(s"$target: is a folder, not a file")
+    checkReplaceable(target)
     checkFolder(target / os.up)
     if (os.exists(target) && !Files.isWritable(target.toNIO)) throw new FileError(s"$target: the file is read-only")
   }
@@ -61,7 +116,10 @@ object SafeWrite {
   /** Refuses an output that is one of the inputs (also through links or another spelling of the path). */
   def refuseInputs(output: os.Path, inputs: Seq[os.Path]): Unit =
     inputs.find(i => i == output || (os.exists(i) && os.exists(output) && Files.isSameFile(i.toNIO, output.toNIO)))
-      .foreach(i => throw new FileError(s"$output: is an input of this command; choose another output name"))
+      .foreach(i => throw new FileError(s"$output: is an input of this command${if (i != output) s" ($i)" else ""}; choose another output name"))
+
+  /** [[refuseInputs]] for path strings as the user gave them (relative to the working folder). */
+  def refuseInputs(output: String, inputs: Seq[String]): Unit = refuseInputs(os.Path(output, os.pwd), inputs.map(os.Path(_, os.pwd)))
 
   /** Plain words for an I/O failure (no Java class names). */
   def reason(e: IOException): String = e match {

@@ -7,7 +7,7 @@ object AdcFormat {
   case object TwosComplement extends AdcFormat("twos-complement")
   val all: Seq[AdcFormat] = Seq(OffsetBinary, TwosComplement)
   def parse(s: String): Either[String, AdcFormat] =
-    all.find(_.name == s).toRight(s"ADC format '$s' is unknown; allowed: ${all.map(_.name).mkString(", ")}")
+    moire.choice.Choice(all, s, s"ADC format '$s' is unknown")(_.name)
 }
 
 /** One ADC sample: the code as the ADC drives its pins, and the out-of-range flag (AD9226 OTR). */

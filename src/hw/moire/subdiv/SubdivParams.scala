@@ -13,7 +13,7 @@ object PhaseMethod {
   case object AsinDouble extends PhaseMethod("asin-double")
   val all: Seq[PhaseMethod] = Seq(Atan2, AsinDouble)
   def parse(s: String): Either[String, PhaseMethod] =
-    all.find(_.name == s).toRight(s"--method: '$s' is not a phase method; allowed: ${all.map(_.name).mkString(", ")}")
+    moire.choice.Choice(all, s, s"--method: '$s' is not a phase method")(_.name)
 }
 
 /** Parameters of the digital subdivider ([[Subdivider]], [[SubdivModel]]).

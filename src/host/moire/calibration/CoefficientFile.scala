@@ -1,4 +1,6 @@
-package moire.harmonic
+package moire.calibration
+
+import moire.harmonic._
 
 /** The coefficient file the board loads: JSON with the harmonics in arcsec and degrees, the register
   * words of [[HarmonicCompensator]], and a plain register-write listing (`addr data`, hex).

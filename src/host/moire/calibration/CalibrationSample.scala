@@ -1,9 +1,11 @@
-package moire.harmonic
+package moire.calibration
+
+import moire.harmonic._
 
 import moire.cordic.PaperBounds
 
 /** Sample calibration files: seed 001 eq. 19 plus Gaussian noise, 36 points at 10 degree steps
-  * (sec. 4.1). Regenerate the files in docs/ with `./sbt "runMain moire.harmonic.CalibrationSample docs"`.
+  * (sec. 4.1). Regenerate the files in docs/ with `./sbt "runMain moire.calibration.CalibrationSample docs"`.
   */
 object CalibrationSample {
   def eq19(thetaDeg: Double): Double =

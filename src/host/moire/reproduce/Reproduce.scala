@@ -1,4 +1,6 @@
-package moire.paper
+package moire.reproduce
+
+import moire.paper.AccuracyRow
 
 import moire.cordic._
 
@@ -61,7 +63,7 @@ object Reproduce {
       sim <= pmax, f"holds when below P_max; ${if (sim <= 9.36e-4) "below" else "above"} the paper's simulation by ${(sim / 9.36e-4 - 1) * 100}%.0f%%: " +
         "the n=16 approximation term alone allows 1.166e-3 and our angles come closer to it")
     out ++= moire.cordic.TaperFigures.rows()
-    out ++= moire.harmonic.HarmonicReproduce.rows()
+    out ++= moire.calibration.HarmonicReproduce.rows()
     progress("seed 001 Table 3")
     for (n <- 15 to 17; b <- 19 to 22) {
       val (ps, pc) = PaperBounds.seed001Table3((n, b))

@@ -1,4 +1,6 @@
-package moire.harmonic
+package moire.calibration
+
+import moire.harmonic._
 
 import org.knowm.xchart.{BitmapEncoder, XYChartBuilder, XYSeries}
 import org.knowm.xchart.style.markers.SeriesMarkers

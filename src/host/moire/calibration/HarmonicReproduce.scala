@@ -1,4 +1,6 @@
-package moire.harmonic
+package moire.calibration
+
+import moire.harmonic._
 
 import moire.paper.AccuracyRow
 import moire.cordic.PaperBounds

@@ -1,4 +1,6 @@
-package moire.harmonic
+package moire.calibration
+
+import moire.harmonic._
 
 import org.hipparchus.linear.{Array2DRowRealMatrix, ArrayRealVector, QRDecomposition}
 

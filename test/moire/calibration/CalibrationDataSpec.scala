@@ -1,4 +1,6 @@
-package moire.harmonic
+package moire.calibration
+
+import moire.harmonic._
 
 import org.scalatest.flatspec.AnyFlatSpec
 
@@ -59,7 +61,7 @@ class CalibrationDataSpec extends AnyFlatSpec {
   "The sample files in docs/" should "be what CalibrationSample generates, and parse" in {
     for ((name, text) <- CalibrationSample.files) {
       val path = os.pwd / "docs" / name
-      assert(os.read(path) == text, s"$path is stale: ./sbt \"runMain moire.harmonic.CalibrationSample docs\"")
+      assert(os.read(path) == text, s"$path is stale: ./sbt \"runMain moire.calibration.CalibrationSample docs\"")
       assert(CalibrationData.read(path).points.size % 36 == 0)
     }
   }

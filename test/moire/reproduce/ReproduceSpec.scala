@@ -1,4 +1,6 @@
-package moire.paper
+package moire.reproduce
+
+import moire.paper.AccuracyRow
 
 import moire.cordic._
 import org.scalatest.flatspec.AnyFlatSpec

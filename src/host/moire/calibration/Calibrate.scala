@@ -1,4 +1,6 @@
-package moire.harmonic
+package moire.calibration
+
+import moire.harmonic._
 
 /** The `calibrate` subcommand: calibration CSV -> harmonic fit -> coefficient file, register listing, plot. */
 object Calibrate {
@@ -12,6 +14,7 @@ object Calibrate {
     moire.files.SafeWrite.checkFolder(out)   // before the work, not after it
     val data = CalibrationData.read(input)
     val distinct = data.points.map(a => math.round(a.angleDeg * 1e6)).distinct.size
+    if (maxOrderOpt < -1) throw new CalibrationError(s"--max-order must be at least 1 (or left out for the default), got $maxOrderOpt")
     val maxOrder = if (maxOrderOpt < 0) HarmonicFit.defaultMaxOrder(distinct) else maxOrderOpt
     if (maxOrder < 1) throw new CalibrationError(s"--max-order must be at least 1, got $maxOrder")
     if (maxOrderOpt < 0 && maxOrder < p.harmonics)
@@ -20,6 +23,10 @@ object Calibrate {
     val dirs = data.directions.filter(_.nonEmpty)
     val byDir = if (dirs.size > 1) dirs.map { d =>
       val ps = data.of(d)
+      val need = 2 * fit.harmonics.size + 1
+      if (ps.size < need) throw new CalibrationError(s"${data.file}: direction $d has ${ps.size} point${if (ps.size == 1) "" else "s"} " +
+        s"(first on line ${ps.head.line}); each direction is fitted on its own and needs at least $need for the ${fit.harmonics.size} " +
+        "harmonics kept: give it its full set of angles, or fewer --harmonics")
       d -> HarmonicFit.fit(ps.map(_.angleDeg), ps.map(_.errorArcsec), fit.harmonics.map(_.order))
     } else Nil
     val reversal = if (dirs.toSet == Set("cw", "ccw")) {

@@ -1,4 +1,6 @@
-package moire.harmonic
+package moire.calibration
+
+import moire.harmonic._
 
 import moire.designs.Designs
 import moire.emit.Target

@@ -1,4 +1,6 @@
-package moire.harmonic
+package moire.calibration
+
+import moire.harmonic._
 
 /** A user mistake in a calibration file or option: one line, naming file and line where there is one. */
 final class CalibrationError(msg: String) extends Exception(msg)
@@ -44,15 +46,16 @@ object CalibrationData {
   private val columns3 = columns2 :+ "direction"
 
   def read(path: os.Path): CalibrationData = {
-    if (!os.isFile(path)) throw new CalibrationError(s"$path: no such file")
-    val text = try os.read(path) catch { case e: java.io.IOException => throw new CalibrationError(s"$path: cannot read (${moire.files.SafeWrite.reason(e)})") }
-    parse(path.last, text)
+    moire.files.PathKind.notAFile(path).foreach(m => throw new CalibrationError(m))
+    // through the bounded line reader: a binary file or one endless line is refused at once
+    val lines = try moire.recording.CsvText.lines(path) catch { case e: moire.recording.RecordingError => throw new CalibrationError(e.getMessage) }
+    parse(path.last, lines.mkString("\n"))
   }
 
   def parse(file: String, text: String): CalibrationData = {
     def fail(line: Int, msg: String) = throw new CalibrationError(s"$file:$line: $msg")
     val lines = text.stripPrefix("\uFEFF").split("\n", -1).toSeq.map(_.stripSuffix("\r"))
-    if (lines.isEmpty || lines.head.trim != magic) fail(1, s"first line must be '$magic'")
+    if (lines.isEmpty || lines.head.trim != magic) fail(1, s"first line must be '$magic', got '${moire.files.Shown.text(lines.headOption.getOrElse(""))}'")
     val meta = scala.collection.mutable.LinkedHashMap[String, String]()
     var header: Option[Seq[String]] = None
     val points = Seq.newBuilder[CalPoint]
@@ -61,7 +64,7 @@ object CalibrationData {
       if (l.startsWith("#")) {
         val kv = l.stripPrefix("#").trim
         val at = kv.indexOf(':')
-        if (!l.startsWith("# ") || at <= 0) fail(n, s"metadata must read '# key: value', got '$l'")
+        if (!l.startsWith("# ") || at <= 0) fail(n, s"metadata must read '# key: value', got '${moire.files.Shown.text(l)}'")
         val key = kv.substring(0, at).trim
         if (meta.contains(key)) fail(n, s"metadata key '$key' appears twice")
         meta(key) = kv.substring(at + 1).trim
@@ -69,16 +72,17 @@ object CalibrationData {
         case None =>
           val h = l.split(",", -1).toSeq.map(_.trim.toLowerCase)
           if (h != columns2 && h != columns3)
-            fail(n, s"header row must be '${columns2.mkString(",")}' or '${columns3.mkString(",")}', got '$l'")
+            fail(n, s"header row must be '${columns2.mkString(",")}' or '${columns3.mkString(",")}', got '${moire.files.Shown.text(l)}'")
           header = Some(h)
         case Some(h) =>
           val cells = l.split(",", -1).toSeq.map(_.trim)
-          if (cells.size != h.size) fail(n, s"${cells.size} fields, the header has ${h.size}")
+          if (cells.size != h.size) fail(n, s"${cells.size} fields, the header has ${h.size}: '${moire.files.Shown.text(l)}'")
           def num(col: Int): Double = {
             val s = cells(col)
             if (s.isEmpty) fail(n, s"missing ${h(col)}")
-            val v = s.toDoubleOption.getOrElse(fail(n, s"${h(col)} '$s' is not a number"))
-            if (v.isNaN || v.isInfinite) fail(n, s"${h(col)} is $s")
+            val v = moire.numbers.Decimal.double(s).getOrElse(fail(n, s"${h(col)} '${moire.files.Shown.text(s)}' is not a number"))
+            if (v.isNaN) fail(n, s"${h(col)} is $s")
+            if (v.isInfinite) fail(n, s"${h(col)} is $s: infinite (beyond the largest number, about 1.8e308)")
             v
           }
           val a = num(0)
@@ -105,7 +109,7 @@ object CalibrationData {
 
   /** With `# step_deg: s`, every angle k s in [0, 360) must be present in each direction. */
   private def checkGrid(d: CalibrationData, step: String, line: Int): Unit = {
-    val s = step.toDoubleOption.filter(v => v > 0 && v <= 180 && !v.isNaN)
+    val s = moire.numbers.Decimal.double(step).filter(v => v > 0 && v <= 180 && !v.isNaN)
       .getOrElse(throw new CalibrationError(s"${d.file}:$line: step_deg '$step' must be a number in (0, 180]"))
     val n = math.round(360 / s).toInt
     if (math.abs(n * s - 360) > 1e-6) throw new CalibrationError(s"${d.file}:$line: step_deg $s does not divide 360")

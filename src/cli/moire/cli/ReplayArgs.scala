@@ -1,0 +1,31 @@
+package moire.cli
+
+import moire.replay.{ReplayCmd, ReplayError}
+
+/** `replay FILE [--design D] [--out F] [--quiet] [--check-rows N] [--check-windows W] [emit-subdiv options]`:
+  * the words to [[ReplayCmd.Options]]; every option it does not know goes, with its value, to the subdivider.
+  */
+object ReplayArgs {
+  def parse(args: Seq[String]): ReplayCmd.Options = {
+    var o = ReplayCmd.Options(None)
+    def count(opt: String, v: String, min: Int) =
+      moire.numbers.Decimal.int(v).filter(_ >= min).getOrElse(throw new ReplayError(s"$opt: '$v' is not an integer >= $min"))
+    val rest = Seq.newBuilder[String]
+    var i = 0
+    def value(opt: String) = { i += 1; args.lift(i).getOrElse(throw new ReplayError(s"$opt needs a value")) }
+    while (i < args.length) {
+      args(i) match {
+        case "--design" => o = o.copy(design = value("--design"))
+        case "--out" => o = o.copy(out = Some(value("--out")))
+        case "--quiet" => o = o.copy(quiet = true)
+        case "--check-rows" => o = o.copy(checkRows = count("--check-rows", value("--check-rows"), 1))
+        case "--check-windows" => o = o.copy(checkWindows = count("--check-windows", value("--check-windows"), 0))
+        case opt if opt.startsWith("--") => rest += opt; rest += value(opt)
+        case f if o.file.isEmpty => o = o.copy(file = Some(f))
+        case f => throw new ReplayError(s"replay: one recording at a time, got '${o.file.get}' and '$f'")
+      }
+      i += 1
+    }
+    o.copy(subdiv = rest.result())
+  }
+}
