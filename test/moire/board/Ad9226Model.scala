@@ -15,7 +15,7 @@ final case class AnalogSample(sin: Double, cos: Double, periods: Double)
   */
 final class Ad9226Model(val adc: Adc, analog: Int => AnalogSample, val latency: Int = 7,
                         sinPins: Int => Int = identity, cosPins: Int => Int = identity) {
-  final case class Sample(sin: Int, otrSin: Boolean, cos: Int, otrCos: Boolean, truePeriods: Double)
+  case class Sample(sin: Int, otrSin: Boolean, cos: Int, otrCos: Boolean, truePeriods: Double)
   private val taken = scala.collection.mutable.ArrayBuffer.empty[Sample]
   private val garbage = Sample(0xA5C & ((1 << adc.bits) - 1), otrSin = true, 0x3C3 & ((1 << adc.bits) - 1), otrCos = true, 0.0)
   /** The word on the pins now. */

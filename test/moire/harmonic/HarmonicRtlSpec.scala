@@ -13,7 +13,7 @@ import org.scalatest.flatspec.AnyFlatSpec
   */
 class HarmonicRtlSpec extends AnyFlatSpec with ChiselScalatestTester {
   /** One configuration of the sweep: its params, coefficients and input angles. */
-  final case class Case(p: HarmonicParams, slots: Seq[HarmonicSlot], thetas: Seq[Long])
+  case class Case(p: HarmonicParams, slots: Seq[HarmonicSlot], thetas: Seq[Long])
 
   val count: Int = if (SimSupport.hasVerilator) 1500 else 200
 

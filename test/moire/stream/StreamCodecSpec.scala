@@ -124,9 +124,9 @@ class StreamCodecSpec extends AnyFlatSpec with Matchers with ScalaCheckPropertyC
 
   /** One byte damaged in a frame: flipped, lost or an extra byte (a UART framing error). */
   private sealed trait Damage { def at: Int }
-  private final case class Flip(at: Int, mask: Int) extends Damage
-  private final case class Lose(at: Int) extends Damage
-  private final case class Extra(at: Int, b: Byte) extends Damage
+  private case class Flip(at: Int, mask: Int) extends Damage
+  private case class Lose(at: Int) extends Damage
+  private case class Extra(at: Int, b: Byte) extends Damage
   private def damage(len: Int): Gen[Damage] = Gen.oneOf(
     for { a <- Gen.choose(0, len - 1); m <- Gen.choose(1, 255) } yield Flip(a, m),
     Gen.choose(0, len - 1).map(Lose(_)),

@@ -40,13 +40,13 @@ object BoardRegFile {
     val model = o.get("model").flatMap(_.objOpt).getOrElse(throw new StreamError(s"$file: no 'model' object"))
     val m = Model.map(r => r.name -> u32(s"model.${r.name}", model.getOrElse(r.name, throw new StreamError(s"$file: model.${r.name} is missing")))).toMap
     val regs = o.get("registers").flatMap(_.objOpt).getOrElse(throw new StreamError(s"$file: no 'registers' object"))
-    val given = regs.toSeq.map { case (k, v) =>
+    val inFile = regs.toSeq.map { case (k, v) =>
       val a = Registers.parse(k).toOption.filter(a => Settings.exists(_.addr == a) || Harmonic.contains(a))
         .getOrElse(throw new StreamError(s"$file: registers.$k is not a setting board-reg saves (${Settings.map(_.name).mkString(", ")}, h<slot>_<order|c|phi>)"))
       a -> u32(s"registers.$k", v)
     }.toMap
-    Settings.foreach(r => if (!given.contains(r.addr)) throw new StreamError(s"$file: registers.${r.name} is missing"))
-    (m, Settings.map(r => r.addr -> given(r.addr)) ++ Harmonic.map(a => a -> given.getOrElse(a, 0L)))
+    Settings.foreach(r => if (!inFile.contains(r.addr)) throw new StreamError(s"$file: registers.${r.name} is missing"))
+    (m, Settings.map(r => r.addr -> inFile(r.addr)) ++ Harmonic.map(a => a -> inFile.getOrElse(a, 0L)))
   }
 
   /** Checks the model, then writes and reads back each register; the number of non-zero harmonic registers. */
