@@ -173,7 +173,7 @@ object Main {
                @arg(doc = "white noise rms, full scale") noise: Double = 0.0005,
                seed: Long = 1L,
                @arg(doc = "grating lines per revolution (amplitude_modulation)") linesPerRev: Option[Double] = None,
-               @arg(doc = "an effect NAME:key=value,...,channel=sin|cos|both (repeat); see docs/explain.md") effect: Seq[String] = Nil,
+               @arg(doc = "an effect NAME:key=value,...,channel=sin|cos|both (repeat); `explain --help` lists the effects and their keys") effect: Seq[String] = Nil,
                @arg(doc = "a model JSON file (the JSON simulate writes into the # model: line); overrides the options") model: Option[String] = None): Unit =
     println(moire.explain.ExplainCmd.simulate(moire.explain.ExplainCmd.SimOptions(out, samples, sampleRateHz, adcBits, adc, motion,
       amplitude, offsetSin, offsetCos, gainSin, gainCos, phaseErrorDeg, noise, seed, linesPerRev, effect, model)))

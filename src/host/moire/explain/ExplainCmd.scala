@@ -143,7 +143,9 @@ object ExplainCmd {
       |    --subdiv "OPTIONS"   emit-subdiv options of the board's subdivider (default: from the metadata adc_bits,
       |                         adc_format, counts_per_period); a recording with a position column is replayed through this
       |                         RTL (Verilator) and the board's outputs are compared with it, sample by sample
-      |    --no-rtl             do not compare board outputs with the RTL""".stripMargin
+      |    --no-rtl             do not compare board outputs with the RTL
+      |  Effects (the catalogue; docs/explain.md says what each is):
+      |""".stripMargin + effects.Effects.help
 
   def kindOf(p: os.Path): String = {
     if (!os.isFile(p)) throw new ExplainError(s"$p: no such file")
@@ -188,10 +190,10 @@ object ExplainCmd {
   private def benchRecording(samples: Int, file: os.Path): os.Path = {
     val m = PhysicsModel(SignalParams(amplitude = 0.9, phaseErrorDeg = 1.0, noiseRms = 0.0007, seed = 7),
       moire.signal.Motion.Ramp(20e3, 250e3, samples / 10e6), 10e6, samples, Adc(12), None,
-      Seq(EffectSpec("channel_skew", Map("skew_s" -> 20e-9)), EffectSpec("bandwidth", Map("cutoff_hz" -> 600e3)),
-        EffectSpec("harmonic", Map("order" -> 3, "amplitude_rel" -> 0.001), "sin"),
-        EffectSpec("adc_bit_fault", Map("bit" -> 2, "stuck_at" -> 0), "cos"),
-        EffectSpec("interference", Map("frequency_hz" -> 50e3, "amplitude_fs" -> 3e-4))))
+      Seq(EffectSpec(effects.ChannelSkew.name, Map("skew_s" -> 20e-9)), EffectSpec(effects.Bandwidth.name, Map("cutoff_hz" -> 600e3)),
+        EffectSpec(effects.Harmonic.name, Map("order" -> 3, "amplitude_rel" -> 0.001), "sin"),
+        EffectSpec(effects.AdcBitFault.name, Map("bit" -> 2, "stuck_at" -> 0), "cos"),
+        EffectSpec(effects.Interference.name, Map("frequency_hz" -> 50e3, "amplitude_fs" -> 3e-4))))
     Recording.write(file, m.generate()._1)
     file
   }

@@ -151,8 +151,22 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
 
   def evalTraj(): Unit = {
     traj.eval(phase, freq)
+    range = null
     setFundamentals()
   }
+
+  private var range: (Double, Double) = null
+  /** The 2 % and 98 % points of the fringe frequency's magnitude (Hz): the speed range the record spans. */
+  def speedRange: (Double, Double) = {
+    if (range == null) {
+      val a = freq.map(math.abs); java.util.Arrays.sort(a)
+      def pct(q: Double) = a(math.min(n - 1, (q * n).toInt))
+      range = (pct(0.02), pct(0.98))
+    }
+    range
+  }
+  def fMin: Double = speedRange._1
+  def fMax: Double = speedRange._2
 
   /** 2 pi times the fractional fringe phase of sample i. */
   @inline final def angle(i: Int): Double = 2 * math.Pi * (phase(i) - math.floor(phase(i)))
@@ -213,11 +227,12 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
       def th(i: Int) = if (m != null) m(i) else 2 * math.Pi * phase(i) / l
       def col(u: Int => Double, f: Double => Double) = Array.tabulate(n)(i => u(i) * f(th(i)))
       IndexedSeq(Col(col(us(_), math.cos), col(uc(_), math.cos)), Col(col(us(_), math.sin), col(uc(_), math.sin)))
-    case Term.Inl =>
+    case Term.Inl(ch) =>
       def t2(p: Array[Double]) = Array.tabulate(n)(i => (2 * p(i) * p(i) - 1) * lsb)
       def t3(p: Array[Double]) = Array.tabulate(n)(i => (4 * p(i) * p(i) * p(i) - 3 * p(i)) * lsb)
-      val (ps, pc) = (predS, predC)
-      IndexedSeq(Col(t2(ps), t2(pc)), Col(t3(ps), t3(pc)))
+      val ps = if (ch != "cos") predS else null; val pc = if (ch != "sin") predC else null
+      def on(p: Array[Double], f: Array[Double] => Array[Double]) = if (p == null) null else f(p)
+      IndexedSeq(Col(on(ps, t2), on(pc, t2)), Col(on(ps, t3), on(pc, t3)))
     case Term.Crosstalk =>
       val w = Array.tabulate(n)(i => 2 * math.Pi * freq(i))
       IndexedSeq(Col(mul(vc(_), w), null), Col(null, mul(vs(_), w)))
@@ -343,7 +358,7 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
     val base0 = baseCols(s1, s2, c1, c2)
     val keep = n.toLong * 8 * 4 * spec.terms.size < holdBytes
     // the INL term's columns come from the residual, which the fit then overwrites: always held
-    val held = (false +: spec.terms.toIndexedSeq.map(_ == Term.Inl)) ++ extra.map(_ => true)
+    val held = (false +: spec.terms.toIndexedSeq.map(_.isInstanceOf[Term.Inl])) ++ extra.map(_ => true)
     new ColGroups((() => base0) +: (spec.terms.toIndexedSeq.map(t => () => termCols(t)) ++ extra.map(c => () => c)), keep, held)
   }
 

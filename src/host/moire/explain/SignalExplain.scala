@@ -1,5 +1,7 @@
 package moire.explain
 
+import moire.explain.effects._
+
 import moire.recording.{Recording, Reference}
 
 /** One accepted effect, as reported. `before`/`after` are the residuals around its acceptance (for plots). */
@@ -45,28 +47,8 @@ object SignalExplain {
 
   final case class Result(report: Report, engine: SignalEngine, before: Snapshot, steps: Seq[(Finding, Snapshot, Snapshot)])
 
-  def specOf(model: Seq[EffectSpec]): ModelSpec = model.foldLeft(ModelSpec()) { (sp, e) =>
-    val ch = if (e.channel == "cos") 1 else 0
-    e.effect match {
-      case "harmonic" => sp.copy(terms = sp.terms :+ Term.Harm(e.p("order", 2).toInt, e.channel))
-      case "drift" => sp.copy(terms = sp.terms :+ Term.Drift)
-      case "amplitude_modulation" => sp.copy(terms = sp.terms :+ Term.Am)
-      case "adc_nonlinearity" => sp.copy(terms = sp.terms :+ Term.Inl)
-      case "crosstalk" => sp.copy(terms = sp.terms :+ Term.Crosstalk)
-      case "contrast_along_travel" => sp.copy(terms = sp.terms :+ Term.Contrast)
-      case "warmup" => sp.copy(terms = sp.terms :+ Term.Warmup(e.p("time_constant_s", 1.0)))
-      case "interference" => sp.copy(terms = sp.terms :+ Term.Interference(e.p("frequency_hz", 50)))
-      case "eccentricity" => sp.copy(terms = sp.terms :+ Term.AngleHarm(1))
-      case "angle_harmonic" => sp.copy(terms = sp.terms :+ Term.AngleHarm(e.p("order", 2).toInt))
-      case "channel_skew" => sp.copy(hasSkew = true, skewS = e.p("skew_s", 0.0))
-      case "bandwidth" => sp.copy(bw = sp.bw + (e.channel -> e.p("cutoff_hz", 1e6)))
-      case "jitter" => sp.copy(jitter = true)
-      case "adc_bit_fault" => sp.copy(faults = sp.faults :+ Fault(ch, e.p("bit", 0).toInt, if (e.p("stuck_at").isNaN) -1 else e.p("stuck_at").toInt,
-        if (e.p("bridged_to").isNaN) -1 else e.p("bridged_to").toInt))
-      case "clipping" => sp.copy(clips = sp.clips :+ Clip(ch, e.p("low_fs", Double.NegativeInfinity), e.p("high_fs", Double.PositiveInfinity)))
-      case _ => sp
-    }
-  }
+  def specOf(model: Seq[EffectSpec]): ModelSpec =
+    model.foldLeft(ModelSpec())((sp, e) => Effects(e.effect).fold(sp)(_.backward(sp, e)))
 
   def run(file: String, rec: Recording, model: Seq[EffectSpec], progress: Progress, maxFindings: Int = 8,
           holdBytes: Long = Runtime.getRuntime.maxMemory / 8): Result = {
@@ -98,15 +80,21 @@ object SignalExplain {
       // the last accepted effect is unexplained structure (earlier rounds' rejects may be another effect's shadow).
       rejected.clear()
       val (ok, impossible) = all.filter(c => !dbic(c).isNaN && Identifiable.why(c, e, cands.fMin, cands.fMax).isEmpty)
-        .partition(c => Plausible.why(c, e.fs, e.n).isEmpty)
+        .partition(c => unsupported(c, e, cands).isEmpty)
       impossible.filter(c => dbic(c) > Threshold && !rejected.exists(_.where.startsWith(c.effect + " "))).foreach { c =>
         rejected += Located(s"${c.effect} (${c.channel})", s"structure of this shape lowers BIC by ${"%.0f".format(dbic(c))}, but not physically: " +
-          Plausible.why(c, e.fs, e.n).get, c.params, significant = true)
+          unsupported(c, e, cands).get, c.params, significant = true)
       }
       // The strongest candidates in turn: the first that the record can support is the finding. Quantization and
       // identifiability are checked on the candidate; replication on the halves after the joint refit that accepts it
       // (before it, the trajectory and the default part still hold part of the effect, differently in each half).
-      val ordered = ok.filter(c => dbic(c) > Threshold).sortBy(c => -dbic(c)).iterator
+      val passing = ok.filter(c => dbic(c) > Threshold)
+      // A pile-up at one code or a missing code pattern is direct evidence in the histogram that no smooth effect makes:
+      // code-domain repairs go first. An effect that yields to a look-alike predicting the same signal (within the
+      // threshold) stands back for it; the finding then names it.
+      def yields(c: Cand) = Effects(c.effect).exists(f => passing.exists(o => o != c && f.yieldsTo(c, o) && dbic(o) > dbic(c) - Threshold))
+      val ordered = passing.filterNot(yields)
+        .sortBy(c => (!Effects(c.effect).exists(_.domain == Domain.Codes), -dbic(c))).iterator
       def reject(c: Cand, why: String): Unit =
         if (!rejected.exists(_.where.startsWith(c.effect + " ")))
           rejected += Located(s"${c.effect} (${c.channel}): ${c.where}", s"structure of this shape lowers BIC by ${"%.0f".format(dbic(c))}, but $why",
@@ -143,23 +131,22 @@ object SignalExplain {
     val cands = new Candidates(e)
     val fin = steps.result().map { case (f, b, a) =>
       val g = refresh(f, e)
-      (g.copy(summary = Describe.summary(Cand(g.effect, g.channel, e.spec, 0, 0, g.params, g.unc, g.where), cands.fMin, cands.fMax)), b, a)
+      (g.copy(summary = Effects(g.effect).fold(g.effect)(_.summary(g.params, g.channel, cands.fMin, cands.fMax))), b, a)
     }
     val left = Locate.all(e).filter(_.significant)
     // with a free motion that bends within a period, what is left cannot be told from the motion: not tested, not unexplained
     val confounded = Identifiable.motionConfounded(e)
     val unexplained = (if (confounded) Nil else left) ++ rejected
-    val coarse = if (e.coarseBits == 0) Nil else {
-      val p = Map("effective_bits" -> (rec.adc.bits - e.coarseBits).toDouble, "format_bits" -> rec.adc.bits.toDouble, "step_lsb" -> (1 << e.coarseBits).toDouble)
-      val c = Cand("coarse_quantization", "both", e.spec, 0, 0, p, p.map { case (k, _) => k -> 0.0 }, "")
-      Seq(Finding(c.effect, c.channel, Describe.summary(c, cands.fMin, cands.fMax), c.params, c.unc, Double.NaN, e.rms, e.rms,
-        s"code histogram: the low ${e.coarseBits} bits never change on either channel"))
-    }
+    val coarse = CoarseQuantization.finding(e)
     val report = Report(file, "signals", baseRms, baseBic, baseParams, located, coarse ++ fin.map(_._1), unexplained, e.rms, e.bic,
       rec.length, (System.nanoTime() - t0) / 1e9, notes(e), Coverage.untested(e, cands.fMin, cands.fMax) ++
         (if (confounded) Identifiable.leftOver(left) else Nil))
     Result(report, e, before, fin)
   }
+
+  /** Why the record cannot support a candidate's parameters (its effect's physics), or None. */
+  private def unsupported(c: Cand, e: SignalEngine, cands: Candidates): Option[String] =
+    Effects(c.effect).flatMap(_.unsupported(c, e, cands.fMin, cands.fMax))
 
   /** Parameters of a finding from the final joint fit (linear terms) or the final spec (nonlinear). */
   private def refresh(f: Finding, e: SignalEngine): Finding = {
@@ -168,14 +155,9 @@ object SignalExplain {
       case Some((t, at)) =>
         val k = e.termCols(t).size
         val b = e.sol.beta.slice(at, at + k); val sd = (at until at + k).map(i => math.sqrt(math.max(0, e.sol.inv(i)(i)) * v)).toArray
-        val (p, u, _, _) = Describe.term(t, b, sd, e)
+        val (p, u, _, _) = t.effect.describe(t, b, sd, e)
         f.copy(params = p, unc = u.map { case (k, x) => k -> (if (x.isNaN) f.unc.getOrElse(k, x) else x) })
-      case None => f.effect match {
-        case "channel_skew" => f.copy(params = f.params + ("skew_s" -> e.spec.skewS))
-        case "bandwidth" => f.copy(params = f.params + ("cutoff_hz" -> e.spec.bw.getOrElse(f.channel, f.params("cutoff_hz"))))
-        case "jitter" => f.copy(params = f.params + ("jitter_s" -> math.sqrt(e.noise.jitter2)))
-        case _ => f
-      }
+      case None => Effects(f.effect).fold(f)(_.refresh(f, e))
     }
   }
   private def termMatches(t: Term, f: Finding): Boolean = t match {
