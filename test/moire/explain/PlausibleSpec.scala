@@ -10,11 +10,11 @@ class PlausibleSpec extends AnyFlatSpec with Matchers {
 
   "Interference" should "refuse a line under 10 cycles by more than its uncertainty, and only that" in {
     // 2 MS/s, 0.1 s: the oscilloscope capture of issue 12
-    effects.Interference.tooFewCycles(64.5, 0.01, 0.1).get should include("6.45 +- 0.001 cycles")
+    effects.Interference.tooFewCycles(64.5, 0.01, 0.1).get should include("6.45 +- 0.0010")
     effects.Interference.tooFewCycles(100.0, 0.01, 0.1) shouldBe None
     // 9.99 +- 0.01 cycles is not "fewer than 10" (issue 28: the hum of exactly 10 cycles)
     effects.Interference.tooFewCycles(99.9, 0.1, 0.1) shouldBe None
-    effects.Interference.tooFewCycles(99.0, 0.1, 0.1).get should include("9.9 +- 0.01 cycles")
+    effects.Interference.tooFewCycles(99.0, 0.1, 0.1).get should include("9.90 +- 0.010")
   }
 
   "explain" should "put a 4-cycle pickup in a short record under unexplained, not name it" in {

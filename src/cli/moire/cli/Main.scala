@@ -185,8 +185,10 @@ object Main {
               @arg(doc = "model JSON whose effects are part of the simulation (fitted, not reported)") model: Option[String] = None,
               @arg(doc = "no progress bar or text report") quiet: Flag = Flag(),
               @arg(doc = "emit-subdiv options of the board's subdivider, e.g. \"--counts 4096\" (default: from the metadata)") subdiv: Option[String] = None,
-              @arg(doc = "do not compare a recording's board outputs (position column) with the RTL") noRtl: Flag = Flag()): Unit =
-    moire.explain.ExplainCmd.explainArgs(files.value, jsonDir, plots, model, quiet.value, subdiv, noRtl.value)
+              @arg(doc = "do not compare a recording's board outputs (position column) with the RTL") noRtl: Flag = Flag(),
+              @arg(doc = "materiality floor in LSB: a finding changes the signal by at least this much (default 0.25)") minEffectLsb: Option[Double] = None,
+              @arg(doc = "materiality floor as a fraction of the noise rms (default 0.1)") minEffectNoise: Option[Double] = None): Unit =
+    moire.explain.ExplainCmd.explainArgs(files.value, jsonDir, plots, model, quiet.value, subdiv, noRtl.value, minEffectLsb, minEffectNoise)
 
   @main(doc = "Benchmark: simulate and explain one recording; print the time, samples per second and peak heap (also per million samples) of reading and of the whole explain.")
   def explainBench(@arg(doc = "samples in the recording (default 1000000)") samples: Int = 1000000,

@@ -23,12 +23,12 @@ final class Candidates(val engine: SignalEngine) {
     if (!s.ok) return None
     // without jitter or censoring only the sums of squares matter: no residual arrays
     val (nz, v) =
-      if (!spec.jitter && cens.censS == null && cens.censC == null) {
+      if (!spec.slopeNoise && cens.censS == null && cens.censC == null) {
         val a = LinearFit.rss(cols, s.beta, resS, sinCh = true); val b = LinearFit.rss(cols, s.beta, resC, sinCh = false)
         (Noise.white(a, b, n), (a + b) / (2.0 * n))
       } else {
         val rs = LinearFit.minus(resS, cols, s.beta, sinCh = true); val rc = LinearFit.minus(resC, cols, s.beta, sinCh = false)
-        (Noise.fit(rs, rc, if (spec.jitter) slopes() else null, cens), (sumSq(rs) + sumSq(rc)) / (2.0 * n))
+        (Noise.fit(rs, rc, noiseSlopes(spec), cens), (sumSq(rs) + sumSq(rc)) / (2.0 * n))
       }
     val b = s.beta.drop(6); val sd = (6 until s.beta.length).map(i => math.sqrt(math.max(0, s.inv(i)(i)) * v)).toArray
     val (p, u, where, ch) = t.effect.describe(t, b, sd, e)
@@ -112,14 +112,14 @@ final class Candidates(val engine: SignalEngine) {
   /** Full -2 ln L of a spec with modified fundamentals (current noise model), with the fitted default part. */
   def fullM2ll(sp: ModelSpec): Double = {
     // white noise, nothing censored: the streaming profile on every sample is the same fit, without arrays
-    if (!sp.jitter && cens.censS == null && cens.censC == null) return profile(sp, 1)
+    if (!sp.slopeNoise && cens.censS == null && cens.censC == null) return profile(sp, 1)
     val a1 = new Array[Double](n); val a2 = new Array[Double](n); val b1 = new Array[Double](n); val b2 = new Array[Double](n)
     fundamentals(sp, a1, a2, b1, b2)
     val cols = baseCols(a1, a2, b1, b2)
     val ts = Array.tabulate(n)(i => repS(i) - termS(i)); val tcc = Array.tabulate(n)(i => repC(i) - termC(i))
     val s = LinearFit.solve(cols, ts, tcc)
     LinearFit.addTo(ts, cols, s.beta, sinCh = true, -1.0); LinearFit.addTo(tcc, cols, s.beta, sinCh = false, -1.0) // now the residual
-    Noise.fit(ts, tcc, if (sp.jitter) slopes() else null, cens).m2ll
+    Noise.fit(ts, tcc, noiseSlopes(sp), cens).m2ll
   }
 
   private def stride: Int = math.max(1, n / 50000)
@@ -158,7 +158,7 @@ final class Candidates(val engine: SignalEngine) {
   }
 
   def jitter(): Option[Cand] = {
-    if (spec.jitter || fMax <= 0) return None
+    if (spec.slopeNoise || fMax <= 0) return None
     val (ds, dc) = slopes()
     val nz = Noise.fit(resS, resC, (ds, dc), cens)
     if (nz.jitter2 <= 0) return None
@@ -172,6 +172,23 @@ final class Candidates(val engine: SignalEngine) {
     val (p, u, where) = (Map("jitter_s" -> j, "white_noise_fs" -> white), Map("jitter_s" -> sdj, "white_noise_fs" -> 0.0),
       "noise against signal slope (speed and fringe phase)")
     Some(Cand(Jitter.name, "both", spec.copy(jitter = true), nz.m2ll, 1, p, u, where))
+  }
+
+  /** Phase noise of the motion: noise variance growing with the slope against the fringe phase (radians rms). */
+  def phaseNoise(): Option[Cand] = {
+    if (spec.slopeNoise) return None
+    val (ds, dc) = phaseSlopes()
+    val nz = Noise.fit(resS, resC, (ds, dc), cens)
+    if (nz.jitter2 <= 0) return None
+    var info = 0.0; var i = 0
+    while (i < n) {
+      val a = ds(i) * ds(i) / (nz.varS + nz.jitter2 * ds(i) * ds(i)); val b = dc(i) * dc(i) / (nz.varC + nz.jitter2 * dc(i) * dc(i))
+      info += 0.5 * (a * a + b * b); i += 1
+    }
+    val r = math.sqrt(nz.jitter2); val sd = (1 / math.sqrt(info)) / (2 * r)
+    val white = math.sqrt(0.5 * (nz.varS + nz.varC))
+    Some(Cand(PhaseNoise.name, "both", spec.copy(phaseNoise = true), nz.m2ll, 1, Map("phase_noise_rad" -> r, "white_noise_fs" -> white),
+      Map("phase_noise_rad" -> sd, "white_noise_fs" -> 0.0), "noise against the slope over the fringe phase, not growing with speed"))
   }
 
   /** Warm-up: the time constant by a log grid and golden section on every stride-th sample, then the full linear fit. */
@@ -255,7 +272,7 @@ final class Candidates(val engine: SignalEngine) {
     val sp = spec.copy(faults = spec.faults :+ f)
     val (ps, pc) = (predS, predC)
     val r = repair(sp, ps, pc)
-    val nz = Noise.fit(sub(r.s, ps), sub(r.c, pc), if (spec.jitter) slopes() else null, r)
+    val nz = Noise.fit(sub(r.s, ps), sub(r.c, pc), noiseSlopes(spec), r)
     val p = Map("bit" -> f.bit.toDouble) ++ (if (f.stuckAt >= 0) Map("stuck_at" -> f.stuckAt.toDouble) else Map("bridged_to" -> f.bridgedTo.toDouble))
     val (u, where) = (p.map { case (k, _) => k -> 0.0 }, s"code histogram: ${if (f.ch == 0) "sin" else "cos"} channel, bit ${f.bit}")
     Some(Cand(AdcBitFault.name, if (f.ch == 0) "sin" else "cos", sp, nz.m2ll, 1, p, u, where))
@@ -277,7 +294,7 @@ final class Candidates(val engine: SignalEngine) {
         val c = Clip(ch, if (useLo) lo else Double.NegativeInfinity, if (useHi) hi else Double.PositiveInfinity)
         val sp = spec.copy(clips = spec.clips :+ c)
         val r = repair(sp, ps, pc)
-        val nz = Noise.fit(sub(r.s, ps), sub(r.c, pc), if (spec.jitter) slopes() else null, r)
+        val nz = Noise.fit(sub(r.s, ps), sub(r.c, pc), noiseSlopes(spec), r)
         // clip levels are read off the codes: uncertain by half an LSB
         val pp = Seq("low_fs" -> c.lo, "high_fs" -> c.hi).filter(!_._2.isInfinite).toMap
         val (u, where) = (pp.map { case (k, _) => k -> 0.5 * lsb }, s"code histogram: ${if (ch == 0) "sin" else "cos"} channel pile-up at the extremes")

@@ -46,7 +46,7 @@ object ExplainCmd {
 
   /** Explains each file; writes `<stem>.json` into jsonDir and PNGs into plotDir. Returns the text reports. */
   def explain(files: Seq[String], jsonDir: Option[String], plotDir: Option[String], modelFile: Option[String], quiet: Boolean,
-              rtl: Option[Seq[String]] = Some(Nil)): Seq[Report] = {
+              rtl: Option[Seq[String]] = Some(Nil), materiality: Materiality = Materiality()): Seq[Report] = {
     if (files.isEmpty) throw new ExplainError("explain: name at least one recording file")
     val givenEffects = modelFile.map(f => PhysicsModel.effectsFromJson(PhysicsModel.jsonObject(readText(f), f), f, Nil)).getOrElse(Nil)
     val paths = files.map(f => os.Path(f, os.pwd))
@@ -58,7 +58,7 @@ object ExplainCmd {
     }
     // Every file gets its report or its one-line error; the command fails after all were tried.
     val results = paths.map { p =>
-      try Right(explainOne(p, givenEffects, jsonDir, plotDir, quiet, rtl))
+      try Right(explainOne(p, givenEffects, jsonDir, plotDir, quiet, rtl, materiality))
       catch { case e: moire.MoireError => if (paths.size > 1) System.err.println(s"moire: ${e.getMessage}"); Left(e) }
     }
     val failed = results.collect { case Left(e) => e }
@@ -70,7 +70,7 @@ object ExplainCmd {
   }
 
   private def explainOne(p: os.Path, givenEffects: Seq[EffectSpec], jsonDir: Option[String], plotDir: Option[String],
-                         quiet: Boolean, rtl: Option[Seq[String]]): Report = {
+                         quiet: Boolean, rtl: Option[Seq[String]], materiality: Materiality): Report = {
     val kind = kindOf(p)
     val stem = p.last.stripSuffix(".csv")
     val progress = if (quiet) Progress.none else Progress.bar(stem)
@@ -82,7 +82,7 @@ object ExplainCmd {
       } else {
         val rec = Recording.read(p)
         checkSignals(p, rec)
-        val r = SignalExplain.run(p.toString, rec, givenEffects, progress)
+        val r = SignalExplain.run(p.toString, rec, givenEffects, progress, materiality = materiality)
         progress.close()
         plotDir.foreach(d => Plots.signals(r, os.Path(d, os.pwd), stem))
         // Board outputs (a `position` column) against the RTL run on the recorded codes.
@@ -110,12 +110,14 @@ object ExplainCmd {
 
   /** Options may also follow the file names (mainargs puts everything after the first file into `rest`). */
   def explainArgs(rest: Seq[String], jsonDir: Option[String], plots: Option[String], model: Option[String], quiet: Boolean,
-                  subdiv: Option[String] = None, noRtl: Boolean = false): Unit = {
+                  subdiv: Option[String] = None, noRtl: Boolean = false, minEffectLsb: Option[Double] = None,
+                  minEffectNoise: Option[Double] = None): Unit = {
     if (rest.contains("--help") || rest.contains("-h")) { println(Usage); return }
     var j = jsonDir; var p = plots; var m = model; var q = quiet; val files = Seq.newBuilder[String]
-    var sd = subdiv; var nr = noRtl
+    var sd = subdiv; var nr = noRtl; var ml = minEffectLsb; var mn = minEffectNoise
     var i = 0
     def value(o: String) = { i += 1; rest.lift(i).getOrElse(throw new ExplainError(s"$o needs a value")) }
+    def number(o: String): Double = { val v = value(o); v.toDoubleOption.getOrElse(throw new ExplainError(s"$o needs a number, got '$v'")) }
     while (i < rest.length) {
       rest(i) match {
         case "--json-dir" => j = Some(value("--json-dir"))
@@ -124,12 +126,16 @@ object ExplainCmd {
         case "--quiet" => q = true
         case "--subdiv" => sd = Some(value("--subdiv"))
         case "--no-rtl" => nr = true
+        case "--min-effect-lsb" => ml = Some(number("--min-effect-lsb"))
+        case "--min-effect-noise" => mn = Some(number("--min-effect-noise"))
         case o if o.startsWith("--") => throw new ExplainError(s"Unknown argument: $o (see --help)")
         case f => files += f
       }
       i += 1
     }
-    explain(files.result(), j, p, m, q, if (nr) None else Some(sd.toSeq.flatMap(_.trim.split("\\s+")).filter(_.nonEmpty)))
+    val floor = try Materiality(ml.getOrElse(Materiality.MinLsb), mn.getOrElse(Materiality.MinNoise))
+      catch { case e: IllegalArgumentException => throw new ExplainError(e.getMessage.stripPrefix("requirement failed: ")) }
+    explain(files.result(), j, p, m, q, if (nr) None else Some(sd.toSeq.flatMap(_.trim.split("\\s+")).filter(_.nonEmpty)), floor)
   }
 
   val Usage: String =
@@ -144,6 +150,8 @@ object ExplainCmd {
       |                         adc_format, counts_per_period); a recording with a position column is replayed through this
       |                         RTL (Verilator) and the board's outputs are compared with it, sample by sample
       |    --no-rtl             do not compare board outputs with the RTL
+      |    --min-effect-lsb X   materiality floor: a finding changes the signal by at least X LSB (default 0.25) ...
+      |    --min-effect-noise F ... and F times the noise rms (default 0.1); smaller but significant: `negligible`
       |  Effects (the catalogue; docs/explain.md says what each is):
       |""".stripMargin + effects.Effects.help
 

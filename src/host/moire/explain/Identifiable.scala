@@ -25,6 +25,9 @@ object Identifiable {
   def why(c: Cand, e: SignalEngine, fMin: Double, fMax: Double): Option[String] =
     if (Confounded(c.effect) && motionConfounded(e)) Some(untested(e))
     else if (c.effect == effects.Jitter.name) referenceNoise(e, fMin, fMax)
+    // the reference's own noise (its quantization) moves the modelled phase: that is phase noise, whatever the speeds
+    else if (c.effect == effects.PhaseNoise.name && e.reference.isDefined)
+      Some(s"${c.effect}: not identifiable from the reference's own noise, which moves the modelled fringe phase the same way")
     else None
 
   /** Speed range (fastest / slowest fringe frequency) needed to tell clock jitter from the reference's own noise. */

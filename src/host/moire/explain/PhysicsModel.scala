@@ -75,13 +75,15 @@ final case class PhysicsModel(
       if (angleErr.isEmpty) q
       else { val l = linesPerRev.get; val th = 2 * math.Pi * q / l; q + l * angleErr.map { case (m, a, p) => a * math.sin(m * th + math.toRadians(p)) }.sum }
     }
-    val plain = skew == 0 && jitter == 0 && bw.isEmpty && drift.isEmpty && am.isEmpty && xt.isEmpty && inter.isEmpty && ct.isEmpty && warm.isEmpty && angleErr.isEmpty
+    val phaseNoise = all(fx.PhaseNoise).map(_.p("phase_noise_rad", 0.0)).headOption.getOrElse(0.0) / (2 * math.Pi)
+    val rndP = new Random(p.seed * 17 + 5); var dph = 0.0 // this sample's phase noise (periods), the same on both channels
+    val plain = phaseNoise == 0 && skew == 0 && jitter == 0 && bw.isEmpty && drift.isEmpty && am.isEmpty && xt.isEmpty && inter.isEmpty && ct.isEmpty && warm.isEmpty && angleErr.isEmpty
     val eps = 1e-6
 
     /** One channel's value: fringe through the low-pass and the slow effects. */
     def channel(isSin: Boolean, t: Double): Double = {
       val f = motion.frequency(t)
-      var ph = periods(t); var g = 1.0
+      var ph = periods(t) + dph; var g = 1.0
       (if (isSin) bwS else bwC).foreach { fc => val u = f / fc; g /= math.sqrt(1 + u * u); ph -= math.atan(u) / (2 * math.Pi) }
       val o = if (isSin) p.offsetSin else p.offsetCos
       def raw(q: Double) = { val a = SignalSim.analog(p, q); (if (isSin) a._1 else a._2) - o }
@@ -121,6 +123,7 @@ final case class PhysicsModel(
       if (plain) { val a = SignalSim.analog(p, truth(i)); s = a._1; c = a._2 }
       else {
         val tj = t + (if (jitter > 0) jitter * rndJ.nextGaussian() else 0.0)
+        dph = if (phaseNoise > 0) phaseNoise * rndP.nextGaussian() else 0.0
         s = channel(isSin = true, tj); c = channel(isSin = false, tj + skew)
       }
       s += p.noiseRms * rnd.nextGaussian(); c += p.noiseRms * rnd.nextGaussian()

@@ -165,6 +165,8 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
     }
     range
   }
+  /** Fringe periods travelled over the record (both directions counted). */
+  def travelPeriods: Double = { var s = 0.0; var i = 0; while (i < n) { s += math.abs(freq(i)); i += 1 }; s / fs }
   def fMin: Double = speedRange._1
   def fMax: Double = speedRange._2
 
@@ -325,7 +327,7 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
       predictionSlope(cols, sol.beta.take(6))
       base = sol.beta.take(6)
       it += 1
-      noise = Noise.fit(resS, resC, if (spec.jitter) slopes() else null, cens)
+      noise = Noise.fit(resS, resC, noiseSlopes(spec), cens)
       if (SignalEngine.debug) System.err.println(f"refit $it: rms $rms%.4g bic $bic%.8g")
     }
   }
@@ -395,6 +397,11 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
   }
 
 
+  /** The slopes of the spec's slope-dependent noise (jitter: against time; phase noise: against the fringe phase), or null. */
+  def noiseSlopes(sp: ModelSpec): (Array[Double], Array[Double]) =
+    if (sp.jitter) slopes() else if (sp.phaseNoise) phaseSlopes() else null
+  /** Slope of each channel against the fringe phase (full scale per radian), for the phase-noise model. */
+  def phaseSlopes(): (Array[Double], Array[Double]) = (Array.tabulate(n)(i => vs(i)), Array.tabulate(n)(i => vc(i)))
   /** Slope of each channel against time (full scale per second), for the jitter noise model. */
   def slopes(): (Array[Double], Array[Double]) =
     (Array.tabulate(n)(i => vs(i) * 2 * math.Pi * freq(i)), Array.tabulate(n)(i => vc(i) * 2 * math.Pi * freq(i)))

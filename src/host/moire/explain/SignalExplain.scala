@@ -6,10 +6,12 @@ import moire.recording.{Recording, Reference}
 
 /** One accepted effect, as reported. `before`/`after` are the residuals around its acceptance (for plots). */
 final case class Finding(effect: String, channel: String, summary: String, params: Map[String, Double], unc: Map[String, Double],
-                         deltaBic: Double, rmsBefore: Double, rmsAfter: Double, where: String) {
+                         deltaBic: Double, rmsBefore: Double, rmsAfter: Double, where: String, sizeLsb: Double = Double.NaN,
+                         lookAlikes: Seq[String] = Nil) {
   def json: ujson.Obj = ujson.Obj("effect" -> effect, "channel" -> channel, "summary" -> summary,
     "params" -> Report.nums(params), "uncertainty" -> Report.nums(unc), "delta_bic" -> Report.num(deltaBic),
-    "rms_before" -> Report.num(rmsBefore), "rms_after" -> Report.num(rmsAfter), "where" -> where)
+    "rms_before" -> Report.num(rmsBefore), "rms_after" -> Report.num(rmsAfter), "where" -> where,
+    "size_lsb" -> Report.num(sizeLsb), "look_alikes" -> ujson.Arr(lookAlikes.map(ujson.Str(_)): _*))
 }
 
 /** Residuals for the plots: every `stride`-th sample (at most `Snapshot.MaxPoints`), and the first
@@ -51,7 +53,7 @@ object SignalExplain {
     model.foldLeft(ModelSpec())((sp, e) => Effects(e.effect).fold(sp)(_.backward(sp, e)))
 
   def run(file: String, rec: Recording, model: Seq[EffectSpec], progress: Progress, maxFindings: Int = 8,
-          holdBytes: Long = Runtime.getRuntime.maxMemory / 8): Result = {
+          holdBytes: Long = Runtime.getRuntime.maxMemory / 8, materiality: Materiality = Materiality()): Result = {
     val t0 = System.nanoTime()
     val timing = sys.props.contains("moire.timing")
     var tl = t0
@@ -65,6 +67,8 @@ object SignalExplain {
     val before = Snapshot.of("default model", e.resS, e.resC)
     lap("default fit")
     val located = Locate.all(e)
+    var current = located // the located departures of the current model
+    val negligible = Seq.newBuilder[Negligible]
     lap("locate")
     val steps = Seq.newBuilder[(Finding, Snapshot, Snapshot)]
     var done = false; var round = 0
@@ -107,7 +111,7 @@ object SignalExplain {
           case None =>
             tries += 1
             val snapB = Snapshot.of(s"before ${c.effect}", e.resS, e.resC)
-            val rmsB = e.rms
+            val rmsB = e.rms; val predBS = e.predS; val predBC = e.predC
             val prev = e.spec
             e.spec = c.spec; e.converge(); settle(e)
             val c1 = demote(e, c)
@@ -115,13 +119,21 @@ object SignalExplain {
             // no finding when the joint refit does not lower the criterion, or the effect does not replicate
             val why = if (!(bic0 - e.bic > 0)) Some("") else Replicate.why(e, prev)
             lap("replicate")
-            why match {
+            // materiality: the change it makes to the signal, against the floor
+            val fx = Effects(c1.effect)
+            lazy val size = fx.map(_.size(c1, e)).filter(!_.isNaN)
+              .getOrElse(Materiality.size(predBS, predBC, e.predS, e.predC, math.max(1, e.n / 200000)))
+            lazy val floor = materiality.floor(e.lsb, math.sqrt(0.5 * (e.noise.varS + e.noise.varC)))
+            lazy val after = Locate.all(e)
+            why.orElse(if (size >= floor) None else Some("negligible")).orElse(claimed(fx.map(_.claims).getOrElse(Nil), current, after)) match {
               case Some(w) =>
-                if (w.nonEmpty) reject(c, w)
+                if (w == "negligible") negligible += Negligible(c1.effect, c1.channel, size / e.lsb, floor / e.lsb, bic0 - e.bic, c1.params)
+                else if (w.nonEmpty) reject(c, w)
                 e.spec = prev; e.converge(); settle(e)
               case None =>
                 val snapA = Snapshot.of(s"after ${c.effect}", e.resS, e.resC)
-                steps += ((Finding(c1.effect, c1.channel, "", c1.params, c1.unc, bic0 - e.bic, rmsB, e.rms, c1.where), snapB, snapA))
+                steps += ((Finding(c1.effect, c1.channel, "", c1.params, c1.unc, bic0 - e.bic, rmsB, e.rms, c1.where, size / e.lsb), snapB, snapA))
+                current = after
                 round += 1; accepted = true
             }
         }
@@ -131,17 +143,41 @@ object SignalExplain {
     val cands = new Candidates(e)
     val fin = steps.result().map { case (f, b, a) =>
       val g = refresh(f, e)
-      (g.copy(summary = Effects(g.effect).fold(g.effect)(_.summary(g.params, g.channel, cands.fMin, cands.fMax))), b, a)
+      val fx = Effects(g.effect)
+      (g.copy(summary = fx.fold(g.effect)(_.summary(g.params, g.channel, cands.fMin, cands.fMax)),
+        lookAlikes = fx.toSeq.flatMap(_.lookAlikes(g, e))), b, a)
     }
-    val left = Locate.all(e).filter(_.significant)
+    // negligible structure (significant, below the floor) stays in the residual: its located departure is listed there
+    val small = negligible.result().groupBy(x => (x.effect, x.channel)).values.map(_.last).toSeq
+    val smallClaims = small.flatMap(x => Effects(x.effect).toSeq.flatMap(_.claims))
+    val left = Locate.all(e).filter(l => l.significant && !smallClaims.exists(l.where.startsWith))
     // with a free motion that bends within a period, what is left cannot be told from the motion: not tested, not unexplained
     val confounded = Identifiable.motionConfounded(e)
-    val unexplained = (if (confounded) Nil else left) ++ rejected
+    // adequacy: where the model does not follow the signal; over the whole record, nothing fitted on it is a finding
+    val misfit = Adequacy.misfit(e); val ratio = Adequacy.ratio(e)
+    val follows = !(ratio > Adequacy.Margin)
+    val withdrawn = if (follows) Nil else fin.map { case (f, _, _) =>
+      Located(s"${f.effect} (${f.channel}): ${f.where}", f"fitted while the default model does not follow the signal (residual rms " +
+        f"$ratio%.1f x the noise floor from neighbouring samples): not assessed", f.params, significant = true)
+    }
+    val unexplained = (if (confounded || !follows) Nil else left) ++ rejected ++ withdrawn
     val coarse = CoarseQuantization.finding(e)
-    val report = Report(file, "signals", baseRms, baseBic, baseParams, located, coarse ++ fin.map(_._1), unexplained, e.rms, e.bic,
+    val shown = if (follows) fin else Nil
+    val report = Report(file, "signals", baseRms, baseBic, baseParams, located, coarse ++ shown.map(_._1), unexplained, e.rms, e.bic,
       rec.length, (System.nanoTime() - t0) / 1e9, notes(e), Coverage.untested(e, cands.fMin, cands.fMax) ++
-        (if (confounded) Identifiable.leftOver(left) else Nil))
-    Result(report, e, before, fin)
+        (if (confounded) Identifiable.leftOver(left) else Nil), small, misfit)
+    Result(report, e, before, shown)
+  }
+
+  /** None when the located departures an effect claims (their chi-square or peak-to-mean, summed) fell from `before`
+    * to `after`, or when it claims none that was measured; else why it is not a finding.
+    */
+  private def claimed(claims: Seq[String], before: Seq[Located], after: Seq[Located]): Option[String] = {
+    def stat(ls: Seq[Located]) = ls.filter(l => claims.exists(l.where.startsWith))
+      .flatMap(l => l.params.get("chi2_sd").orElse(l.params.get("peak_to_mean"))).filter(!_.isNaN)
+    val b = stat(before); val a = stat(after)
+    if (b.isEmpty || a.size != b.size || a.sum < b.sum) None
+    else Some(f"it does not lower the located departure it claims (${claims.mkString(", ")}: ${b.sum}%.1f before, ${a.sum}%.1f after)")
   }
 
   /** Why the record cannot support a candidate's parameters (its effect's physics), or None. */
@@ -219,5 +255,5 @@ object SignalExplain {
   def baselineParams(e: SignalEngine): Map[String, Double] = Map(
     "offset_sin_fs" -> e.base(0), "offset_cos_fs" -> e.base(3), "amplitude_sin_fs" -> e.ampS, "amplitude_cos_fs" -> e.ampC,
     "phase_error_deg" -> e.phaseErrorDeg, "noise_sin_fs" -> math.sqrt(e.noise.varS), "noise_cos_fs" -> math.sqrt(e.noise.varC),
-    "typical_fringe_hz" -> e.typicalHz, "trajectory_segments" -> e.traj.nseg.toDouble) ++ RefReport.params(e)
+    "typical_fringe_hz" -> e.typicalHz, "noise_floor_fs" -> Adequacy.floor(e), "trajectory_segments" -> e.traj.nseg.toDouble) ++ RefReport.params(e)
 }

@@ -41,8 +41,14 @@ final case class ModelSpec(
   terms: Vector[Term] = Vector.empty,
   faults: Vector[Fault] = Vector.empty,
   clips: Vector[Clip] = Vector.empty,
-  jitter: Boolean = false
+  jitter: Boolean = false,
+  /** Phase noise of the motion (white per sample, radians of fringe phase): noise in proportion to the slope against
+    * the fringe phase, not growing with speed as jitter's does.
+    */
+  phaseNoise: Boolean = false
 ) {
+  /** The noise model has a slope-dependent part (jitter or phase noise). */
+  def slopeNoise: Boolean = jitter || phaseNoise
   /** Parameters beyond the default part. */
-  def extraParams: Int = (if (hasSkew) 1 else 0) + bw.size + terms.map(_.params).sum + faults.size + clips.map(_.params).sum + (if (jitter) 1 else 0)
+  def extraParams: Int = (if (hasSkew) 1 else 0) + bw.size + terms.map(_.params).sum + faults.size + clips.map(_.params).sum + (if (jitter) 1 else 0) + (if (phaseNoise) 1 else 0)
 }

@@ -8,6 +8,7 @@ object AdcBitFault extends Effect {
   val params = Seq(Param("bit", "", "0..bits-1"), Param("stuck_at", "", "0 or 1"), Param("bridged_to", "", "0..bits-1"))
   val what = "data line stuck at 0/1, or wired-AND with another bit (channel=sin|cos)"
   val shows = "code histogram"
+  override val claims: Seq[String] = Seq("code histogram")
   override def example: Example = Example(EffectSpec(name, Map("bit" -> 3, "stuck_at" -> 1), "cos"))
   val domain: Domain = Domain.Codes
   override val plot: PlotKind = PlotKind.Level
@@ -21,7 +22,6 @@ object AdcBitFault extends Effect {
     sp.copy(faults = sp.faults :+ Fault(if (e.channel == "cos") 1 else 0, e.p("bit", 0).toInt,
       if (e.p("stuck_at").isNaN) -1 else e.p("stuck_at").toInt, if (e.p("bridged_to").isNaN) -1 else e.p("bridged_to").toInt))
   override def searches(c: Candidates): Seq[() => Seq[Cand]] = Seq(() => c.faults())
-  override def size(c: Cand, e: SignalEngine): Double = math.pow(2, c.params.getOrElse("bit", 0.0)) * e.lsb / 2
 
   def summary(p: Map[String, Double], channel: String, fMin: Double, fMax: Double): String =
     if (p.contains("stuck_at")) f"$channel ADC data line ${Effect.g(p, "bit").toInt} stuck at ${Effect.g(p, "stuck_at").toInt}"

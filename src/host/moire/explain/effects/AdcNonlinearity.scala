@@ -8,6 +8,7 @@ object AdcNonlinearity extends Effect {
   val params = Seq(Param("inl2_lsb", "LSB", "any"), Param("inl3_lsb", "LSB", "any"))
   val what = "INL = inl2 T2(v) + inl3 T3(v) LSB, Chebyshev bow and S shape over full scale (channel=sin|cos|both)"
   val shows = "against signal level"
+  override val claims: Seq[String] = Seq("against fringe phase")
   override def example: Example = Example(EffectSpec(name, Map("inl2_lsb" -> 2.0, "inl3_lsb" -> 1.5)))
   val domain: Domain = Domain.Periodic
   override val plot: PlotKind = PlotKind.Level
@@ -22,7 +23,6 @@ object AdcNonlinearity extends Effect {
   }
   private def amp(c: Cand, e: SignalEngine) = (math.abs(c.params.getOrElse("inl2_lsb", 0.0)) + math.abs(c.params.getOrElse("inl3_lsb", 0.0))) * e.lsb
   override def valueAmplitude(c: Cand, e: SignalEngine): Option[Double] = Some(amp(c, e))
-  override def size(c: Cand, e: SignalEngine): Double = amp(c, e) / math.sqrt(2)
   /** One ADC's bow or S shape at constant amplitude is a 2nd or 3rd harmonic on that channel. */
   override def yieldsTo(c: Cand, other: Cand): Boolean = c.channel != "both" && other.effect == Harmonic.name && other.channel == c.channel
   override def lookAlikes(f: Finding, e: SignalEngine): Seq[String] =

@@ -10,6 +10,7 @@ object AmplitudeModulation extends Effect {
   val shows = "against mechanical angle"
   override def example: Example = Example(EffectSpec(name, Map("depth" -> 0.005)), "constant:100000", Some(100.0))
   val domain: Domain = Domain.Periodic
+  override def cycles(e: SignalEngine): Double = e.periodsPerTurn.orElse(e.rec.linesPerRev).fold(0.0)(e.travelPeriods / _)
   override val plot: PlotKind = PlotKind.MechanicalAngle
 
   override def validate(e: EffectSpec, m: PhysicsModel): Unit =
@@ -21,7 +22,6 @@ object AmplitudeModulation extends Effect {
     val (a, sa) = Effect.amp(b(0), b(1), sd(0), sd(1)); val (ph, sph) = Effect.deg(b(0), -b(1), a, sa)
     (Map("depth" -> a, "phase_deg" -> ph), Map("depth" -> sa, "phase_deg" -> sph), "against mechanical angle: amplitude", "both")
   }
-  override def size(c: Cand, e: SignalEngine): Double = c.params.getOrElse("depth", 0.0) * math.max(e.ampS, e.ampC) / 2
 
   def summary(p: Map[String, Double], channel: String, fMin: Double, fMax: Double): String =
     f"amplitude follows the mechanical angle: ${100 * Effect.g(p, "depth")}%.2f %% modulation once per revolution"

@@ -5,6 +5,7 @@ import moire.explain._
 /** The read angle's error as harmonic m of the mechanical angle (needs a reference naming turns to be fitted). */
 abstract class AngleHarmonics(order: Int) extends Effect {
   val domain: Domain = Domain.Periodic
+  override def cycles(e: SignalEngine): Double = e.periodsPerTurn.fold(0.0)(e.travelPeriods / _)
   override def validate(e: EffectSpec, m: PhysicsModel): Unit =
     if (m.linesPerRev.isEmpty) throw new ExplainError(s"$name needs lines_per_rev (--lines-per-rev)")
   override def searches(c: Candidates): Seq[() => Seq[Cand]] =
@@ -18,6 +19,4 @@ abstract class AngleHarmonics(order: Int) extends Effect {
     own(common, cu, a, sa, p)
   }
   def own(common: Map[String, Double], cu: Map[String, Double], a: Double, sa: Double, periodsPerTurn: Double): Effect.Described
-  override def size(c: Cand, e: SignalEngine): Double =
-    2 * math.Pi * c.params.getOrElse("phase_error_deg", 0.0) / 360 * math.max(e.ampS, e.ampC) / 2
 }

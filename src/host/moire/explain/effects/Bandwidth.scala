@@ -8,6 +8,7 @@ object Bandwidth extends Effect {
   val params = Seq(Param("cutoff_hz", "Hz", "> 0"))
   val what = "first-order read-head amplifier low-pass (channel=sin|cos|both)"
   val shows = "amplitude (and lag) against speed"
+  override val claims: Seq[String] = Seq("against speed")
   override def example: Example = Example(EffectSpec(name, Map("cutoff_hz" -> 400e3)))
   val domain: Domain = Domain.Speed
   override val plot: PlotKind = PlotKind.Speed(phaseOnly = false)
@@ -18,10 +19,6 @@ object Bandwidth extends Effect {
   override def searches(c: Candidates): Seq[() => Seq[Cand]] = Seq("both", "sin", "cos").map(ch => () => c.bandwidth(ch).toSeq)
   override def refresh(f: Finding, e: SignalEngine): Finding =
     f.copy(params = f.params + ("cutoff_hz" -> e.spec.bw.getOrElse(f.channel, f.params("cutoff_hz"))))
-  override def size(c: Cand, e: SignalEngine): Double = {
-    val u = e.fMax / c.params.getOrElse("cutoff_hz", Double.PositiveInfinity)
-    (1 - 1 / math.sqrt(1 + u * u) + math.atan(u)) * math.max(e.ampS, e.ampC) / math.sqrt(2)
-  }
 
   def summary(p: Map[String, Double], channel: String, fMin: Double, fMax: Double): String = {
     val fc = Effect.g(p, "cutoff_hz"); val u = fMax / fc

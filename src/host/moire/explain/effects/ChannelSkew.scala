@@ -8,6 +8,7 @@ object ChannelSkew extends Effect {
   val params = Seq(Param("skew_s", "s", "|skew| < 1 / (4 pi f_max)"))
   val what = "cos channel sampled skew_s seconds after sin"
   val shows = "phase error growing with speed"
+  override val claims: Seq[String] = Seq("against speed")
   override def example: Example = Example(EffectSpec(name, Map("skew_s" -> 30e-9)))
   val domain: Domain = Domain.Speed
   override val plot: PlotKind = PlotKind.Speed(phaseOnly = true)
@@ -15,7 +16,6 @@ object ChannelSkew extends Effect {
   override def backward(sp: ModelSpec, e: EffectSpec): ModelSpec = sp.copy(hasSkew = true, skewS = e.p("skew_s", 0.0))
   override def searches(c: Candidates): Seq[() => Seq[Cand]] = Seq(() => c.skew().toSeq)
   override def refresh(f: Finding, e: SignalEngine): Finding = f.copy(params = f.params + ("skew_s" -> e.spec.skewS))
-  override def size(c: Cand, e: SignalEngine): Double = 2 * math.Pi * e.fMax * math.abs(c.params.getOrElse("skew_s", 0.0)) * e.ampC / math.sqrt(2)
 
   def summary(p: Map[String, Double], channel: String, fMin: Double, fMax: Double): String = {
     val tau = Effect.g(p, "skew_s"); val who = if (tau >= 0) "cos channel sampled %.1f ns after sin" else "cos channel sampled %.1f ns before sin"

@@ -20,10 +20,6 @@ object ContrastAlongTravel extends Effect {
     val span = { val x = e.travel; x.max - x.min }
     (names.zip(b).toMap + ("travel_periods" -> span), names.zip(sd).toMap + ("travel_periods" -> 0.0), "against position: offset and amplitude", "both")
   }
-  override def size(c: Cand, e: SignalEngine): Double = {
-    val l = c.params.getOrElse("travel_periods", 0.0) / 2; def g(k: String) = math.abs(c.params.getOrElse(k, 0.0))
-    math.max(math.max(g("offset_sin_per_period"), g("offset_cos_per_period")), math.max(e.ampS, e.ampC) * math.max(g("gain_sin_per_period"), g("gain_cos_per_period"))) * l / math.sqrt(3)
-  }
   override def lookAlikes(f: Finding, e: SignalEngine): Seq[String] = TimeOrTravel.lookAlikes(e, Warmup.name + " or " + Drift.name)
 
   def summary(p: Map[String, Double], channel: String, fMin: Double, fMax: Double): String = {

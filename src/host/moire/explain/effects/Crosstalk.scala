@@ -8,6 +8,7 @@ object Crosstalk extends Effect {
   val params = Seq(Param("sin_from_cos_tau_s", "s", "any"), Param("cos_from_sin_tau_s", "s", "any"))
   val what = "capacitive coupling: channel += tau * d(other channel)/dt"
   val shows = "amplitude against speed"
+  override val claims: Seq[String] = Seq("against speed")
   override def example: Example = Example(EffectSpec(name, Map("sin_from_cos_tau_s" -> 2e-9)))
   val domain: Domain = Domain.Speed
   override val plot: PlotKind = PlotKind.Speed(phaseOnly = false)
@@ -17,10 +18,6 @@ object Crosstalk extends Effect {
   override def describe(t: Term, b: Array[Double], sd: Array[Double], e: SignalEngine): Effect.Described =
     (Map("sin_from_cos_tau_s" -> b(0), "cos_from_sin_tau_s" -> b(1)), Map("sin_from_cos_tau_s" -> sd(0), "cos_from_sin_tau_s" -> sd(1)),
       "against speed: amplitude of each channel", "both")
-  override def size(c: Cand, e: SignalEngine): Double = {
-    val t = math.max(math.abs(c.params.getOrElse("sin_from_cos_tau_s", 0.0)), math.abs(c.params.getOrElse("cos_from_sin_tau_s", 0.0)))
-    2 * math.Pi * e.fMax * t * math.max(e.ampS, e.ampC) / math.sqrt(2)
-  }
 
   def summary(p: Map[String, Double], channel: String, fMin: Double, fMax: Double): String =
     f"capacitive crosstalk: sin gets ${Effect.g(p, "sin_from_cos_tau_s") * 1e9}%.2f ns x d(cos)/dt, cos gets ${Effect.g(p, "cos_from_sin_tau_s") * 1e9}%.2f ns x d(sin)/dt"

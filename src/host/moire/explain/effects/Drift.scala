@@ -9,6 +9,7 @@ object Drift extends Effect {
     Param("gain_sin_per_s", "1/s", "any"), Param("gain_cos_per_s", "1/s", "any"))
   val what = "offsets (full scale) and gains (relative) changing linearly with time"
   val shows = "against time"
+  override val claims: Seq[String] = Seq("against time")
   override def example: Example = Example(EffectSpec(name, Map("offset_sin_per_s" -> 0.2, "gain_cos_per_s" -> 0.5)), "oscillate:400:300")
   val domain: Domain = Domain.Time
   override val plot: PlotKind = PlotKind.Time
@@ -18,10 +19,6 @@ object Drift extends Effect {
   override def describe(t: Term, b: Array[Double], sd: Array[Double], e: SignalEngine): Effect.Described = {
     val names = params.map(_.name)
     (names.zip(b).toMap, names.zip(sd).toMap, "against time: offset and amplitude", "both")
-  }
-  override def size(c: Cand, e: SignalEngine): Double = {
-    val half = e.n / e.fs / 2; def g(k: String) = math.abs(c.params.getOrElse(k, 0.0))
-    math.max(math.max(g("offset_sin_per_s"), g("offset_cos_per_s")), math.max(e.ampS, e.ampC) * math.max(g("gain_sin_per_s"), g("gain_cos_per_s"))) * half / math.sqrt(3)
   }
   override def lookAlikes(f: Finding, e: SignalEngine): Seq[String] = TimeOrTravel.lookAlikes(e, ContrastAlongTravel.name)
 

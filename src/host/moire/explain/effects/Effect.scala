@@ -49,9 +49,13 @@ trait Effect {
   def what: String
   /** Where it shows in a residual (the located departure it must reduce). */
   def shows: String
+  /** The located departures (`Locate`, by the start of their `where`) it must reduce; empty when none measures it. */
+  def claims: Seq[String] = Nil
   /** Calibration data (moire-calibration v1) rather than signals. */
   def calibration: Boolean = false
   def domain: Domain
+  /** Cycles of its domain the record covers (periodic effects: fringe periods travelled; mechanical ones: turns). */
+  def cycles(e: SignalEngine): Double = e.travelPeriods
   def plot: PlotKind = PlotKind.FringePhase
   /** A free trajectory over a few fringe periods can share its shape (not identifiable without a reference). */
   def confoundedWithMotion: Boolean = true
@@ -78,7 +82,9 @@ trait Effect {
   def unsupported(c: Cand, e: SignalEngine, fMin: Double, fMax: Double): Option[String] = None
   /** Its largest size as a function of the signal value (full scale), when it is one (quantization can make those). */
   def valueAmplitude(c: Cand, e: SignalEngine): Option[Double] = None
-  /** Its size in the signal: rms change of the prediction (full scale), from the parameters. NaN when not known. */
+  /** Its size in the signal (full scale) when it is not a change of the prediction (jitter: added noise); NaN: the
+    * 99th percentile of the change of the prediction it makes (`Materiality.size`).
+    */
   def size(c: Cand, e: SignalEngine): Double = Double.NaN
   /** Alternatives that can predict the same signal in this record, with the measurement that separates them. */
   def lookAlikes(f: Finding, e: SignalEngine): Seq[String] = Nil

@@ -8,6 +8,7 @@ object Harmonic extends Effect {
   val params = Seq(Param("order", "", "2..7"), Param("amplitude_rel", "of the fundamental", "0..0.2"), Param("phase_deg", "degree", "-180..180"))
   val what = "order k of the fringe on one channel or both (channel=sin|cos|both)"
   val shows = "against fringe phase"
+  override val claims: Seq[String] = Seq("against fringe phase")
   override def example: Example = Example(EffectSpec(name, Map("order" -> 3, "amplitude_rel" -> 2e-3), "sin"))
   val domain: Domain = Domain.Periodic
   val Orders: Range = 2 to 7
@@ -34,7 +35,6 @@ object Harmonic extends Effect {
   private def rel(p: Map[String, Double]): Double =
     Seq("amplitude_rel", "amplitude_sin_rel", "amplitude_cos_rel").flatMap(p.get).filter(!_.isNaN).maxOption.getOrElse(0.0)
   override def valueAmplitude(c: Cand, e: SignalEngine): Option[Double] = Some(rel(c.params) * math.max(e.ampS, e.ampC))
-  override def size(c: Cand, e: SignalEngine): Double = rel(c.params) * math.max(e.ampS, e.ampC) / math.sqrt(2)
 
   override def lookAlikes(f: Finding, e: SignalEngine): Seq[String] = {
     val k = f.params.getOrElse("order", 0.0).toInt

@@ -8,6 +8,7 @@ object Interference extends Effect {
   val params = Seq(Param("frequency_hz", "Hz", "> 0"), Param("amplitude_fs", "full scale", ">= 0"), Param("phase_deg", "degree", "-180..180"))
   val what = "a fixed-frequency pickup (mains, switching supply) on both channels"
   val shows = "a spectral line"
+  override val claims: Seq[String] = Seq("spectrum")
   override def example: Example = Example(EffectSpec(name, Map("frequency_hz" -> 12345.0, "amplitude_fs" -> 0.0015)))
   val domain: Domain = Domain.Time
   override val plot: PlotKind = PlotKind.Spectrum
@@ -43,7 +44,6 @@ object Interference extends Effect {
     if (cycles + Sd * sd >= MinCycles) None
     else Some(f"a line at $hz%.4g Hz completes ${cycles}%.3g +- ${sd}%.2g cycles in the ${seconds}%.3g s record (at least ${MinCycles}%.0f needed)")
   }
-  override def size(c: Cand, e: SignalEngine): Double = c.params.getOrElse("amplitude_fs", 0.0) / math.sqrt(2)
 
   def summary(p: Map[String, Double], channel: String, fMin: Double, fMax: Double): String =
     f"pickup at ${Effect.g(p, "frequency_hz")}%.1f Hz, ${Effect.g(p, "amplitude_fs")}%.3g full scale amplitude"

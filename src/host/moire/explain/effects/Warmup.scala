@@ -9,6 +9,7 @@ object Warmup extends Effect {
     Param("gain_sin_step_rel", "relative", "> -1"), Param("gain_cos_step_rel", "relative", "> -1"), Param("time_constant_s", "s", "> 0"))
   val what = "offsets and gains settling by step * (1 - exp(-t / time_constant_s)) after switch-on"
   val shows = "against time"
+  override val claims: Seq[String] = Seq("against time")
   override def example: Example = Example(EffectSpec(name, Map("offset_sin_step_fs" -> 0.005, "gain_cos_step_rel" -> 0.01, "time_constant_s" -> 0.002)), "oscillate:400:300")
   val domain: Domain = Domain.Time
   override val plot: PlotKind = PlotKind.Time
@@ -27,10 +28,6 @@ object Warmup extends Effect {
         Map("offset_sin_step_fs" -> sd(0), "offset_cos_step_fs" -> sd(1), "gain_sin_step_rel" -> sd(2), "gain_cos_step_rel" -> sd(3),
           "time_constant_s" -> Double.NaN), f"against time: offset and amplitude settling with a time constant of ${tau}%.3g s", "both")
     case _ => super.describe(t, b, sd, e)
-  }
-  override def size(c: Cand, e: SignalEngine): Double = {
-    def g(k: String) = math.abs(c.params.getOrElse(k, 0.0))
-    math.max(math.max(g("offset_sin_step_fs"), g("offset_cos_step_fs")), math.max(e.ampS, e.ampC) * math.max(g("gain_sin_step_rel"), g("gain_cos_step_rel")))
   }
   override def lookAlikes(f: Finding, e: SignalEngine): Seq[String] = TimeOrTravel.lookAlikes(e, ContrastAlongTravel.name)
 
