@@ -24,6 +24,7 @@ final case class Bench(amp: Double = 0.8, offS: Double = 0.011, offC: Double = -
                        cutoffHz: Double = 0, crosstalkTauS: Double = 0,
                        inlSinLsb: Double = 0, inlCosLsb: Double = 0,
                        stuck: Option[(String, Int, Int)] = None, seed: Long = 1) {
+  require(jitterS == 0 || cutoffHz == 0, "jitter is modelled before the low-pass; use one or the other")
   def half: Int = 1 << (bits - 1)
   def lsb: Double = 1.0 / half
 
@@ -57,7 +58,13 @@ final case class Bench(amp: Double = 0.8, offS: Double = 0.011, offC: Double = -
       }
       var vs = g * s; var vc = gainC * g * c
       if (crosstalkTauS > 0) vc += crosstalkTauS * g * math.cos(a) * 2 * math.Pi * tr.speed(i)
-      if (alpha < 1) { if (i == 0) { ys = vs; yc = vc } else { ys += alpha * (vs - ys); yc += alpha * (vc - yc) }; vs = ys; vc = yc }
+      if (alpha < 1) {
+        if (i == 0) { // the filter's steady state at the first sample's frequency: no switch-on transient
+          val r = tr.speed(0) / cutoffHz; val gain = 1 / math.sqrt(1 + r * r); val lag = math.atan(r)
+          ys = g * gain * math.sin(a - lag); yc = gainC * g * gain * math.cos(a + quad - lag)
+        } else { ys += alpha * (vs - ys); yc += alpha * (vc - yc) }
+        vs = ys; vc = yc
+      }
       var pick = warmOffsetLsb * lsb * warm
       for ((hz, l) <- lines) pick += l * lsb * math.sin(2 * math.Pi * hz * t + 0.4)
       cs(i) = adc(offS + vs + pick + noiseLsb * lsb * rnd.nextGaussian(), inlSinLsb, "sin")

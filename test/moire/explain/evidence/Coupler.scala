@@ -24,7 +24,7 @@ object Coupler {
         val phi = 2 * math.Pi * fine.periods(i * s.sub + j)
         mean(k) += d(k) * (1 + vis * math.cos(phi - 2 * math.Pi * k / 3 + e(k))) / s.sub
       }
-      val scale = s.fill / (1.5 * vis)
+      val scale = s.fill / (3 * vis) // both sums are 3 V times the fringe
       cs(i) = code(scale * math.sqrt(3) * (mean(1) - mean(2)) + s.noiseLsb / half * rnd.nextGaussian())
       cc(i) = code(scale * (2 * mean(0) - mean(1) - mean(2)) + s.noiseLsb / half * rnd.nextGaussian())
     }

@@ -26,6 +26,14 @@ object Evidence {
     */
   def misfit(r: Report): Option[String] = r.notes.find(_.contains("does not follow"))
 
+  /** A time range in a text, as "0.012..0.031 s" or "12 .. 31 ms" (where the report says the model does not follow). */
+  def hasTimeRange(text: String): Boolean = """[-+\d.e]+\s*(\.\.|to|-)\s*[-+\d.e]+\s*(s|ms|us)\b""".r.findFirstIn(text).isDefined
+
+  /** needs: the "too small to matter" list of issue 28 (significant, below the materiality floor, with its size).
+    * Looked up in the notes until the report has its own field.
+    */
+  def negligible(r: Report): Seq[String] = r.notes.filter(_.contains("too small to matter"))
+
   /** needs: the name of the engine's effect for phase noise of the motion (the look-alike of jitter). */
   def isPhaseNoise(effect: String): Boolean = effect.contains("phase_noise") || effect.contains("vibration")
 

@@ -20,9 +20,4 @@ object LinearStage {
     val x = p * periodUm
     1 - depth * 0.5 * (math.tanh((x - fromUm) / edgeUm) - math.tanh((x - toUm) / edgeUm))
   }
-
-  /** Contrast changing smoothly from 1 to `end` over `travelPeriods` (beam walk over the travel). */
-  def walk(travelPeriods: Double, end: Double): Double => Double = p => {
-    val u = math.max(0.0, math.min(1.0, p / travelPeriods)); 1 + (end - 1) * u * u * (3 - 2 * u)
-  }
 }
