@@ -18,8 +18,9 @@ class MisfitSpec extends AnyFlatSpec with Matchers {
   private lazy val cases: Seq[(String, String)] = Seq(
     "jerky: shocks ringing at 12 kHz on a 5 kHz drive" ->
       Interferometer.text(Motions.jerky(n, fs, 5e3, 0.6, 2e-3, 12e3, 8, seed = 1), fs, Bench(seed = 1)),
-    "jerky capture, small signal (0.2 FS), shocks at 30 kHz on 20 kHz" ->
-      Interferometer.text(Motions.jerky(n, fs, 20e3, 0.4, 1e-3, 30e3, 5, seed = 2), fs, Bench(amp = 0.2, noiseLsb = 1.2, seed = 2)),
+    "long jerky capture, small signal (0.2 FS): a scan to 120 kHz with shocks ringing at 30 kHz, 200k samples" ->
+      Interferometer.text(Motions.sinusoidalScan(200000, fs, 7640, 5, 0).plus(Motions.jerky(200000, fs, 0, 0.4, 1e-3, 30e3, 5, seed = 2)), fs,
+        Bench(amp = 0.2, noiseLsb = 1.2, seed = 2)),
     "stick-slip: creep 200 Hz, slips of 2 periods in 60 us" ->
       Interferometer.text(Motions.stickSlip(n, fs, 200, 2.0, 3e-3, 60e-6, seed = 3), fs, Bench(seed = 3)),
     "vibration at 40 kHz, 0.15 period, on a 8 kHz drive" ->

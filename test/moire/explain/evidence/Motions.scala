@@ -5,6 +5,8 @@ import java.util.Random
 /** A motion sampled at the recording's instants: the fringe phase in periods and its rate in periods/s. */
 final case class Travel(periods: Array[Double], speed: Array[Double]) {
   def n: Int = periods.length
+  /** Both motions at once (a scan with shocks on top). */
+  def plus(o: Travel): Travel = Travel(Array.tabulate(n)(i => periods(i) + o.periods(i)), Array.tabulate(n)(i => speed(i) + o.speed(i)))
 }
 
 /** Kinds of motion a bench has, each from its own formula (not the fit model's cubic trajectory): steady drives,
@@ -92,11 +94,13 @@ object Motions {
     fromPeriods(p, fs)
   }
 
-  /** A turntable: mechanical angle in turns, speed turnsPerS (1 + unevenRel sin(2 pi unevenHz t + 0.7)). */
-  def turntable(n: Int, fs: Double, turnsPerS: Double, unevenRel: Double, unevenHz: Double, startTurns: Double = 0.13): Travel = {
+  /** A turntable: mechanical angle in turns, speed turnsPerS (1 + unevenRel sin(2 pi unevenHz t + 0.7)); sampled
+    * `delayS` late (a reference read with latency) when given.
+    */
+  def turntable(n: Int, fs: Double, turnsPerS: Double, unevenRel: Double, unevenHz: Double, delayS: Double = 0): Travel = {
     val w = 2 * math.Pi * unevenHz
-    formula(n, fs)(t => startTurns + turnsPerS * (t - unevenRel / w * (math.cos(w * t + 0.7) - math.cos(0.7))),
-      t => turnsPerS * (1 + unevenRel * math.sin(w * t + 0.7)))
+    formula(n, fs)(t => 0.13 + turnsPerS * (t - delayS - unevenRel / w * (math.cos(w * (t - delayS) + 0.7) - math.cos(0.7))),
+      t => turnsPerS * (1 + unevenRel * math.sin(w * (t - delayS) + 0.7)))
   }
 
   /** Slow wander, as an interferometer arm drifting with temperature: a smooth S-shaped drift of `totalPeriods`

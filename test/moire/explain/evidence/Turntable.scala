@@ -19,7 +19,7 @@ object Turntable {
   def text(s: Spec): String = {
     val tr = Motions.turntable(s.n, s.fs, s.turnsPerS, s.unevenRel, s.unevenHz)
     val q = 360.0 / (1 << s.refBits)
-    val late = Motions.turntable(s.n, s.fs, s.turnsPerS, s.unevenRel, s.unevenHz, startTurns = 0.13 - s.turnsPerS * s.refDelayS)
+    val late = Motions.turntable(s.n, s.fs, s.turnsPerS, s.unevenRel, s.unevenHz, delayS = s.refDelayS)
     val ref = late.periods.map { turns =>
       val deg = turns * 360 + s.refEccArcsec / 3600 * math.sin(2 * math.Pi * turns + 1.1)
       val r = math.floor(deg / q) * q; r - 360 * math.floor(r / 360)
