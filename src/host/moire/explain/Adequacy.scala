@@ -25,6 +25,13 @@ object Adequacy {
     if (k == 0) 0.0 else math.sqrt(s / k / 2)
   }
 
+  /** The noise floor of one channel's residual (full scale rms). */
+  def floorOf(r: Array[Double]): Double = {
+    var s = 0.0; var i = 1
+    while (i < r.length) { val d = r(i) - r(i - 1); s += d * d; i += 1 }
+    if (r.length < 2) 0.0 else math.sqrt(s / (r.length - 1) / 2)
+  }
+
   private def rms(e: SignalEngine, a: Int, b: Int): Double = {
     var s = 0.0; var i = a
     while (i < b) { s += e.resS(i) * e.resS(i) + e.resC(i) * e.resC(i); i += 1 }

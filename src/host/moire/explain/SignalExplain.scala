@@ -95,10 +95,9 @@ object SignalExplain {
       val passing = ok.filter(c => dbic(c) > Threshold)
       // A pile-up at one code or a missing code pattern is direct evidence in the histogram that no smooth effect makes:
       // code-domain repairs go first. An effect that yields to a look-alike predicting the same signal (within the
-      // threshold) stands back for it; the finding then names it.
+      // threshold) stands back for it: it is tried after the look-alike (when that fails its tests); the finding names it.
       def yields(c: Cand) = Effects(c.effect).exists(f => passing.exists(o => o != c && f.yieldsTo(c, o) && dbic(o) > dbic(c) - Threshold))
-      val ordered = passing.filterNot(yields)
-        .sortBy(c => (!Effects(c.effect).exists(_.domain == Domain.Codes), -dbic(c))).iterator
+      val ordered = passing.sortBy(c => (!Effects(c.effect).exists(_.domain == Domain.Codes), yields(c), -dbic(c))).iterator
       def reject(c: Cand, why: String): Unit =
         if (!rejected.exists(_.where.startsWith(c.effect + " ")))
           rejected += Located(s"${c.effect} (${c.channel}): ${c.where}", s"structure of this shape lowers BIC by ${"%.0f".format(dbic(c))}, but $why",
@@ -121,7 +120,7 @@ object SignalExplain {
             lap("replicate")
             // materiality: the change it makes to the signal, against the floor
             val fx = Effects(c1.effect)
-            lazy val size = fx.map(_.size(c1, e)).filter(!_.isNaN)
+            lazy val size = fx.map(_.size(c1, e)).filter(!_.isNaN).orElse(termSize(e, prev))
               .getOrElse(Materiality.size(predBS, predBC, e.predS, e.predC, math.max(1, e.n / 200000)))
             lazy val floor = materiality.floor(e.lsb, math.sqrt(0.5 * (e.noise.varS + e.noise.varC)))
             lazy val after = Locate.all(e)
@@ -169,6 +168,15 @@ object SignalExplain {
     Result(report, e, before, shown)
   }
 
+  /** A new linear term's own part of the prediction (its columns times its coefficients): its size. */
+  private def termSize(e: SignalEngine, prev: ModelSpec): Option[Double] =
+    e.spec.terms.diff(prev.terms).headOption.filter(e.termIndex.contains).map { t =>
+      val cols = e.termCols(t); val at = e.termIndex(t); val b = e.sol.beta.slice(at, at + cols.size)
+      val ps = new Array[Double](e.n); val pc = new Array[Double](e.n)
+      LinearFit.addTo(ps, cols, b, sinCh = true, 1.0); LinearFit.addTo(pc, cols, b, sinCh = false, 1.0)
+      Materiality.size(new Array[Double](e.n), new Array[Double](e.n), ps, pc, math.max(1, e.n / 200000))
+    }
+
   /** None when the located departures an effect claims (their chi-square or peak-to-mean, summed) fell from `before`
     * to `after`, or when it claims none that was measured; else why it is not a finding.
     */
@@ -199,6 +207,9 @@ object SignalExplain {
   private def termMatches(t: Term, f: Finding): Boolean = t match {
     case Term.Harm(k, ch) => f.params.get("order").contains(k.toDouble) && ch == f.channel
     case Term.Interference(hz) => f.params.get("frequency_hz").contains(hz)
+    case Term.Inl(ch) => ch == f.channel
+    case Term.ContrastSpline(k) => f.params.get("knots").contains(k.toDouble)
+    case Term.Contrast => !f.params.contains("knots")
     case Term.AngleHarm(m) => m == 1 || f.params.get("order").contains(m.toDouble)
     case _ => true
   }
@@ -252,8 +263,16 @@ object SignalExplain {
       RefReport.notes(e)
   }
 
-  def baselineParams(e: SignalEngine): Map[String, Double] = Map(
-    "offset_sin_fs" -> e.base(0), "offset_cos_fs" -> e.base(3), "amplitude_sin_fs" -> e.ampS, "amplitude_cos_fs" -> e.ampC,
-    "phase_error_deg" -> e.phaseErrorDeg, "noise_sin_fs" -> math.sqrt(e.noise.varS), "noise_cos_fs" -> math.sqrt(e.noise.varC),
-    "typical_fringe_hz" -> e.typicalHz, "noise_floor_fs" -> Adequacy.floor(e), "trajectory_segments" -> e.traj.nseg.toDouble) ++ RefReport.params(e)
+  /** The default part's parameters. The noise is the model's residual where the model follows the signal, else the
+    * noise floor from neighbouring samples (a misfit is not noise); `residual_*_fs` is always the model's.
+    */
+  def baselineParams(e: SignalEngine): Map[String, Double] = {
+    val follows = !(Adequacy.ratio(e) > Adequacy.Margin)
+    val (ns, nc) = if (follows) (math.sqrt(e.noise.varS), math.sqrt(e.noise.varC)) else (Adequacy.floorOf(e.resS), Adequacy.floorOf(e.resC))
+    Map(
+      "offset_sin_fs" -> e.base(0), "offset_cos_fs" -> e.base(3), "amplitude_sin_fs" -> e.ampS, "amplitude_cos_fs" -> e.ampC,
+      "phase_error_deg" -> e.phaseErrorDeg, "noise_sin_fs" -> ns, "noise_cos_fs" -> nc,
+      "residual_sin_fs" -> math.sqrt(e.noise.varS), "residual_cos_fs" -> math.sqrt(e.noise.varC),
+      "typical_fringe_hz" -> e.typicalHz, "noise_floor_fs" -> Adequacy.floor(e), "trajectory_segments" -> e.traj.nseg.toDouble) ++ RefReport.params(e)
+  }
 }

@@ -24,7 +24,8 @@ object Evidence {
   /** needs: the adequacy statement of issue 28 ("the default model does not follow the signal here", with where:
     * time, position and speed ranges). Looked up in the notes until the report has its own field.
     */
-  def misfit(r: Report): Option[String] = r.notes.find(_.contains("does not follow"))
+  def misfit(r: Report): Option[String] =
+    r.misfit.headOption.map(m => s"${m.where}: ${m.summary}").orElse(r.notes.find(_.contains("does not follow")))
 
   /** A time range in a text, as "0.012..0.031 s" or "12 .. 31 ms" (where the report says the model does not follow). */
   def hasTimeRange(text: String): Boolean = """[-+\d.e]+\s*(\.\.|to|-)\s*[-+\d.e]+\s*(s|ms|us)\b""".r.findFirstIn(text).isDefined
@@ -32,7 +33,7 @@ object Evidence {
   /** needs: the "too small to matter" list of issue 28 (significant, below the materiality floor, with its size).
     * Looked up in the notes until the report has its own field.
     */
-  def negligible(r: Report): Seq[String] = r.notes.filter(_.contains("too small to matter"))
+  def negligible(r: Report): Seq[String] = r.negligible.map(_.json("summary").str) ++ r.notes.filter(_.contains("too small to matter"))
 
   /** needs: the name of the engine's effect for phase noise of the motion (the look-alike of jitter). */
   def isPhaseNoise(effect: String): Boolean = effect.contains("phase_noise") || effect.contains("vibration")
@@ -40,5 +41,5 @@ object Evidence {
   /** needs: a finding naming its look-alike and the measurement that would separate them (issue 28, Look-alikes).
     * Looked up in the finding's summary until it has its own field.
     */
-  def namesLookAlike(f: Finding, other: String): Boolean = f.summary.contains(other)
+  def namesLookAlike(f: Finding, other: String): Boolean = f.summary.contains(other) || f.lookAlikes.exists(_.contains(other))
 }

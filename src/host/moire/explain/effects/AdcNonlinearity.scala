@@ -24,7 +24,10 @@ object AdcNonlinearity extends Effect {
   private def amp(c: Cand, e: SignalEngine) = (math.abs(c.params.getOrElse("inl2_lsb", 0.0)) + math.abs(c.params.getOrElse("inl3_lsb", 0.0))) * e.lsb
   override def valueAmplitude(c: Cand, e: SignalEngine): Option[Double] = Some(amp(c, e))
   /** One ADC's bow or S shape at constant amplitude is a 2nd or 3rd harmonic on that channel. */
-  override def yieldsTo(c: Cand, other: Cand): Boolean = c.channel != "both" && other.effect == Harmonic.name && other.channel == c.channel
+  override def yieldsTo(c: Cand, other: Cand): Boolean =
+    (c.channel != "both" && other.effect == Harmonic.name && other.channel == c.channel) ||
+      // the same INL on both ADCs stands back for one ADC's that explains as much
+      (c.channel == "both" && other.effect == name && other.channel != "both")
   override def lookAlikes(f: Finding, e: SignalEngine): Seq[String] =
     if (f.channel == "both") Nil
     else Seq(s"${Harmonic.name} 2 and 3 on the ${f.channel} channel predict the same signal while its amplitude stays constant, as it " +

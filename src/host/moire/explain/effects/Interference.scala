@@ -12,8 +12,12 @@ object Interference extends Effect {
   override def example: Example = Example(EffectSpec(name, Map("frequency_hz" -> 12345.0, "amplitude_fs" -> 0.0015)))
   val domain: Domain = Domain.Time
   override val plot: PlotKind = PlotKind.Spectrum
-  /** A line must complete this many cycles in the record to be told from a slow change (judged with its uncertainty). */
+  /** A line must complete this many cycles in the record to be told from a slow change (judged with its uncertainty and
+    * the record's resolution of half a cycle).
+    */
   val MinCycles = 10.0
+  /** A record resolves a line's cycle count to about one cycle (its Fourier resolution is 1 / duration): half of it. */
+  val Resolution = 0.5
   /** Standard deviations by which the cycle count must fall short of `MinCycles` to refuse the line. */
   val Sd = 3.0
 
@@ -37,11 +41,11 @@ object Interference extends Effect {
   }
 
   /** A line of `hz` +- `sdHz` in a record of `seconds`: refused when its cycle count is short of `MinCycles` by more than
-    * `Sd` of its own uncertainty (10.00 +- 0.01 cycles is not fewer than 10).
+    * `Sd` of its own uncertainty and the record's `Resolution` (9.996 +- 0.001 cycles is not fewer than 10).
     */
   def tooFewCycles(hz: Double, sdHz: Double, seconds: Double): Option[String] = {
     val cycles = hz * seconds; val sd = math.abs(sdHz) * seconds
-    if (cycles + Sd * sd >= MinCycles) None
+    if (cycles + Sd * sd + Resolution >= MinCycles) None
     else Some(f"a line at $hz%.4g Hz completes ${cycles}%.3g +- ${sd}%.2g cycles in the ${seconds}%.3g s record (at least ${MinCycles}%.0f needed)")
   }
 
