@@ -1,7 +1,7 @@
 package moire.explain
 
 /** The materiality floor of a finding (issue 28): an effect must change the signal by a visible amount, at least
-  * `minLsb` LSB and `minNoise` times the noise's rms (the larger of the two), measured as the 99th percentile of the
+  * `minLsb` LSB and `minNoise` times the noise's rms (the floor from neighbouring samples; the larger of the two), measured as the 99th percentile of the
   * change of the prediction it makes over the record (for jitter: the noise it adds at the steepest slope).
   * What is significant but smaller goes to the report's `negligible` list with its size.
   */

@@ -67,7 +67,6 @@ object SignalExplain {
     val before = Snapshot.of("default model", e.resS, e.resC)
     lap("default fit")
     val located = Locate.all(e)
-    var current = located // the located departures of the current model
     val negligible = Seq.newBuilder[Negligible]
     lap("locate")
     val steps = Seq.newBuilder[(Finding, Snapshot, Snapshot)]
@@ -111,6 +110,10 @@ object SignalExplain {
             tries += 1
             val snapB = Snapshot.of(s"before ${c.effect}", e.resS, e.resC)
             val rmsB = e.rms; val predBS = e.predS; val predBC = e.predC
+            // the located departures the effect claims, before and after (only those tests are run)
+            val claims = Effects(c.effect).map(_.claims).getOrElse(Nil)
+            def claimedNow = if (claims.isEmpty) Nil else Locate.all(e, w => claims.exists(w.startsWith))
+            val before = claimedNow
             val prev = e.spec
             e.spec = c.spec; e.converge(); settle(e)
             val c1 = demote(e, c)
@@ -122,9 +125,9 @@ object SignalExplain {
             val fx = Effects(c1.effect)
             lazy val size = fx.map(_.size(c1, e)).filter(!_.isNaN).orElse(termSize(e, prev))
               .getOrElse(Materiality.size(predBS, predBC, e.predS, e.predC, math.max(1, e.n / 200000)))
-            lazy val floor = materiality.floor(e.lsb, math.sqrt(0.5 * (e.noise.varS + e.noise.varC)))
-            lazy val after = Locate.all(e)
-            why.orElse(if (size >= floor) None else Some("negligible")).orElse(claimed(fx.map(_.claims).getOrElse(Nil), current, after)) match {
+            // the noise is the floor from neighbouring samples: the model's residual still holds the effects not yet fitted
+            lazy val floor = materiality.floor(e.lsb, Adequacy.floor(e))
+            why.orElse(if (size >= floor) None else Some("negligible")).orElse(claimed(claims, before, claimedNow)) match {
               case Some(w) =>
                 if (w == "negligible") negligible += Negligible(c1.effect, c1.channel, size / e.lsb, floor / e.lsb, bic0 - e.bic, c1.params)
                 else if (w.nonEmpty) reject(c, w)
@@ -132,7 +135,6 @@ object SignalExplain {
               case None =>
                 val snapA = Snapshot.of(s"after ${c.effect}", e.resS, e.resC)
                 steps += ((Finding(c1.effect, c1.channel, "", c1.params, c1.unc, bic0 - e.bic, rmsB, e.rms, c1.where, size / e.lsb), snapB, snapA))
-                current = after
                 round += 1; accepted = true
             }
         }

@@ -24,7 +24,9 @@ object ContrastAlongTravel extends Effect {
   /** Fringe periods between knots at least: closer knots would follow the fringe phase (a harmonic's shape). */
   val MinKnotPeriods = 4.0
 
-  /** The residual's amplitude against the position in `Bins` bins (sum r u / sum u^2), as a chi-square in sd. */
+  /** The residual's amplitude against the position in `Bins` bins (sum r u / sum u^2) less a quadratic in the position
+    * (what a linear contrast change or a low-pass on a ramp makes), as a chi-square in sd: local structure only.
+    */
   def amplitudeAlongTravel(e: SignalEngine): Double = {
     val x = e.travel; var lo = Double.MaxValue; var hi = -Double.MaxValue
     x.foreach { v => lo = math.min(lo, v); hi = math.max(hi, v) }
@@ -36,7 +38,19 @@ object ContrastAlongTravel extends Effect {
       ru(b) += e.resS(i) * e.us(i) / vS + e.resC(i) * e.uc(i) / vC; uu(b) += e.us(i) * e.us(i) / vS + e.uc(i) * e.uc(i) / vC; i += 1
     }
     val used = (0 until Bins).filter(uu(_) > 0)
-    Locate.zOf(used.map(b => ru(b) * ru(b) / uu(b)).sum, math.max(1, used.size))
+    if (used.size <= 4) return 0.0
+    // weighted least squares of the bin amplitudes a = ru / uu (weight uu) on 1, x, x^2
+    val m = Array.ofDim[Double](3, 4)
+    for (b <- used) {
+      val x = (b + 0.5) / Bins - 0.5; val xs = Array(1.0, x, x * x); val a = ru(b) / uu(b)
+      for (i <- 0 until 3) { for (j <- 0 until 3) m(i)(j) += uu(b) * xs(i) * xs(j); m(i)(3) += uu(b) * xs(i) * a }
+    }
+    val q = moire.explain.Trajectory.solve4(Array(Array(m(0)(0), m(0)(1), m(0)(2), 0, m(0)(3)), Array(m(1)(0), m(1)(1), m(1)(2), 0, m(1)(3)),
+      Array(m(2)(0), m(2)(1), m(2)(2), 0, m(2)(3)), Array(0.0, 0, 0, 1, 0)))
+    val chi2 = used.map { b =>
+      val x = (b + 0.5) / Bins - 0.5; val d = ru(b) / uu(b) - (q(0) + q(1) * x + q(2) * x * x); uu(b) * d * d
+    }.sum
+    Locate.zOf(chi2, used.size - 3)
   }
 
   override def backward(sp: ModelSpec, e: EffectSpec): ModelSpec = sp.copy(terms = sp.terms :+ Term.Contrast)
