@@ -92,11 +92,10 @@ object SignalExplain {
       // identifiability are checked on the candidate; replication on the halves after the joint refit that accepts it
       // (before it, the trajectory and the default part still hold part of the effect, differently in each half).
       val passing = ok.filter(c => dbic(c) > Threshold)
-      // A pile-up at one code or a missing code pattern is direct evidence in the histogram that no smooth effect makes:
-      // code-domain repairs go first. An effect that yields to a look-alike predicting the same signal (within the
+      // A pile-up at one code is direct evidence in the histogram that no smooth effect makes: such repairs go first. An effect that yields to a look-alike predicting the same signal (within the
       // threshold) stands back for it: it is tried after the look-alike (when that fails its tests); the finding names it.
       def yields(c: Cand) = Effects(c.effect).exists(f => passing.exists(o => o != c && f.yieldsTo(c, o) && dbic(o) > dbic(c) - Threshold))
-      val ordered = passing.sortBy(c => (!Effects(c.effect).exists(_.domain == Domain.Codes), yields(c), -dbic(c))).iterator
+      val ordered = passing.sortBy(c => (!Effects(c.effect).exists(_.direct), yields(c), -dbic(c))).iterator
       def reject(c: Cand, why: String): Unit =
         if (!rejected.exists(_.where.startsWith(c.effect + " ")))
           rejected += Located(s"${c.effect} (${c.channel}): ${c.where}", s"structure of this shape lowers BIC by ${"%.0f".format(dbic(c))}, but $why",

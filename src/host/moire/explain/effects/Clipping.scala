@@ -13,6 +13,7 @@ object Clipping extends Effect {
   val domain: Domain = Domain.Codes
   override val plot: PlotKind = PlotKind.Level
   override val confoundedWithMotion = false
+  override val direct = true
 
   override def backward(sp: ModelSpec, e: EffectSpec): ModelSpec =
     sp.copy(clips = sp.clips :+ Clip(if (e.channel == "cos") 1 else 0, e.p("low_fs", Double.NegativeInfinity), e.p("high_fs", Double.PositiveInfinity)))

@@ -59,6 +59,8 @@ trait Effect {
   def plot: PlotKind = PlotKind.FringePhase
   /** A free trajectory over a few fringe periods can share its shape (not identifiable without a reference). */
   def confoundedWithMotion: Boolean = true
+  /** Its evidence is direct (a pile-up at one code, which no smooth effect makes): it is tried before the others. */
+  def direct: Boolean = false
   /** Simulation only: explain does not search for it (it is reported from the codes, or not at all). */
   def searched: Boolean = true
 
