@@ -8,15 +8,15 @@ import org.scalatest.matchers.should.Matchers
 class PlausibleSpec extends AnyFlatSpec with Matchers {
   import ExplainSupport._
 
-  private def cand(effect: String, p: (String, Double)*) = Cand(effect, "both", ModelSpec(), 0, 0, p.toMap, Map.empty, "")
-
-  "Plausible" should "refuse lines under 10 cycles and jitter that is not well below the sample period" in {
+  "Interference" should "refuse a line under 10 cycles by more than its uncertainty, and only that" in {
     // 2 MS/s, 0.1 s: the oscilloscope capture of issue 12
-    Plausible.why(cand("interference", "frequency_hz" -> 64.5), 2e6, 200000).get should include("6.5 cycles")
-    Plausible.why(cand("interference", "frequency_hz" -> 100.0), 2e6, 200000) shouldBe None
-    Plausible.why(cand("jitter", "jitter_s" -> 32610e-12), 2e6, 200000).get should include("6.5 % of the sample period")
-    Plausible.why(cand("jitter", "jitter_s" -> 300e-12), 10e6, 200000) shouldBe None
-    Plausible.why(cand("harmonic", "order" -> 2.0), 2e6, 10) shouldBe None
+    effects.Interference.tooFewCycles(64.5, 0.01, 0.1).get should include("6.45 +- 0.0010")
+    effects.Interference.tooFewCycles(100.0, 0.01, 0.1) shouldBe None
+    // 9.99 +- 0.01 cycles is not "fewer than 10" (issue 28: the hum of exactly 10 cycles), nor is 9.6 (the record
+    // resolves a cycle count to half a cycle); 9.4 +- 0.01 is
+    effects.Interference.tooFewCycles(99.9, 0.1, 0.1) shouldBe None
+    effects.Interference.tooFewCycles(96.0, 0.1, 0.1) shouldBe None
+    effects.Interference.tooFewCycles(94.0, 0.1, 0.1).get should include("9.40 +- 0.010")
   }
 
   "explain" should "put a 4-cycle pickup in a short record under unexplained, not name it" in {

@@ -175,7 +175,7 @@ object Main {
                @arg(doc = "white noise rms, full scale") noise: Double = 0.0005,
                seed: Long = 1L,
                @arg(doc = "grating lines per revolution (amplitude_modulation)") linesPerRev: Option[Double] = None,
-               @arg(doc = "an effect NAME:key=value,...,channel=sin|cos|both (repeat); see docs/explain.md") effect: Seq[String] = Nil,
+               @arg(doc = "an effect NAME:key=value,...,channel=sin|cos|both (repeat); `explain --help` lists the effects and their keys") effect: Seq[String] = Nil,
                @arg(doc = "a model JSON file (the JSON simulate writes into the # model: line); overrides the options") model: Option[String] = None): Unit =
     println(moire.explain.ExplainCmd.simulate(moire.explain.ExplainCmd.SimOptions(out, samples, sampleRateHz, adcBits, adc, motion,
       amplitude, offsetSin, offsetCos, gainSin, gainCos, phaseErrorDeg, noise, seed, linesPerRev, effect, model)))
@@ -189,8 +189,10 @@ object Main {
               @arg(doc = "emit-subdiv options of the board's subdivider, e.g. \"--counts 4096\" (default: from the metadata)") subdiv: Option[String] = None,
               @arg(doc = "do not compare a recording's board outputs (position column) with the RTL") noRtl: Flag = Flag(),
               @arg(doc = "one self-contained HTML report (plots inline) of the one recording") html: Option[String] = None,
-              @arg(doc = "folder for one HTML report per recording") htmlDir: Option[String] = None): Unit =
-    moire.explain.ExplainCmd.explainArgs(files.value, jsonDir, plots, model, quiet.value, subdiv, noRtl.value, html, htmlDir)
+              @arg(doc = "folder for one HTML report per recording") htmlDir: Option[String] = None,
+              @arg(doc = "materiality floor in LSB: a finding changes the signal by at least this much (default 0.25)") minEffectLsb: Option[Double] = None,
+              @arg(doc = "materiality floor as a fraction of the noise rms (default 0.1)") minEffectNoise: Option[Double] = None): Unit =
+    moire.explain.ExplainCmd.explainArgs(files.value, jsonDir, plots, model, quiet.value, subdiv, noRtl.value, html, htmlDir, minEffectLsb, minEffectNoise)
 
   @main(doc = "Benchmark: simulate and explain one recording; print the time, samples per second and peak heap (also per million samples) of reading and of the whole explain.")
   def explainBench(@arg(doc = "samples in the recording (default 1000000)") samples: Int = 1000000,

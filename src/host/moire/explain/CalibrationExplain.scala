@@ -85,7 +85,7 @@ object CalibrationExplain {
       (System.nanoTime() - t0) / 1e9)
     Result(report, c, before, res, fitted, fins)
   }
-  private def name(t: T) = t match { case H(_) => "harmonic_order"; case Rev => "reversal" }
+  private def name(t: T) = t match { case H(_) => effects.HarmonicOrder.name; case Rev => effects.Reversal.name }
 
   /** Residual against angle (bins), its harmonic amplitudes, and the mean difference between directions. */
   def locate(c: Calibration, r: Array[Double], a: Array[Double], kMax: Int): Seq[Located] = {

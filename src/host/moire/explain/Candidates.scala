@@ -1,20 +1,19 @@
 package moire.explain
 
+import moire.explain.effects._
+
 
 /** One fitted effect proposal: the model with it, its -2 ln L, extra parameters, and readable parameters. */
 final case class Cand(effect: String, channel: String, spec: ModelSpec, m2ll: Double, extraK: Int,
                       params: Map[String, Double], unc: Map[String, Double], where: String)
 
 /** Proposes and fits every catalogued effect against the engine's current state. */
-final class Candidates(e: SignalEngine) {
+final class Candidates(val engine: SignalEngine) {
+  private val e = engine
   import e._
 
   /** The 2 % and 98 % points of the fringe frequency's magnitude. */
-  val (fMin: Double, fMax: Double) = {
-    val a = freq.map(math.abs); java.util.Arrays.sort(a)
-    def pct(q: Double) = a(math.min(n - 1, (q * n).toInt))
-    (pct(0.02), pct(0.98))
-  }
+  val (fMin: Double, fMax: Double) = e.speedRange
 
   /** Linear term fitted with the default part on the current residual. */
   def linear(t: Term): Option[(Cand, LinSol)] = {
@@ -24,15 +23,15 @@ final class Candidates(e: SignalEngine) {
     if (!s.ok) return None
     // without jitter or censoring only the sums of squares matter: no residual arrays
     val (nz, v) =
-      if (!spec.jitter && cens.censS == null && cens.censC == null) {
+      if (!spec.slopeNoise && cens.censS == null && cens.censC == null) {
         val a = LinearFit.rss(cols, s.beta, resS, sinCh = true); val b = LinearFit.rss(cols, s.beta, resC, sinCh = false)
         (Noise.white(a, b, n), (a + b) / (2.0 * n))
       } else {
         val rs = LinearFit.minus(resS, cols, s.beta, sinCh = true); val rc = LinearFit.minus(resC, cols, s.beta, sinCh = false)
-        (Noise.fit(rs, rc, if (spec.jitter) slopes() else null, cens), (sumSq(rs) + sumSq(rc)) / (2.0 * n))
+        (Noise.fit(rs, rc, noiseSlopes(spec), cens), (sumSq(rs) + sumSq(rc)) / (2.0 * n))
       }
     val b = s.beta.drop(6); val sd = (6 until s.beta.length).map(i => math.sqrt(math.max(0, s.inv(i)(i)) * v)).toArray
-    val (p, u, where, ch) = Describe.term(t, b, sd, e)
+    val (p, u, where, ch) = t.effect.describe(t, b, sd, e)
     Some((Cand(t.name, ch, spec.copy(terms = spec.terms :+ t), nz.m2ll, t.params, p, u, where), s))
   }
 
@@ -42,27 +41,16 @@ final class Candidates(e: SignalEngine) {
     val out = Seq.newBuilder[Cand]
     val timing = sys.props.contains("moire.timing")
     var last = System.nanoTime()
-    def add(c: => Option[Cand]): Unit = {
-      try c.foreach(out += _) finally onStep()
+    def add(c: => Seq[Cand]): Unit = {
+      try out ++= c finally onStep()
       if (timing) { val now = System.nanoTime(); System.err.println(f"candidate ${(now - last) / 1e6}%.0f ms"); last = now }
     }
-    for (k <- 2 to 7; ch <- Seq("sin", "cos", "both")) add(linear(Term.Harm(k, ch)).map(_._1))
-    add(linear(Term.Drift).map(_._1))
-    add(warmup())
-    add(linear(Term.Contrast).map(_._1))
-    if (rec.linesPerRev.isDefined || mechanical) add(linear(Term.Am).map(_._1))
-    if (mechanical) for (m <- 1 to 2) add(linear(Term.AngleHarm(m)).map(_._1))
-    add(linear(Term.Inl).map(_._1))
-    add(linear(Term.Crosstalk).map(_._1))
-    add(interference())
-    add(skew())
-    for (ch <- Seq("both", "sin", "cos")) add(bandwidth(ch))
-    add(jitter())
-    faults().foreach(c => out += c)
-    clips().foreach(c => out += c)
+    searches.foreach(f => add(f()))
     out.result()
   }
-  def steps: Int = 18 + 3 + (if (rec.linesPerRev.isDefined || mechanical) 1 else 0) + (if (mechanical) 2 else 0) + 3 + 1 + 3 + 1
+  /** The registry's searches for this record: one progress step each. */
+  lazy val searches: Seq[() => Seq[Cand]] = Effects.all.filter(_.searched).flatMap(_.searches(this))
+  def steps: Int = searches.size
   /** The reference names the mechanical angle and a turn holds enough fringe periods to tell its modulation from
     * harmonics of the fringe (with one period per turn they are the same thing).
     */
@@ -124,14 +112,14 @@ final class Candidates(e: SignalEngine) {
   /** Full -2 ln L of a spec with modified fundamentals (current noise model), with the fitted default part. */
   def fullM2ll(sp: ModelSpec): Double = {
     // white noise, nothing censored: the streaming profile on every sample is the same fit, without arrays
-    if (!sp.jitter && cens.censS == null && cens.censC == null) return profile(sp, 1)
+    if (!sp.slopeNoise && cens.censS == null && cens.censC == null) return profile(sp, 1)
     val a1 = new Array[Double](n); val a2 = new Array[Double](n); val b1 = new Array[Double](n); val b2 = new Array[Double](n)
     fundamentals(sp, a1, a2, b1, b2)
     val cols = baseCols(a1, a2, b1, b2)
     val ts = Array.tabulate(n)(i => repS(i) - termS(i)); val tcc = Array.tabulate(n)(i => repC(i) - termC(i))
     val s = LinearFit.solve(cols, ts, tcc)
     LinearFit.addTo(ts, cols, s.beta, sinCh = true, -1.0); LinearFit.addTo(tcc, cols, s.beta, sinCh = false, -1.0) // now the residual
-    Noise.fit(ts, tcc, if (sp.jitter) slopes() else null, cens).m2ll
+    Noise.fit(ts, tcc, noiseSlopes(sp), cens).m2ll
   }
 
   private def stride: Int = math.max(1, n / 50000)
@@ -150,8 +138,8 @@ final class Candidates(e: SignalEngine) {
     val tau = minimize(x => profile(spec.copy(hasSkew = true, skewS = x), stride), lo, hi)
     val sp = spec.copy(hasSkew = true, skewS = tau)
     val sd = curvatureSd(x => profile(spec.copy(hasSkew = true, skewS = x), 1), tau, math.max(sd0, 1e-12))
-    val (p, u, where) = Describe.skew(tau, sd, fMin, fMax)
-    Some(Cand("channel_skew", "cos", sp, fullM2ll(sp), 1, p, u, where))
+    val (p, u, where) = (Map("skew_s" -> tau), Map("skew_s" -> sd), f"against speed: cos channel phase, ${fMin / 1e3}%.1f to ${fMax / 1e3}%.1f kHz")
+    Some(Cand(ChannelSkew.name, "cos", sp, fullM2ll(sp), 1, p, u, where))
   }
 
   /** First-order low-pass on one channel or both, searched over 1 / cut-off. */
@@ -164,12 +152,13 @@ final class Candidates(e: SignalEngine) {
     val fc = 1 / xs
     val sp = spec.copy(bw = spec.bw + (ch -> fc))
     val sdx = curvatureSd(x => profile(spec.copy(bw = spec.bw + (ch -> 1 / x)), 1), xs, xs * 0.05)
-    val (p, u, where) = Describe.bandwidth(ch, fc, sdx / (xs * xs))
-    Some(Cand("bandwidth", ch, sp, fullM2ll(sp), 1, p, u, where))
+    val (p, u, where) = (Map("cutoff_hz" -> fc), Map("cutoff_hz" -> sdx / (xs * xs)),
+      s"against speed: ${if (ch == "both") "amplitude of both channels" else s"$ch channel amplitude and phase"}")
+    Some(Cand(Bandwidth.name, ch, sp, fullM2ll(sp), 1, p, u, where))
   }
 
   def jitter(): Option[Cand] = {
-    if (spec.jitter || fMax <= 0) return None
+    if (spec.slopeNoise || fMax <= 0) return None
     val (ds, dc) = slopes()
     val nz = Noise.fit(resS, resC, (ds, dc), cens)
     if (nz.jitter2 <= 0) return None
@@ -179,8 +168,27 @@ final class Candidates(e: SignalEngine) {
       info += 0.5 * (a * a + b * b); i += 1
     }
     val j = math.sqrt(nz.jitter2); val sdj = (1 / math.sqrt(info)) / (2 * j)
-    val (p, u, where) = Describe.jitter(j, sdj, math.sqrt(0.5 * (nz.varS + nz.varC)))
-    Some(Cand("jitter", "both", spec.copy(jitter = true), nz.m2ll, 1, p, u, where))
+    val white = math.sqrt(0.5 * (nz.varS + nz.varC))
+    val (p, u, where) = (Map("jitter_s" -> j, "white_noise_fs" -> white), Map("jitter_s" -> sdj, "white_noise_fs" -> 0.0),
+      "noise against signal slope (speed and fringe phase)")
+    Some(Cand(Jitter.name, "both", spec.copy(jitter = true), nz.m2ll, 1, p, u, where))
+  }
+
+  /** Phase noise of the motion: noise variance growing with the slope against the fringe phase (radians rms). */
+  def phaseNoise(): Option[Cand] = {
+    if (spec.slopeNoise) return None
+    val (ds, dc) = phaseSlopes()
+    val nz = Noise.fit(resS, resC, (ds, dc), cens)
+    if (nz.jitter2 <= 0) return None
+    var info = 0.0; var i = 0
+    while (i < n) {
+      val a = ds(i) * ds(i) / (nz.varS + nz.jitter2 * ds(i) * ds(i)); val b = dc(i) * dc(i) / (nz.varC + nz.jitter2 * dc(i) * dc(i))
+      info += 0.5 * (a * a + b * b); i += 1
+    }
+    val r = math.sqrt(nz.jitter2); val sd = (1 / math.sqrt(info)) / (2 * r)
+    val white = math.sqrt(0.5 * (nz.varS + nz.varC))
+    Some(Cand(PhaseNoise.name, "both", spec.copy(phaseNoise = true), nz.m2ll, 1, Map("phase_noise_rad" -> r, "white_noise_fs" -> white),
+      Map("phase_noise_rad" -> sd, "white_noise_fs" -> 0.0), "noise against the slope over the fringe phase, not growing with speed"))
   }
 
   /** Warm-up: the time constant by a log grid and golden section on every stride-th sample, then the full linear fit. */
@@ -264,9 +272,10 @@ final class Candidates(e: SignalEngine) {
     val sp = spec.copy(faults = spec.faults :+ f)
     val (ps, pc) = (predS, predC)
     val r = repair(sp, ps, pc)
-    val nz = Noise.fit(sub(r.s, ps), sub(r.c, pc), if (spec.jitter) slopes() else null, r)
-    val (p, u, where) = Describe.fault(f, rec.adc)
-    Some(Cand("adc_bit_fault", if (f.ch == 0) "sin" else "cos", sp, nz.m2ll, 1, p, u, where))
+    val nz = Noise.fit(sub(r.s, ps), sub(r.c, pc), noiseSlopes(spec), r)
+    val p = Map("bit" -> f.bit.toDouble) ++ (if (f.stuckAt >= 0) Map("stuck_at" -> f.stuckAt.toDouble) else Map("bridged_to" -> f.bridgedTo.toDouble))
+    val (u, where) = (p.map { case (k, _) => k -> 0.0 }, s"code histogram: ${if (f.ch == 0) "sin" else "cos"} channel, bit ${f.bit}")
+    Some(Cand(AdcBitFault.name, if (f.ch == 0) "sin" else "cos", sp, nz.m2ll, 1, p, u, where))
   }
 
   /** Saturation below the ADC rails: a pile-up of samples at one extreme code the model exceeds. */
@@ -285,9 +294,11 @@ final class Candidates(e: SignalEngine) {
         val c = Clip(ch, if (useLo) lo else Double.NegativeInfinity, if (useHi) hi else Double.PositiveInfinity)
         val sp = spec.copy(clips = spec.clips :+ c)
         val r = repair(sp, ps, pc)
-        val nz = Noise.fit(sub(r.s, ps), sub(r.c, pc), if (spec.jitter) slopes() else null, r)
-        val (pp, u, where) = Describe.clip(c, lsb)
-        out += Cand("clipping", if (ch == 0) "sin" else "cos", sp, nz.m2ll, c.params, pp, u, where)
+        val nz = Noise.fit(sub(r.s, ps), sub(r.c, pc), noiseSlopes(spec), r)
+        // clip levels are read off the codes: uncertain by half an LSB
+        val pp = Seq("low_fs" -> c.lo, "high_fs" -> c.hi).filter(!_._2.isInfinite).toMap
+        val (u, where) = (pp.map { case (k, _) => k -> 0.5 * lsb }, s"code histogram: ${if (ch == 0) "sin" else "cos"} channel pile-up at the extremes")
+        out += Cand(Clipping.name, if (ch == 0) "sin" else "cos", sp, nz.m2ll, c.params, pp, u, where)
       }
     }
     out.result()

@@ -12,7 +12,7 @@ object Coverage {
     val rec = e.rec
     val refs = ReferenceColumns.filter(rec.extra.contains)
     Seq(
-      Some(f"interference below ${Plausible.MinCycles / seconds}%.4g Hz: the ${seconds}%.4g s record holds fewer than ${Plausible.MinCycles}%.0f cycles of it"),
+      Some(f"interference below ${effects.Interference.MinCycles / seconds}%.4g Hz: the ${seconds}%.4g s record holds fewer than ${effects.Interference.MinCycles}%.0f cycles of it"),
       if (fMax <= 0 || fMax - fMin < 0.05 * fMax)
         Some(f"channel skew and bandwidth: the fringe frequency spans only ${fMin}%.4g .. ${fMax}%.4g Hz; a skew there is a phase error")
       else None,

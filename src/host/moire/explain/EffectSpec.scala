@@ -11,33 +11,11 @@ final case class EffectSpec(effect: String, params: Map[String, Double] = Map.em
   }
 }
 
-/** The catalogue: each effect, the parameters it takes and what it means. */
+/** The catalogue is the registry (`effects.Effects`): each effect, the parameters it takes and what it means. */
 object EffectSpec {
-  val catalogue: Seq[(String, Seq[String], String)] = Seq(
-    ("harmonic", Seq("order", "amplitude_rel", "phase_deg"), "order k of the fringe on one channel or both (channel=sin|cos|both)"),
-    ("channel_skew", Seq("skew_s"), "cos channel sampled skew_s seconds after sin"),
-    ("bandwidth", Seq("cutoff_hz"), "first-order read-head amplifier low-pass (channel=sin|cos|both)"),
-    ("drift", Seq("offset_sin_per_s", "offset_cos_per_s", "gain_sin_per_s", "gain_cos_per_s"), "offsets (full scale) and gains (relative) changing linearly with time"),
-    ("amplitude_modulation", Seq("depth", "phase_deg"), "amplitude * (1 + depth cos(mechanical angle + phase)); needs lines_per_rev"),
-    ("eccentricity", Seq("eccentricity_rel", "phase_deg"), "disk or magnet off the axis by eccentricity_rel of the reading radius: the read angle is off by eccentricity_rel sin(angle + phase) radians once per turn; needs lines_per_rev (explain: a reference naming turns)"),
-    ("angle_harmonic", Seq("order", "amplitude_arcsec", "phase_deg"), "read angle off by amplitude_arcsec sin(order angle + phase), a harmonic of the mechanical angle; needs lines_per_rev (explain: a reference naming turns)"),
-    ("jitter", Seq("jitter_s"), "sampling clock jitter, seconds rms, common to both channels"),
-    ("adc_bit_fault", Seq("bit", "stuck_at", "bridged_to"), "data line stuck at 0/1, or wired-AND with another bit (channel=sin|cos)"),
-    ("clipping", Seq("high_fs", "low_fs"), "amplifier saturation levels in full-scale units (channel=sin|cos|both)"),
-    ("adc_nonlinearity", Seq("inl2_lsb", "inl3_lsb"), "INL = inl2 T2(v) + inl3 T3(v) LSB, Chebyshev bow and S shape over full scale"),
-    ("crosstalk", Seq("sin_from_cos_tau_s", "cos_from_sin_tau_s"), "capacitive coupling: channel += tau * d(other channel)/dt"),
-    ("contrast_along_travel", Seq("offset_sin_per_period", "offset_cos_per_period", "gain_sin_per_period", "gain_cos_per_period"),
-      "offsets (full scale) and gains (relative) changing linearly with the position along the travel (beam walk, scale contamination), per fringe period from the start"),
-    ("warmup", Seq("offset_sin_step_fs", "offset_cos_step_fs", "gain_sin_step_rel", "gain_cos_step_rel", "time_constant_s"),
-      "offsets and gains settling by step * (1 - exp(-t / time_constant_s)) after switch-on"),
-    ("coarse_quantization", Seq("effective_bits"), "the codes use only the top effective_bits of the ADC word (a narrower converter in a wider format)"),
-    ("interference", Seq("frequency_hz", "amplitude_fs", "phase_deg"), "a fixed-frequency pickup (mains, switching supply) on both channels")
-  )
-  val calibrationEffects: Seq[(String, Seq[String], String)] = Seq(
-    ("harmonic_order", Seq("order", "amplitude_arcsec", "phase_deg"), "the error function needs harmonic `order` of the turn"),
-    ("reversal", Seq("reversal_arcsec"), "error(cw) - error(ccw): direction-dependent error (backlash, hysteresis)")
-  )
-  val names: Seq[String] = catalogue.map(_._1) ++ calibrationEffects.map(_._1)
+  val catalogue: Seq[(String, Seq[String], String)] = effects.Effects.signals.map(e => (e.name, e.params.map(_.name), e.what))
+  val calibrationEffects: Seq[(String, Seq[String], String)] = effects.Effects.all.filter(_.calibration).map(e => (e.name, e.params.map(_.name), e.what))
+  val names: Seq[String] = effects.Effects.names
 
   /** Parses `name:key=value,key=value` (channel=sin|cos|both allowed among the keys). */
   def parse(s: String): EffectSpec = {

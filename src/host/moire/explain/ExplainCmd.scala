@@ -47,7 +47,8 @@ object ExplainCmd {
 
   /** Explains each file; writes `<stem>.json` into jsonDir and PNGs into plotDir. Returns the text reports. */
   def explain(files: Seq[String], jsonDir: Option[String], plotDir: Option[String], modelFile: Option[String], quiet: Boolean,
-              rtl: Option[Seq[String]] = Some(Nil), html: Option[String] = None, htmlDir: Option[String] = None): Seq[Report] = {
+              rtl: Option[Seq[String]] = Some(Nil), html: Option[String] = None, htmlDir: Option[String] = None,
+              materiality: Materiality = Materiality()): Seq[Report] = {
     if (files.isEmpty) throw new ExplainError("explain: name at least one recording file")
     if (html.isDefined && files.size > 1) throw new ExplainError(s"--html names one file, but ${files.size} recordings were given; use --html-dir DIR (one DIR/<name>.html each)")
     if (html.isDefined && htmlDir.isDefined) throw new ExplainError("give --html FILE or --html-dir DIR, not both")
@@ -68,7 +69,7 @@ object ExplainCmd {
     // Every file gets its report or its one-line error; the command fails after all were tried.
     val results = paths.map { p =>
       val htmlFile = html.map(os.Path(_, os.pwd)).orElse(htmlDir.map(d => os.Path(d, os.pwd) / s"${p.last.stripSuffix(".csv")}.html"))
-      try Right(explainOne(p, givenEffects, jsonDir, plotDir, quiet, rtl, htmlFile))
+      try Right(explainOne(p, givenEffects, jsonDir, plotDir, quiet, rtl, htmlFile, materiality))
       catch { case e: moire.MoireError => if (paths.size > 1) System.err.println(s"moire: ${e.getMessage}"); Left(e) }
     }
     val failed = results.collect { case Left(e) => e }
@@ -80,7 +81,7 @@ object ExplainCmd {
   }
 
   private def explainOne(p: os.Path, givenEffects: Seq[EffectSpec], jsonDir: Option[String], plotDir: Option[String],
-                         quiet: Boolean, rtl: Option[Seq[String]], html: Option[os.Path]): Report = {
+                         quiet: Boolean, rtl: Option[Seq[String]], html: Option[os.Path], materiality: Materiality): Report = {
     val kind = kindOf(p)
     val stem = p.last.stripSuffix(".csv")
     val progress = if (quiet) Progress.none else Progress.bar(stem)
@@ -96,7 +97,7 @@ object ExplainCmd {
       } else {
         val rec = Recording.read(p)
         checkSignals(p, rec)
-        val r = SignalExplain.run(p.toString, rec, givenEffects, progress)
+        val r = SignalExplain.run(p.toString, rec, givenEffects, progress, materiality = materiality)
         progress.close()
         plotFolder.foreach(d => plotFiles = Plots.signals(r, d, stem))
         extra :+= "interpolation_error" -> InterpolationError.of(rec, r.engine).json
@@ -134,13 +135,15 @@ object ExplainCmd {
 
   /** Options may also follow the file names (mainargs puts everything after the first file into `rest`). */
   def explainArgs(rest: Seq[String], jsonDir: Option[String], plots: Option[String], model: Option[String], quiet: Boolean,
-                  subdiv: Option[String] = None, noRtl: Boolean = false, html: Option[String] = None, htmlDir: Option[String] = None): Unit = {
+                  subdiv: Option[String] = None, noRtl: Boolean = false, html: Option[String] = None, htmlDir: Option[String] = None,
+                  minEffectLsb: Option[Double] = None, minEffectNoise: Option[Double] = None): Unit = {
     if (rest.contains("--help") || rest.contains("-h")) { println(Usage); return }
     var j = jsonDir; var p = plots; var m = model; var q = quiet; val files = Seq.newBuilder[String]
     var h = html; var hd = htmlDir
-    var sd = subdiv; var nr = noRtl
+    var sd = subdiv; var nr = noRtl; var ml = minEffectLsb; var mn = minEffectNoise
     var i = 0
     def value(o: String) = { i += 1; rest.lift(i).getOrElse(throw new ExplainError(s"$o needs a value")) }
+    def number(o: String): Double = { val v = value(o); moire.numbers.Decimal.double(v).getOrElse(throw new ExplainError(s"$o needs a number, got '$v'")) }
     while (i < rest.length) {
       rest(i) match {
         case "--json-dir" => j = Some(value("--json-dir"))
@@ -151,12 +154,16 @@ object ExplainCmd {
         case "--no-rtl" => nr = true
         case "--html" => h = Some(value("--html"))
         case "--html-dir" => hd = Some(value("--html-dir"))
+        case "--min-effect-lsb" => ml = Some(number("--min-effect-lsb"))
+        case "--min-effect-noise" => mn = Some(number("--min-effect-noise"))
         case o if o.startsWith("--") => throw new ExplainError(s"Unknown argument: $o (see --help)")
         case f => files += f
       }
       i += 1
     }
-    explain(files.result(), j, p, m, q, if (nr) None else Some(sd.toSeq.flatMap(_.trim.split("\\s+")).filter(_.nonEmpty)), h, hd)
+    val floor = try Materiality(ml.getOrElse(Materiality.MinLsb), mn.getOrElse(Materiality.MinNoise))
+      catch { case e: IllegalArgumentException => throw new ExplainError(e.getMessage.stripPrefix("requirement failed: ")) }
+    explain(files.result(), j, p, m, q, if (nr) None else Some(sd.toSeq.flatMap(_.trim.split("\\s+")).filter(_.nonEmpty)), h, hd, floor)
   }
 
   val Usage: String =
@@ -173,7 +180,11 @@ object ExplainCmd {
       |    --subdiv "OPTIONS"   emit-subdiv options of the board's subdivider (default: from the metadata adc_bits,
       |                         adc_format, counts_per_period); a recording with a position column is replayed through this
       |                         RTL (Verilator) and the board's outputs are compared with it, sample by sample
-      |    --no-rtl             do not compare board outputs with the RTL""".stripMargin
+      |    --no-rtl             do not compare board outputs with the RTL
+      |    --min-effect-lsb X   materiality floor: a finding changes the signal by at least X LSB (default 0.25) ...
+      |    --min-effect-noise F ... and F times the noise rms (default 0.1); smaller but significant: `negligible`
+      |  Effects (the catalogue; docs/explain.md says what each is):
+      |""".stripMargin + effects.Effects.help
 
   def kindOf(p: os.Path): String = {
     moire.files.PathKind.notAFile(p).foreach(m => throw new ExplainError(m))
@@ -219,10 +230,10 @@ object ExplainCmd {
   private def benchRecording(samples: Int, file: os.Path): os.Path = {
     val m = PhysicsModel(SignalParams(amplitude = 0.9, phaseErrorDeg = 1.0, noiseRms = 0.0007, seed = 7),
       moire.signal.Motion.Ramp(20e3, 250e3, samples / 10e6), 10e6, samples, Adc(12), None,
-      Seq(EffectSpec("channel_skew", Map("skew_s" -> 20e-9)), EffectSpec("bandwidth", Map("cutoff_hz" -> 600e3)),
-        EffectSpec("harmonic", Map("order" -> 3, "amplitude_rel" -> 0.001), "sin"),
-        EffectSpec("adc_bit_fault", Map("bit" -> 2, "stuck_at" -> 0), "cos"),
-        EffectSpec("interference", Map("frequency_hz" -> 50e3, "amplitude_fs" -> 3e-4))))
+      Seq(EffectSpec(effects.ChannelSkew.name, Map("skew_s" -> 20e-9)), EffectSpec(effects.Bandwidth.name, Map("cutoff_hz" -> 600e3)),
+        EffectSpec(effects.Harmonic.name, Map("order" -> 3, "amplitude_rel" -> 0.001), "sin"),
+        EffectSpec(effects.AdcBitFault.name, Map("bit" -> 2, "stuck_at" -> 0), "cos"),
+        EffectSpec(effects.Interference.name, Map("frequency_hz" -> 50e3, "amplitude_fs" -> 3e-4))))
     Recording.write(file, m.generate()._1)
     file
   }

@@ -10,8 +10,7 @@ object Identifiable {
   /** A free trajectory segment must span at least this many fringe periods. */
   val MinPeriodsPerSegment = 2.0
   /** Effects whose shape a free trajectory over a few periods can share. */
-  val Confounded: Set[String] = Set("harmonic", "drift", "interference", "amplitude_modulation", "adc_nonlinearity",
-    "crosstalk", "channel_skew", "bandwidth", "jitter", "eccentricity", "angle_harmonic", "warmup", "contrast_along_travel")
+  val Confounded: Set[String] = effects.Effects.signals.filter(e => e.confoundedWithMotion && e.searched).map(_.name).toSet
 
   /** Fringe periods one trajectory segment spans (the travel over the record divided by the segments). */
   def periodsPerSegment(e: SignalEngine): Double = {
@@ -25,7 +24,10 @@ object Identifiable {
 
   def why(c: Cand, e: SignalEngine, fMin: Double, fMax: Double): Option[String] =
     if (Confounded(c.effect) && motionConfounded(e)) Some(untested(e))
-    else if (c.effect == "jitter") referenceNoise(e, fMin, fMax)
+    else if (c.effect == effects.Jitter.name) referenceNoise(e, fMin, fMax)
+    // the reference's own noise (its quantization) moves the modelled phase: that is phase noise, whatever the speeds
+    else if (c.effect == effects.PhaseNoise.name && e.reference.isDefined)
+      Some(s"${c.effect}: not identifiable from the reference's own noise, which moves the modelled fringe phase the same way")
     else None
 
   /** Speed range (fastest / slowest fringe frequency) needed to tell clock jitter from the reference's own noise. */

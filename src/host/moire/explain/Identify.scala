@@ -12,8 +12,8 @@ object Identify {
       val alts = (if (e.spec.terms.contains(Term.Contrast)) Nil else Seq("a contrast change along the travel" -> (() => e.termCols(Term.Contrast)))) :+
         ("an amplitude change with speed" -> (() => speedCols(e)))
       beyond(e, t, alts)
-    case Some(Term.Contrast) if !e.spec.terms.exists(t => t == Term.Drift || t.isInstanceOf[Term.Warmup]) =>
-      beyond(e, Term.Contrast, Seq("a drift in time" -> (() => e.termCols(Term.Drift))))
+    case Some(t @ (Term.Contrast | Term.ContrastSpline(_))) if !e.spec.terms.exists(t => t == Term.Drift || t.isInstanceOf[Term.Warmup]) =>
+      beyond(e, t, Seq("a drift in time" -> (() => e.termCols(Term.Drift))))
     case _ => None
   }
 

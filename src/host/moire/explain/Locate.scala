@@ -10,7 +10,8 @@ object Locate {
   def zOf(chi2: Double, dof: Int): Double = (chi2 - dof) / math.sqrt(2.0 * dof)
   val Z = 6.0
 
-  def all(e: SignalEngine): Seq[Located] = {
+  /** Every test, or those whose `where` starts with a name `want` takes (the ones an effect claims). */
+  def all(e: SignalEngine, want: String => Boolean = _ => true): Seq[Located] = {
     val rs = e.resS; val rc = e.resC; val lsb = e.lsb
     val sdS = math.sqrt(e.noise.varS); val sdC = math.sqrt(e.noise.varC)
     val out = Seq.newBuilder[Located]
@@ -29,7 +30,7 @@ object Locate {
 
     // against time
     val tb = 32
-    for ((r, sd, ch) <- Seq((rs, sdS, "sin"), (rc, sdC, "cos"))) {
+    for ((r, sd, ch) <- Seq((rs, sdS, "sin"), (rc, sdC, "cos")) if want("against time")) {
       val (z, w, m, _) = binMeans(r, sd, tb, i => (i.toLong * tb / n).toInt)
       val t0 = w * n / tb / e.fs; val t1 = (w + 1) * n / tb / e.fs
       out += Located(s"against time, $ch channel", f"residual mean ${m / lsb}%.2f LSB at $t0%.4g..$t1%.4g s (chi-square ${z}%.1f sd)",
@@ -37,17 +38,17 @@ object Locate {
     }
     // against fringe phase
     val pb = 64
-    for ((r, sd, ch) <- Seq((rs, sdS, "sin"), (rc, sdC, "cos"))) {
+    for ((r, sd, ch) <- Seq((rs, sdS, "sin"), (rc, sdC, "cos")) if want("against fringe phase")) {
       val (z, w, m, _) = binMeans(r, sd, pb, i => { val p = e.phase(i) - math.floor(e.phase(i)); math.min(pb - 1, (p * pb).toInt) })
       out += Located(s"against fringe phase, $ch channel", f"residual mean ${m / lsb}%.2f LSB near ${360.0 * (w + 0.5) / pb}%.0f degree (chi-square $z%.1f sd)",
         Map("chi2_sd" -> z, "phase_deg" -> 360.0 * (w + 0.5) / pb, "mean_lsb" -> m / lsb), z > Z)
     }
     // against speed: in-phase (amplitude) and quadrature (phase) projections per speed bin
-    val sorted = e.freq.map(math.abs); java.util.Arrays.sort(sorted)
+    lazy val sorted = { val a = e.freq.map(math.abs); java.util.Arrays.sort(a); a }
     val sb = 8
-    val edges = (1 until sb).map(k => sorted(k * n / sb))
+    lazy val edges = (1 until sb).map(k => sorted(k * n / sb))
     def sbin(i: Int) = { val f = math.abs(e.freq(i)); var b = 0; while (b < edges.size && f > edges(b)) b += 1; b }
-    if (sorted(n - 1) - sorted(0) > 0.05 * sorted(n - 1)) {
+    if ((want("against speed") || want("noise against speed")) && sorted(n - 1) - sorted(0) > 0.05 * sorted(n - 1)) {
       for ((r, sd, u, v, ch) <- Seq[(Array[Double], Double, Int => Double, Int => Double, String)]((rs, sdS, e.us(_), e.vs(_), "sin"), (rc, sdC, e.uc(_), e.vc(_), "cos"))) {
         val pu = new Array[Double](sb); val pv = new Array[Double](sb); val uu = new Array[Double](sb); val vv = new Array[Double](sb)
         var i = 0
@@ -73,7 +74,7 @@ object Locate {
     }
     // spectrum
     val m = Integer.highestOneBit(math.min(n, 1 << 18))
-    if (m >= 256) {
+    if (m >= 256 && want("spectrum")) {
       for ((r, ch) <- Seq((rs, "sin"), (rc, "cos"))) {
         val p = Fft.power(r, m).drop(1)
         val mean = p.sum / p.size
@@ -85,9 +86,9 @@ object Locate {
       }
     }
     // per channel
-    out += Located("per channel", f"residual rms sin ${sdS / lsb}%.2f LSB, cos ${sdC / lsb}%.2f LSB", Map("rms_sin_lsb" -> sdS / lsb, "rms_cos_lsb" -> sdC / lsb), false)
+    if (want("per channel")) out += Located("per channel", f"residual rms sin ${sdS / lsb}%.2f LSB, cos ${sdC / lsb}%.2f LSB", Map("rms_sin_lsb" -> sdS / lsb, "rms_cos_lsb" -> sdC / lsb), false)
     // code histogram: constant bits and pile-ups at the extremes
-    for ((codes, ch) <- Seq((e.rec.sin, "sin"), (e.rec.cos, "cos"))) {
+    for ((codes, ch) <- Seq((e.rec.sin, "sin"), (e.rec.cos, "cos")) if want("code histogram")) {
       val bits = e.rec.adc.bits
       val adc = e.rec.adc
       val pins = new Array[Int](1 << bits); codes.foreach(c => pins(c) += 1)

@@ -3,6 +3,9 @@ package moire.explain
 import moire.recording.Recording
 import moire.signal._
 
+import moire.explain.{effects => fx}
+import moire.explain.effects.{Effect, Effects}
+
 import scala.util.Random
 
 /** The physics model of the measurement chain, forward direction (`simulate`).
@@ -24,30 +27,15 @@ final case class PhysicsModel(
 ) {
   require(sampleRateHz > 0, s"sample rate must be > 0, got $sampleRateHz")
   require(samples > 0, s"samples must be > 0, got $samples")
-  private def all(name: String) = effects.filter(_.effect == name)
+  private def all(x: Effect) = effects.filter(_.effect == x.name)
 
   /** The harmonics of the model: those of `base` and the `harmonic` effects. */
-  def signalParams: SignalParams = base.copy(harmonics = base.harmonics ++ all("harmonic").map { e =>
+  def signalParams: SignalParams = base.copy(harmonics = base.harmonics ++ all(fx.Harmonic).map { e =>
     val ch = e.channel match { case "sin" => Channel.Sin; case "cos" => Channel.Cos; case _ => Channel.Both }
     Harmonic(e.p("order", 2).toInt, e.p("amplitude_rel", 0.0), e.p("phase_deg", 0.0), ch)
   })
 
-  def validate(): Unit = {
-    for (name <- Seq("amplitude_modulation", "eccentricity", "angle_harmonic") if all(name).nonEmpty && linesPerRev.isEmpty)
-      throw new ExplainError(s"$name needs lines_per_rev (--lines-per-rev)")
-    effects.foreach { e =>
-      if (EffectSpec.calibrationEffects.exists(_._1 == e.effect)) throw new ExplainError(s"${e.effect} applies to calibration data, not to signals")
-      if (e.effect == "harmonic" && e.p("order", 2) < 2) throw new ExplainError("harmonic order must be >= 2")
-      if (e.effect == "bandwidth" && !(e.p("cutoff_hz") > 0)) throw new ExplainError("bandwidth needs cutoff_hz > 0")
-      if (e.effect == "warmup" && !(e.p("time_constant_s") > 0)) throw new ExplainError("warmup needs time_constant_s > 0")
-      if (e.effect == "coarse_quantization" && !(e.p("effective_bits") >= 4 && e.p("effective_bits") <= adc.bits))
-        throw new ExplainError(s"coarse_quantization effective_bits must be in 4..${adc.bits}")
-      if (e.effect == "adc_bit_fault") {
-        val b = e.p("bit"); if (!(b >= 0 && b < adc.bits)) throw new ExplainError(s"adc_bit_fault bit must be in 0..${adc.bits - 1}")
-        if (e.channel == "both") throw new ExplainError("adc_bit_fault needs channel=sin or channel=cos")
-      }
-    }
-  }
+  def validate(): Unit = effects.foreach(e => Effects(e.effect).foreach(_.validate(e, this)))
 
   /** Generates the recording (codes on the pins) and the true fringe phase in periods. */
   def generate(): (Recording, Array[Double]) = {
@@ -56,42 +44,46 @@ final case class PhysicsModel(
     val rnd = new Random(p.seed); val rndJ = new Random(p.seed * 31 + 7)
     val n = samples; val fs = sampleRateHz
     val sin = new Array[Int](n); val cos = new Array[Int](n); val truth = new Array[Double](n)
-    val skew = all("channel_skew").map(_.p("skew_s", 0.0)).sum
-    val jitter = all("jitter").map(_.p("jitter_s", 0.0)).headOption.getOrElse(0.0)
-    val bw = all("bandwidth")
+    val skew = all(fx.ChannelSkew).map(_.p("skew_s", 0.0)).sum
+    val jitter = all(fx.Jitter).map(_.p("jitter_s", 0.0)).headOption.getOrElse(0.0)
+    val bw = all(fx.Bandwidth)
     def bwOn(ch: String) = bw.filter(e => e.channel == ch || e.channel == "both").map(_.p("cutoff_hz"))
     val bwS = bwOn("sin"); val bwC = bwOn("cos")
-    val drift = all("drift")
+    val drift = all(fx.Drift)
     def d(k: String) = drift.map(_.p(k, 0.0)).sum
     val (dos, doc, dgs, dgc) = (d("offset_sin_per_s"), d("offset_cos_per_s"), d("gain_sin_per_s"), d("gain_cos_per_s"))
-    val am = all("amplitude_modulation")
-    val ct = all("contrast_along_travel"); def cp(k: String) = ct.map(_.p(k, 0.0)).sum
+    val am = all(fx.AmplitudeModulation)
+    val ct = all(fx.ContrastAlongTravel); def cp(k: String) = ct.map(_.p(k, 0.0)).sum
     val (cos0, coc, cgs, cgc) = (cp("offset_sin_per_period"), cp("offset_cos_per_period"), cp("gain_sin_per_period"), cp("gain_cos_per_period"))
     val x0 = motion.periods(0)
-    val warm = all("warmup"); def wp(k: String) = warm.map(_.p(k, 0.0)).sum
+    val warm = all(fx.Warmup); def wp(k: String) = warm.map(_.p(k, 0.0)).sum
     val (wos, woc, wgs, wgc) = (wp("offset_sin_step_fs"), wp("offset_cos_step_fs"), wp("gain_sin_step_rel"), wp("gain_cos_step_rel"))
     val wtau = warm.map(_.p("time_constant_s", 1.0)).headOption.getOrElse(1.0)
-    val coarse = all("coarse_quantization").map(_.p("effective_bits", adc.bits.toDouble).toInt).headOption.filter(_ < adc.bits)
-    val xt = all("crosstalk"); val tauSC = xt.map(_.p("sin_from_cos_tau_s", 0.0)).sum; val tauCS = xt.map(_.p("cos_from_sin_tau_s", 0.0)).sum
-    val inter = all("interference")
-    val clip = all("clipping")
-    val inl = all("adc_nonlinearity"); val inl2 = inl.map(_.p("inl2_lsb", 0.0)).sum; val inl3 = inl.map(_.p("inl3_lsb", 0.0)).sum
-    val faults = all("adc_bit_fault")
+    val coarse = all(fx.CoarseQuantization).map(_.p("effective_bits", adc.bits.toDouble).toInt).headOption.filter(_ < adc.bits)
+    val xt = all(fx.Crosstalk); val tauSC = xt.map(_.p("sin_from_cos_tau_s", 0.0)).sum; val tauCS = xt.map(_.p("cos_from_sin_tau_s", 0.0)).sum
+    val inter = all(fx.Interference)
+    val clip = all(fx.Clipping)
+    // INL per ADC: the effects on that channel (or both)
+    def inlOn(isSin: Boolean, k: String) = all(fx.AdcNonlinearity).filter(e => e.channel == "both" || (e.channel == "sin") == isSin).map(_.p(k, 0.0)).sum
+    val (inl2S, inl3S, inl2C, inl3C) = (inlOn(true, "inl2_lsb"), inlOn(true, "inl3_lsb"), inlOn(false, "inl2_lsb"), inlOn(false, "inl3_lsb"))
+    val faults = all(fx.AdcBitFault)
     // read-angle errors of the mechanical angle (eccentricity, its harmonics), in turns
-    val angleErr = all("eccentricity").map(e => (1, e.p("eccentricity_rel", 0.0) / (2 * math.Pi), e.p("phase_deg", 0.0))) ++
-      all("angle_harmonic").map(e => (e.p("order", 2).toInt, e.p("amplitude_arcsec", 0.0) / 1296000, e.p("phase_deg", 0.0)))
+    val angleErr = all(fx.Eccentricity).map(e => (1, e.p("eccentricity_rel", 0.0) / (2 * math.Pi), e.p("phase_deg", 0.0))) ++
+      all(fx.AngleHarmonic).map(e => (e.p("order", 2).toInt, e.p("amplitude_arcsec", 0.0) / 1296000, e.p("phase_deg", 0.0)))
     def periods(t: Double): Double = {
       val q = motion.periods(t)
       if (angleErr.isEmpty) q
       else { val l = linesPerRev.get; val th = 2 * math.Pi * q / l; q + l * angleErr.map { case (m, a, p) => a * math.sin(m * th + math.toRadians(p)) }.sum }
     }
-    val plain = skew == 0 && jitter == 0 && bw.isEmpty && drift.isEmpty && am.isEmpty && xt.isEmpty && inter.isEmpty && ct.isEmpty && warm.isEmpty && angleErr.isEmpty
+    val phaseNoise = all(fx.PhaseNoise).map(_.p("phase_noise_rad", 0.0)).headOption.getOrElse(0.0) / (2 * math.Pi)
+    val rndP = new Random(p.seed * 17 + 5); var dph = 0.0 // this sample's phase noise (periods), the same on both channels
+    val plain = phaseNoise == 0 && skew == 0 && jitter == 0 && bw.isEmpty && drift.isEmpty && am.isEmpty && xt.isEmpty && inter.isEmpty && ct.isEmpty && warm.isEmpty && angleErr.isEmpty
     val eps = 1e-6
 
     /** One channel's value: fringe through the low-pass and the slow effects. */
     def channel(isSin: Boolean, t: Double): Double = {
       val f = motion.frequency(t)
-      var ph = periods(t); var g = 1.0
+      var ph = periods(t) + dph; var g = 1.0
       (if (isSin) bwS else bwC).foreach { fc => val u = f / fc; g /= math.sqrt(1 + u * u); ph -= math.atan(u) / (2 * math.Pi) }
       val o = if (isSin) p.offsetSin else p.offsetCos
       def raw(q: Double) = { val a = SignalSim.analog(p, q); (if (isSin) a._1 else a._2) - o }
@@ -114,6 +106,7 @@ final case class PhysicsModel(
       clip.filter(e => e.channel == "both" || (e.channel == "sin") == isSin).foreach { e =>
         v = math.min(e.p("high_fs", 2.0), math.max(e.p("low_fs", -2.0), v))
       }
+      val inl2 = if (isSin) inl2S else inl2C; val inl3 = if (isSin) inl3S else inl3C
       if (inl2 != 0 || inl3 != 0) v += (inl2 * (2 * v * v - 1) + inl3 * (4 * v * v * v - 3 * v)) * adc.lsb
       var code = coarse match {
         case Some(eb) => adc.pins(math.max(-adc.half, Adc(eb).signedCode(v).code << (adc.bits - eb)))
@@ -130,6 +123,7 @@ final case class PhysicsModel(
       if (plain) { val a = SignalSim.analog(p, truth(i)); s = a._1; c = a._2 }
       else {
         val tj = t + (if (jitter > 0) jitter * rndJ.nextGaussian() else 0.0)
+        dph = if (phaseNoise > 0) phaseNoise * rndP.nextGaussian() else 0.0
         s = channel(isSin = true, tj); c = channel(isSin = false, tj + skew)
       }
       s += p.noiseRms * rnd.nextGaussian(); c += p.noiseRms * rnd.nextGaussian()

@@ -102,24 +102,24 @@ object Plots {
         Array.tabulate(bins)(k => if (uu(k) > 0) 100 * pu(k) / uu(k) else Double.NaN))
     }
     val title = s"$stem: ${f.effect} (${f.channel}), residual before and after"
-    f.effect match {
-      case "channel_skew" | "bandwidth" | "crosstalk" =>
+    effects.Effects(f.effect).fold[effects.PlotKind](effects.PlotKind.FringePhase)(_.plot) match {
+      case effects.PlotKind.Speed(phaseOnly) =>
         // phase on the left axis (degree), amplitudes on the right one (%)
         val c = chart(title, "fringe frequency (kHz)", "cos - sin phase left in the residual (degree)")
         for (s <- Seq(b, a)) {
           val (x, ps, as) = phaseDev(s, e.us(_), e.vs(_), _.resS); val (_, pc, ac) = phaseDev(s, e.uc(_), e.vc(_), _.resC)
           line(c, s"cos - sin phase (degree), ${s.label}", x, pc.zip(ps).map { case (p, q) => p - q })
-          if (f.effect != "channel_skew") for ((ch, am) <- Seq("sin" -> as, "cos" -> ac)) {
+          if (!phaseOnly) for ((ch, am) <- Seq("sin" -> as, "cos" -> ac)) {
             line(c, s"$ch amplitude (%), ${s.label}", x, am)
             Option(c.getSeriesMap.get(s"$ch amplitude (%), ${s.label}")).foreach(_.setYAxisGroup(1))
           }
         }
-        if (f.effect != "channel_skew") {
+        if (!phaseOnly) {
           c.setYAxisGroupTitle(1, "amplitude left in the residual (%)")
           c.getStyler.setYAxisGroupPosition(1, org.knowm.xchart.style.Styler.YAxisPosition.Right)
         }
         save(c, path)
-      case "jitter" =>
+      case effects.PlotKind.Slope =>
         val c = chart(title, "|signal slope| (full scale per microsecond)", "residual rms (LSB)")
         val (ds, dc) = e.slopes(); val hi = (ds.map(math.abs).max max dc.map(math.abs).max) * 1e-6 + 1e-12
         for (s <- Seq(b, a)) {
@@ -127,10 +127,10 @@ object Plots {
           val (x2, y2) = binned(j => math.abs(dc(j * s.stride)) * 1e-6, j => s.resC(j) / lsb, s.size, 0, hi, 24, rms = true); line(c, s"cos, ${s.label}", x2, y2)
         }
         save(c, path)
-      case "drift" | "warmup" | "contrast_along_travel" =>
+      case kind @ (effects.PlotKind.Time | effects.PlotKind.Position) =>
         // the amplitude left in the residual (sum r u / sum u^2 per bin), against time or the position along the travel
         val (xf, xl): (Int => Double, String) =
-          if (f.effect == "contrast_along_travel") (i => e.phase(i) - e.phase(0), "position from the start (fringe periods)")
+          if (kind == effects.PlotKind.Position) (i => e.phase(i) - e.phase(0), "position from the start (fringe periods)")
           else (i => i / e.fs, "time (s)")
         var lo = Double.MaxValue; var hi = -Double.MaxValue
         for (i <- 0 until n) { val v = xf(i); lo = math.min(lo, v); hi = math.max(hi, v) }
@@ -142,7 +142,7 @@ object Plots {
           line(c, s"$ch, ${s.label}", x, num.zip(den).map { case (p, q) => 100 * p / q })
         }
         save(c, path)
-      case "amplitude_modulation" =>
+      case effects.PlotKind.MechanicalAngle =>
         val l = e.rec.linesPerRev.getOrElse(1.0)
         val c = chart(title, "mechanical angle (degree)", "amplitude left in the residual (%)")
         for (s <- Seq(b, a)) {
@@ -154,14 +154,14 @@ object Plots {
           line(c, s.label, x, num.zip(den).map { case (p, q) => 100 * p / q })
         }
         save(c, path)
-      case "adc_nonlinearity" | "adc_bit_fault" | "clipping" =>
+      case effects.PlotKind.Level =>
         val c = chart(title, "predicted value (full scale)", "mean residual (LSB)")
         val (ps, pc) = (e.predS, e.predC)
         for (s <- Seq(b, a); (r, p, ch) <- Seq((s.resS, ps, "sin"), (s.resC, pc, "cos"))) {
           val (x, y) = binned(j => p(j * s.stride), j => r(j) / lsb, s.size, -1, 1, 128); line(c, s"$ch, ${s.label}", x, y)
         }
         save(c, path)
-      case "interference" => spectrum(title, Seq(b, a), e, path)
+      case effects.PlotKind.Spectrum => spectrum(title, Seq(b, a), e, path)
       case _ =>
         val c = chart(title, "fringe phase (degree)", "mean residual (LSB)")
         for (s <- Seq(b, a); (r, ch) <- Seq((s.resS, "sin"), (s.resC, "cos")) if f.channel == "both" || f.channel == ch) {

@@ -20,12 +20,7 @@ object Quantization {
 
   /** Effects that are functions of the signal value (harmonics, INL) smaller than the quantization bias are not findings. */
   def why(e: SignalEngine, c: Cand): Option[String] = {
-    def g(k: String) = c.params.getOrElse(k, 0.0)
-    val amp = c.effect match {
-      case "harmonic" => math.max(g("amplitude_rel"), math.max(g("amplitude_sin_rel"), g("amplitude_cos_rel"))) * math.max(e.ampS, e.ampC)
-      case "adc_nonlinearity" => (math.abs(g("inl2_lsb")) + math.abs(g("inl3_lsb"))) * e.lsb
-      case _ => return None
-    }
+    val amp = effects.Effects(c.effect).flatMap(_.valueAmplitude(c, e)).getOrElse(return None)
     val b = biasBound(e)
     if (amp >= b) None
     else Some(f"its amplitude ${amp / e.step}%.3g step is within what quantization makes at this noise (${b / e.step}%.3g step; " +

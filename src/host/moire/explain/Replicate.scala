@@ -28,21 +28,49 @@ object Replicate {
     * clipping), else where and how large.
     */
   def why(e: SignalEngine, prev: ModelSpec): Option[String] = {
-    val halves = folds(e.n)
     val sp = e.spec
     lazy val cands = new Candidates(e)
+    def parts(x: effects.Effect) = splits(e, x)
     sp.terms.diff(prev.terms).headOption match {
-      case Some(t: Term.Interference) => interferenceWhy(e, t, halves)
-      case Some(t) => agree(linearFolds(e, t, halves), "halves", t.name)
+      case Some(t: Term.Interference) => val (f, w) = parts(t.effect); interferenceWhy(e, t, f, w)
+      case Some(t) => val (f, w) = parts(t.effect); agree(linearFolds(e, t, f), w, t.name)
       case None =>
-        if (sp.jitter && !prev.jitter) jitterWhy(e, halves)
-        else if (sp.hasSkew && !prev.hasSkew)
-          agree(profileFolds(e, cands, halves, sp.skewS, x => sp.copy(skewS = x), math.max(math.abs(sp.skewS), 1e-10)), "halves", "skew")
-        else sp.bw.find { case (ch, _) => !prev.bw.contains(ch) } match {
-          case Some((ch, fc)) => agree(profileFolds(e, cands, halves, 1 / fc, x => sp.copy(bw = sp.bw + (ch -> 1 / x)), 1 / fc), "halves", "1 / cut-off")
+        if (sp.jitter && !prev.jitter) { val (f, w) = parts(effects.Jitter); jitterWhy(e, f, w, e.slopes(), "jitter variance") }
+        else if (sp.phaseNoise && !prev.phaseNoise) {
+          val (f, w) = parts(effects.PhaseNoise); jitterWhy(e, f, w, e.phaseSlopes(), "phase noise variance")
+        }
+        else if (sp.hasSkew && !prev.hasSkew) {
+          val (f, w) = parts(effects.ChannelSkew)
+          agree(profileFolds(e, cands, f, sp.skewS, x => sp.copy(skewS = x), math.max(math.abs(sp.skewS), 1e-10)), w, "skew")
+        } else sp.bw.find { case (ch, _) => !prev.bw.contains(ch) } match {
+          case Some((ch, fc)) =>
+            val (f, w) = parts(effects.Bandwidth)
+            agree(profileFolds(e, cands, f, 1 / fc, x => sp.copy(bw = sp.bw + (ch -> 1 / x)), 1 / fc), w, "1 / cut-off")
           case None => None
         }
     }
+  }
+
+  /** Interleaved blocks per part: each part takes every other block of n / `Blocks` samples. */
+  val Blocks = 64
+  /** A periodic effect is split into contiguous halves when each half covers at least this many of its cycles. */
+  val MinCycles = 2.0
+
+  /** The replication parts of an effect, covering its domain, and their name: contiguous halves for effects of time (and
+    * periodic effects whose cycle each half covers `MinCycles` times); interleaved blocks, so that each part covers the
+    * whole cycle, for periodic effects of a record of a few cycles (one turn of a magnet) and for effects of speed (each
+    * part spans the speed range).
+    */
+  def splits(e: SignalEngine, x: effects.Effect): (Seq[Array[Int]], String) = x.domain match {
+    case effects.Domain.Periodic if x.cycles(e) >= 2 * MinCycles => (folds(e.n), "halves")
+    case effects.Domain.Periodic | effects.Domain.Speed => (interleaved(e.n), "interleaved halves")
+    case _ => (folds(e.n), "halves")
+  }
+
+  /** Two parts of alternating blocks of n / `Blocks` samples. */
+  def interleaved(n: Int): Seq[Array[Int]] = {
+    val b = math.max(1, n / Blocks)
+    Seq(0, 1).map(p => (0 until n).filter(i => (i / b) % 2 == p).toArray)
   }
 
   /** The residual with the term's own fitted part added back (what the term alone has to explain). */
@@ -57,7 +85,7 @@ object Replicate {
   /** An interference line: on each half its frequency (searched near the full-record value) and its amplitude on each
     * channel. A line whose frequency or amplitude differs between the halves is not a fixed-frequency pickup.
     */
-  def interferenceWhy(e: SignalEngine, t: Term.Interference, halves: Seq[Array[Int]]): Option[String] = {
+  def interferenceWhy(e: SignalEngine, t: Term.Interference, halves: Seq[Array[Int]], what: String): Option[String] = {
     val (ys, yc) = target(e, t)
     val cands = new Candidates(e)
     val at = e.termIndex(t); val b = e.sol.beta
@@ -87,7 +115,7 @@ object Replicate {
         Some(Est(Array(hz, as, ac), Array(Array(sdF * sdF, 0, 0), Array(0, sdA * sdA, 0), Array(0, 0, sdA * sdA)), Array(0.0, floorA, floorA)))
       }
     }
-    agree(ests, "halves", "frequency (Hz) and amplitudes (full scale)")
+    agree(ests, what, "frequency (Hz) and amplitudes (full scale)")
   }
 
   /** Contiguous halves of the record. */
@@ -147,8 +175,8 @@ object Replicate {
     }
 
   /** Jitter: the same jitter on both halves and in every speed band (noise growing with slope wherever it can show). */
-  def jitterWhy(e: SignalEngine, halves: Seq[Array[Int]]): Option[String] = {
-    val (ds, dc) = e.slopes()
+  def jitterWhy(e: SignalEngine, halves: Seq[Array[Int]], what: String, sl: (Array[Double], Array[Double]), name: String): Option[String] = {
+    val (ds, dc) = sl
     def est(idx: Array[Int]): Option[Est] = {
       val a = pick(ds, idx); val b = pick(dc, idx)
       val cens = if (e.cens == null) null else Repaired(null, null, pick(e.cens.censS, idx), pick(e.cens.censC, idx))
@@ -167,7 +195,7 @@ object Replicate {
       while (i < e.n) { if (f(i) >= edges(b) && f(i) < edges(b + 1)) out += i; i += 1 }
       out.result()
     }
-    agree(halves.map(est), "halves", "jitter variance").orElse(agree(bands.map(est), "speed bands", "jitter variance"))
+    agree(halves.map(est), what, name).orElse(agree(bands.map(est), "speed bands", name))
       .orElse(quantizationJitter(e, ds, dc))
   }
 

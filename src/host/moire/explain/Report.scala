@@ -8,7 +8,8 @@ final case class Located(where: String, summary: String, params: Map[String, Dou
 /** The JSON report of one file. Information criterion: BIC = -2 ln L + k ln n (n = observations). */
 final case class Report(file: String, kind: String, baselineRms: Double, baselineBic: Double, baseline: Map[String, Double],
                         located: Seq[Located], findings: Seq[Finding], unexplained: Seq[Located], finalRms: Double, finalBic: Double,
-                        samples: Int, seconds: Double, notes: Seq[String] = Nil, untested: Seq[String] = Nil) {
+                        samples: Int, seconds: Double, notes: Seq[String] = Nil, untested: Seq[String] = Nil,
+                        negligible: Seq[Negligible] = Nil, misfit: Seq[Located] = Nil) {
   def json: ujson.Obj = ujson.Obj(
     "file" -> file, "kind" -> kind, "criterion" -> s"BIC = -2 ln L + k ln n; an effect is accepted when it lowers BIC by more than ${SignalExplain.Threshold}",
     "samples" -> samples,
@@ -16,6 +17,8 @@ final case class Report(file: String, kind: String, baselineRms: Double, baselin
     "located" -> ujson.Arr(located.map(_.json): _*),
     "findings" -> ujson.Arr(findings.map(_.json): _*),
     "unexplained" -> ujson.Arr(unexplained.map(_.json): _*),
+    "negligible" -> ujson.Arr(negligible.map(_.json): _*),
+    "misfit" -> ujson.Arr(misfit.map(_.json): _*),
     "final" -> ujson.Obj("rms" -> finalRms, "bic" -> finalBic),
     "notes" -> ujson.Arr(notes.map(ujson.Str(_)): _*),
     "not_tested" -> ujson.Arr(untested.map(ujson.Str(_)): _*),
@@ -30,9 +33,12 @@ final case class Report(file: String, kind: String, baselineRms: Double, baselin
     findings.filter(_.deltaBic.isNaN).foreach(f => sb ++= s"  finding ${f.effect} (${f.where}): ${f.summary}\n")
     findings.filterNot(_.deltaBic.isNaN).foreach { f =>
       sb ++= f"  finding ${f.effect} (delta BIC ${f.deltaBic}%.1f, rms ${f.rmsBefore}%.4g -> ${f.rmsAfter}%.4g): ${f.summary}\n"
+      f.lookAlikes.foreach(l => sb ++= s"    look-alike: $l\n")
       sb ++= "    " + f.params.toSeq.sortBy(_._1).map { case (k, v) => f"$k = $v%.5g +- ${f.unc.getOrElse(k, Double.NaN)}%.2g" }.mkString(", ") + "\n"
     }
+    misfit.foreach(u => sb ++= s"  misfit: ${u.where}: ${u.summary}\n")
     unexplained.foreach(u => sb ++= s"  unexplained: ${u.where}: ${u.summary}\n")
+    negligible.foreach(u => sb ++= s"  negligible: ${u.json("summary").str}\n")
     notes.foreach(n => sb ++= s"  note: $n\n")
     untested.foreach(n => sb ++= s"  not tested: $n\n")
     sb ++= f"  final rms $finalRms%.4g, BIC $finalBic%.6g ($seconds%.1f s)\n"

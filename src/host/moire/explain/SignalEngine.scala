@@ -37,7 +37,9 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
   /** The fundamentals' columns (sin, cos channel): the plain sin and cos of the phase unless the spec skews or filters
     * a channel, then arrays of their own (allocated on first need).
     */
-  var s1: Array[Double] = plainSin; var s2: Array[Double] = plainCos; var c1: Array[Double] = plainSin; var c2: Array[Double] = plainCos
+  private var _s1: Array[Double] = plainSin; private var _s2: Array[Double] = plainCos
+  private var _c1: Array[Double] = plainSin; private var _c2: Array[Double] = plainCos
+  def s1: Array[Double] = _s1; def s2: Array[Double] = _s2; def c1: Array[Double] = _c1; def c2: Array[Double] = _c2
   /** The fitted fundamental (u) and its derivative by the fringe phase (v) per channel at sample i, from the default
     * part and the fundamentals' columns (not stored: four fewer arrays of the record's length).
     */
@@ -45,20 +47,31 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
   @inline final def vs(i: Int): Double = base(1) * s2(i) - base(2) * s1(i)
   @inline final def uc(i: Int): Double = base(4) * c1(i) + base(5) * c2(i)
   @inline final def vc(i: Int): Double = base(4) * c2(i) - base(5) * c1(i)
-  var repS: Array[Double] = ys; var repC: Array[Double] = yc
-  var cens: Repaired = Repaired(ys, yc, null, null)
+  // The fit's state: private, read through the methods below (the caller sets `spec` and refits)
+  private var _repS: Array[Double] = ys; private var _repC: Array[Double] = yc
+  private var _cens: Repaired = Repaired(ys, yc, null, null)
+  /** The measured values with faults undone and censored samples at the prediction (the data the model is fitted to). */
+  def repS: Array[Double] = _repS; def repC: Array[Double] = _repC
+  def cens: Repaired = _cens
   val resS = new Array[Double](n); val resC = new Array[Double](n)
 
   var spec: ModelSpec = ModelSpec()
-  var base: Array[Double] = new Array[Double](6)
-  var sol: LinSol = _
-  var termIndex: Map[Term, Int] = Map.empty
-  var noise: Noise = Noise(1, 1, 0, 0)
-  var traj: PhaseTrack = _
+  private var _base: Array[Double] = new Array[Double](6)
+  private var _sol: LinSol = _
+  private var _termIndex: Map[Term, Int] = Map.empty
+  private var _noise: Noise = Noise(1, 1, 0, 0)
+  private var _traj: PhaseTrack = _
+  /** The default part's coefficients (offset, sin, cos of each channel), the joint fit, where each term's coefficients
+    * start in it, the noise model and the phase trajectory.
+    */
+  def base: Array[Double] = _base; def sol: LinSol = _sol; def termIndex: Map[Term, Int] = _termIndex
+  def noise: Noise = _noise; def traj: PhaseTrack = _traj
   /** The reference the phase follows (None: the trajectory is fitted from the signals), and why one was not used. */
-  var reference: Option[RefTrajectory] = None
-  var referenceRefused: Option[String] = None
-  var typicalHz = 0.0
+  private var _reference: Option[RefTrajectory] = None
+  private var _referenceRefused: Option[String] = None
+  private var _typicalHz = 0.0
+  def reference: Option[RefTrajectory] = _reference; def referenceRefused: Option[String] = _referenceRefused
+  def typicalHz: Double = _typicalHz
 
   def ampS: Double = math.hypot(base(1), base(2))
   def ampC: Double = math.hypot(base(4), base(5))
@@ -90,10 +103,10 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
     }
     val blk = math.max(16, math.min(4096, n / 64))
     val speeds = (0 until n / blk).map(b => math.abs(raw((b + 1) * blk - 1) - raw(b * blk)) * fs / (blk - 1)).sorted
-    typicalHz = if (speeds.isEmpty) 0.0 else speeds(speeds.size / 2)
+    _typicalHz = if (speeds.isEmpty) 0.0 else speeds(speeds.size / 2)
     def start(t: PhaseTrack, first: Array[Double]): Unit = {
-      traj = t; traj.addFit(first, null); evalTraj()
-      base = Array(os, as, 0, oc, 0, ac); spec = ModelSpec(); cens = Repaired(ys, yc, null, null); repS = ys; repC = yc
+      _traj = t; traj.addFit(first, null); evalTraj()
+      _base = Array(os, as, 0, oc, 0, ac); spec = ModelSpec(); _cens = Repaired(ys, yc, null, null); _repS = ys; _repC = yc
       refit(4, refineTraj = true)
     }
     /** The trajectory from the signals: of segments spanning 16, 6 or 2.5 fringe periods, the one with the lowest BIC. */
@@ -112,17 +125,17 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
       val rms = phaseRms
       val stepPeriods = math.abs(rt.k) * RefTrajectory.step(r.values)
       if (rms > RefTrajectory.MaxPhaseRms)
-        referenceRefused = Some(f"the signals follow ${r.column} only within ${rms * 360}%.1f degree of fringe phase rms " +
+        _referenceRefused = Some(f"the signals follow ${r.column} only within ${rms * 360}%.1f degree of fringe phase rms " +
           f"(at most ${RefTrajectory.MaxPhaseRms * 360}%.0f): not used, the motion is fitted from the signals")
       else if (stepPeriods > RefTrajectory.MaxStepPeriods) {
         // A coarse reference (an A/B count) knows the phase only to its step, the signals far better: where their
         // own trajectory is identifiable (segments over several periods) it is used; else the reference is.
         freeFit()
         if (Identifiable.periodsPerSegment(this) >= Identifiable.MinPeriodsPerSegment)
-          referenceRefused = Some(f"${r.column} moves in steps of ${stepPeriods}%.4g fringe period (coarser than " +
+          _referenceRefused = Some(f"${r.column} moves in steps of ${stepPeriods}%.4g fringe period (coarser than " +
             f"${RefTrajectory.MaxStepPeriods}%.4g) and the record spans enough periods to fit the motion from the signals: not used")
-        else reference = Some(fit(best))
-      } else reference = Some(rt)
+        else _reference = Some(fit(best))
+      } else _reference = Some(rt)
     }
     if (reference.isEmpty && !traj.isInstanceOf[Trajectory]) freeFit()
   }
@@ -151,8 +164,24 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
 
   def evalTraj(): Unit = {
     traj.eval(phase, freq)
+    range = null
     setFundamentals()
   }
+
+  private var range: (Double, Double) = null
+  /** The 2 % and 98 % points of the fringe frequency's magnitude (Hz): the speed range the record spans. */
+  def speedRange: (Double, Double) = {
+    if (range == null) {
+      val a = freq.map(math.abs); java.util.Arrays.sort(a)
+      def pct(q: Double) = a(math.min(n - 1, (q * n).toInt))
+      range = (pct(0.02), pct(0.98))
+    }
+    range
+  }
+  /** Fringe periods travelled over the record (both directions counted). */
+  def travelPeriods: Double = { var s = 0.0; var i = 0; while (i < n) { s += math.abs(freq(i)); i += 1 }; s / fs }
+  def fMin: Double = speedRange._1
+  def fMax: Double = speedRange._2
 
   /** 2 pi times the fractional fringe phase of sample i. */
   @inline final def angle(i: Int): Double = 2 * math.Pi * (phase(i) - math.floor(phase(i)))
@@ -160,11 +189,11 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
   /** s1, s2, c1, c2 for the current phase and spec. */
   private def setFundamentals(): Unit = {
     if (!spec.hasSkew && spec.bw.isEmpty) {
-      s1 = plainSin; s2 = plainCos; c1 = plainSin; c2 = plainCos
+      _s1 = plainSin; _s2 = plainCos; _c1 = plainSin; _c2 = plainCos
       var i = 0
       while (i < n) { val a = angle(i); plainSin(i) = math.sin(a); plainCos(i) = math.cos(a); i += 1 }
     } else {
-      if (s1 eq plainSin) { s1 = new Array[Double](n); s2 = new Array[Double](n); c1 = plainSin; c2 = plainCos }
+      if (s1 eq plainSin) { _s1 = new Array[Double](n); _s2 = new Array[Double](n); _c1 = plainSin; _c2 = plainCos }
       fundamentals(spec, s1, s2, c1, c2)
     }
   }
@@ -213,14 +242,24 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
       def th(i: Int) = if (m != null) m(i) else 2 * math.Pi * phase(i) / l
       def col(u: Int => Double, f: Double => Double) = Array.tabulate(n)(i => u(i) * f(th(i)))
       IndexedSeq(Col(col(us(_), math.cos), col(uc(_), math.cos)), Col(col(us(_), math.sin), col(uc(_), math.sin)))
-    case Term.Inl =>
+    case Term.Inl(ch) =>
       def t2(p: Array[Double]) = Array.tabulate(n)(i => (2 * p(i) * p(i) - 1) * lsb)
       def t3(p: Array[Double]) = Array.tabulate(n)(i => (4 * p(i) * p(i) * p(i) - 3 * p(i)) * lsb)
-      val (ps, pc) = (predS, predC)
-      IndexedSeq(Col(t2(ps), t2(pc)), Col(t3(ps), t3(pc)))
+      val ps = if (ch != "cos") predS else null; val pc = if (ch != "sin") predC else null
+      def on(p: Array[Double], f: Array[Double] => Array[Double]) = if (p == null) null else f(p)
+      IndexedSeq(Col(on(ps, t2), on(pc, t2)), Col(on(ps, t3), on(pc, t3)))
     case Term.Crosstalk =>
       val w = Array.tabulate(n)(i => 2 * math.Pi * freq(i))
       IndexedSeq(Col(mul(vc(_), w), null), Col(null, mul(vs(_), w)))
+    case Term.ContrastSpline(k) =>
+      val x = travel; var lo = Double.MaxValue; var hi = -Double.MaxValue
+      x.foreach { v => lo = math.min(lo, v); hi = math.max(hi, v) }
+      val h = math.max(1e-12, (hi - lo) / (k - 1))
+      (1 until k).flatMap { j =>
+        // the amplitudes times the hat function of knot j (1 at its knot, 0 at the neighbours)
+        val w = Array.tabulate(n)(i => math.max(0.0, 1 - math.abs((x(i) - lo) / h - j)))
+        IndexedSeq(Col(mul(us(_), w), null), Col(null, mul(uc(_), w)))
+      }
     case Term.Contrast =>
       val x = travel
       IndexedSeq(Col(x, null), Col(null, x), Col(mul(us(_), x), null), Col(null, mul(uc(_), x)))
@@ -300,17 +339,17 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
         }
         traj.addFit(d, w); evalTraj()
       }
-      if (it > 0) { val r = repair(spec, predS, predC); repS = r.s; repC = r.c; cens = r } // the predictions are garbage after
+      if (it > 0) { val r = repair(spec, predS, predC); _repS = r.s; _repC = r.c; _cens = r } // the predictions are garbage after
       setFundamentals()
       val cols = groups()
-      sol = cols.solve(repS, repC)
-      termIndex = spec.terms.zip(cols.offsets.tail).toMap
+      _sol = cols.solve(repS, repC)
+      _termIndex = spec.terms.zip(cols.offsets.tail).toMap
       // the terms' columns may be made again below: from the state they were fitted in (the old default part)
       residual(cols)
       predictionSlope(cols, sol.beta.take(6))
-      base = sol.beta.take(6)
+      _base = sol.beta.take(6)
       it += 1
-      noise = Noise.fit(resS, resC, if (spec.jitter) slopes() else null, cens)
+      _noise = Noise.fit(resS, resC, noiseSlopes(spec), cens)
       if (SignalEngine.debug) System.err.println(f"refit $it: rms $rms%.4g bic $bic%.8g")
     }
   }
@@ -343,7 +382,7 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
     val base0 = baseCols(s1, s2, c1, c2)
     val keep = n.toLong * 8 * 4 * spec.terms.size < holdBytes
     // the INL term's columns come from the residual, which the fit then overwrites: always held
-    val held = (false +: spec.terms.toIndexedSeq.map(_ == Term.Inl)) ++ extra.map(_ => true)
+    val held = (false +: spec.terms.toIndexedSeq.map(_.isInstanceOf[Term.Inl])) ++ extra.map(_ => true)
     new ColGroups((() => base0) +: (spec.terms.toIndexedSeq.map(t => () => termCols(t)) ++ extra.map(c => () => c)), keep, held)
   }
 
@@ -380,6 +419,11 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
   }
 
 
+  /** The slopes of the spec's slope-dependent noise (jitter: against time; phase noise: against the fringe phase), or null. */
+  def noiseSlopes(sp: ModelSpec): (Array[Double], Array[Double]) =
+    if (sp.jitter) slopes() else if (sp.phaseNoise) phaseSlopes() else null
+  /** Slope of each channel against the fringe phase (full scale per radian), for the phase-noise model. */
+  def phaseSlopes(): (Array[Double], Array[Double]) = (Array.tabulate(n)(i => vs(i)), Array.tabulate(n)(i => vc(i)))
   /** Slope of each channel against time (full scale per second), for the jitter noise model. */
   def slopes(): (Array[Double], Array[Double]) =
     (Array.tabulate(n)(i => vs(i) * 2 * math.Pi * freq(i)), Array.tabulate(n)(i => vc(i) * 2 * math.Pi * freq(i)))

@@ -1,13 +1,17 @@
 package moire.explain
 
+import moire.explain.effects._
+
 import moire.recording.{Recording, Reference}
 
 /** One accepted effect, as reported. `before`/`after` are the residuals around its acceptance (for plots). */
 final case class Finding(effect: String, channel: String, summary: String, params: Map[String, Double], unc: Map[String, Double],
-                         deltaBic: Double, rmsBefore: Double, rmsAfter: Double, where: String) {
+                         deltaBic: Double, rmsBefore: Double, rmsAfter: Double, where: String, sizeLsb: Double = Double.NaN,
+                         lookAlikes: Seq[String] = Nil) {
   def json: ujson.Obj = ujson.Obj("effect" -> effect, "channel" -> channel, "summary" -> summary,
     "params" -> Report.nums(params), "uncertainty" -> Report.nums(unc), "delta_bic" -> Report.num(deltaBic),
-    "rms_before" -> Report.num(rmsBefore), "rms_after" -> Report.num(rmsAfter), "where" -> where)
+    "rms_before" -> Report.num(rmsBefore), "rms_after" -> Report.num(rmsAfter), "where" -> where,
+    "size_lsb" -> Report.num(sizeLsb), "look_alikes" -> ujson.Arr(lookAlikes.map(ujson.Str(_)): _*))
 }
 
 /** Residuals for the plots: every `stride`-th sample (at most `Snapshot.MaxPoints`), and the first
@@ -45,31 +49,11 @@ object SignalExplain {
 
   final case class Result(report: Report, engine: SignalEngine, before: Snapshot, steps: Seq[(Finding, Snapshot, Snapshot)])
 
-  def specOf(model: Seq[EffectSpec]): ModelSpec = model.foldLeft(ModelSpec()) { (sp, e) =>
-    val ch = if (e.channel == "cos") 1 else 0
-    e.effect match {
-      case "harmonic" => sp.copy(terms = sp.terms :+ Term.Harm(e.p("order", 2).toInt, e.channel))
-      case "drift" => sp.copy(terms = sp.terms :+ Term.Drift)
-      case "amplitude_modulation" => sp.copy(terms = sp.terms :+ Term.Am)
-      case "adc_nonlinearity" => sp.copy(terms = sp.terms :+ Term.Inl)
-      case "crosstalk" => sp.copy(terms = sp.terms :+ Term.Crosstalk)
-      case "contrast_along_travel" => sp.copy(terms = sp.terms :+ Term.Contrast)
-      case "warmup" => sp.copy(terms = sp.terms :+ Term.Warmup(e.p("time_constant_s", 1.0)))
-      case "interference" => sp.copy(terms = sp.terms :+ Term.Interference(e.p("frequency_hz", 50)))
-      case "eccentricity" => sp.copy(terms = sp.terms :+ Term.AngleHarm(1))
-      case "angle_harmonic" => sp.copy(terms = sp.terms :+ Term.AngleHarm(e.p("order", 2).toInt))
-      case "channel_skew" => sp.copy(hasSkew = true, skewS = e.p("skew_s", 0.0))
-      case "bandwidth" => sp.copy(bw = sp.bw + (e.channel -> e.p("cutoff_hz", 1e6)))
-      case "jitter" => sp.copy(jitter = true)
-      case "adc_bit_fault" => sp.copy(faults = sp.faults :+ Fault(ch, e.p("bit", 0).toInt, if (e.p("stuck_at").isNaN) -1 else e.p("stuck_at").toInt,
-        if (e.p("bridged_to").isNaN) -1 else e.p("bridged_to").toInt))
-      case "clipping" => sp.copy(clips = sp.clips :+ Clip(ch, e.p("low_fs", Double.NegativeInfinity), e.p("high_fs", Double.PositiveInfinity)))
-      case _ => sp
-    }
-  }
+  def specOf(model: Seq[EffectSpec]): ModelSpec =
+    model.foldLeft(ModelSpec())((sp, e) => Effects(e.effect).fold(sp)(_.backward(sp, e)))
 
   def run(file: String, rec: Recording, model: Seq[EffectSpec], progress: Progress, maxFindings: Int = 8,
-          holdBytes: Long = Runtime.getRuntime.maxMemory / 8): Result = {
+          holdBytes: Long = Runtime.getRuntime.maxMemory / 8, materiality: Materiality = Materiality()): Result = {
     val t0 = System.nanoTime()
     val timing = sys.props.contains("moire.timing")
     var tl = t0
@@ -83,6 +67,7 @@ object SignalExplain {
     val before = Snapshot.of("default model", e.resS, e.resC)
     lap("default fit")
     val located = Locate.all(e)
+    val negligible = Seq.newBuilder[Negligible]
     lap("locate")
     val steps = Seq.newBuilder[(Finding, Snapshot, Snapshot)]
     var done = false; var round = 0
@@ -98,15 +83,19 @@ object SignalExplain {
       // the last accepted effect is unexplained structure (earlier rounds' rejects may be another effect's shadow).
       rejected.clear()
       val (ok, impossible) = all.filter(c => !dbic(c).isNaN && Identifiable.why(c, e, cands.fMin, cands.fMax).isEmpty)
-        .partition(c => Plausible.why(c, e.fs, e.n).isEmpty)
+        .partition(c => unsupported(c, e, cands).isEmpty)
       impossible.filter(c => dbic(c) > Threshold && !rejected.exists(_.where.startsWith(c.effect + " "))).foreach { c =>
         rejected += Located(s"${c.effect} (${c.channel})", s"structure of this shape lowers BIC by ${"%.0f".format(dbic(c))}, but not physically: " +
-          Plausible.why(c, e.fs, e.n).get, c.params, significant = true)
+          unsupported(c, e, cands).get, c.params, significant = true)
       }
       // The strongest candidates in turn: the first that the record can support is the finding. Quantization and
       // identifiability are checked on the candidate; replication on the halves after the joint refit that accepts it
       // (before it, the trajectory and the default part still hold part of the effect, differently in each half).
-      val ordered = ok.filter(c => dbic(c) > Threshold).sortBy(c => -dbic(c)).iterator
+      val passing = ok.filter(c => dbic(c) > Threshold)
+      // A pile-up at one code is direct evidence in the histogram that no smooth effect makes: such repairs go first. An effect that yields to a look-alike predicting the same signal (within the
+      // threshold) stands back for it: it is tried after the look-alike (when that fails its tests); the finding names it.
+      def yields(c: Cand) = Effects(c.effect).exists(f => passing.exists(o => o != c && f.yieldsTo(c, o) && dbic(o) > dbic(c) - Threshold))
+      val ordered = passing.sortBy(c => (!Effects(c.effect).exists(_.direct), yields(c), -dbic(c))).iterator
       def reject(c: Cand, why: String): Unit =
         if (!rejected.exists(_.where.startsWith(c.effect + " ")))
           rejected += Located(s"${c.effect} (${c.channel}): ${c.where}", s"structure of this shape lowers BIC by ${"%.0f".format(dbic(c))}, but $why",
@@ -119,7 +108,11 @@ object SignalExplain {
           case None =>
             tries += 1
             val snapB = Snapshot.of(s"before ${c.effect}", e.resS, e.resC)
-            val rmsB = e.rms
+            val rmsB = e.rms; val predBS = e.predS; val predBC = e.predC
+            // the located departures the effect claims, before and after (only those tests are run)
+            val claims = Effects(c.effect).map(_.claims).getOrElse(Nil)
+            def claimedNow = if (claims.isEmpty) Nil else Locate.all(e, w => claims.exists(w.startsWith))
+            val before = claimedNow
             val prev = e.spec
             e.spec = c.spec; e.converge(); settle(e)
             val c1 = demote(e, c)
@@ -127,13 +120,20 @@ object SignalExplain {
             // no finding when the joint refit does not lower the criterion, or the effect does not replicate
             val why = if (!(bic0 - e.bic > 0)) Some("") else Replicate.why(e, prev)
             lap("replicate")
-            why match {
+            // materiality: the change it makes to the signal, against the floor
+            val fx = Effects(c1.effect)
+            lazy val size = fx.map(_.size(c1, e)).filter(!_.isNaN).orElse(termSize(e, prev))
+              .getOrElse(Materiality.size(predBS, predBC, e.predS, e.predC, math.max(1, e.n / 200000)))
+            // the noise is the floor from neighbouring samples: the model's residual still holds the effects not yet fitted
+            lazy val floor = materiality.floor(e.lsb, Adequacy.floor(e))
+            why.orElse(if (size >= floor) None else Some("negligible")).orElse(claimed(claims, before, claimedNow)) match {
               case Some(w) =>
-                if (w.nonEmpty) reject(c, w)
+                if (w == "negligible") negligible += Negligible(c1.effect, c1.channel, size / e.lsb, floor / e.lsb, bic0 - e.bic, c1.params)
+                else if (w.nonEmpty) reject(c, w)
                 e.spec = prev; e.converge(); settle(e)
               case None =>
                 val snapA = Snapshot.of(s"after ${c.effect}", e.resS, e.resC)
-                steps += ((Finding(c1.effect, c1.channel, "", c1.params, c1.unc, bic0 - e.bic, rmsB, e.rms, c1.where), snapB, snapA))
+                steps += ((Finding(c1.effect, c1.channel, "", c1.params, c1.unc, bic0 - e.bic, rmsB, e.rms, c1.where, size / e.lsb), snapB, snapA))
                 round += 1; accepted = true
             }
         }
@@ -143,23 +143,55 @@ object SignalExplain {
     val cands = new Candidates(e)
     val fin = steps.result().map { case (f, b, a) =>
       val g = refresh(f, e)
-      (g.copy(summary = Describe.summary(Cand(g.effect, g.channel, e.spec, 0, 0, g.params, g.unc, g.where), cands.fMin, cands.fMax)), b, a)
+      val fx = Effects(g.effect)
+      (g.copy(summary = fx.fold(g.effect)(_.summary(g.params, g.channel, cands.fMin, cands.fMax)),
+        lookAlikes = fx.toSeq.flatMap(_.lookAlikes(g, e))), b, a)
     }
-    val left = Locate.all(e).filter(_.significant)
+    // negligible structure (significant, below the floor) stays in the residual: its located departure is listed there
+    val small = negligible.result().groupBy(x => (x.effect, x.channel)).values.map(_.last).toSeq
+    val smallClaims = small.flatMap(x => Effects(x.effect).toSeq.flatMap(_.claims))
+    val left = Locate.all(e).filter(l => l.significant && !smallClaims.exists(l.where.startsWith))
     // with a free motion that bends within a period, what is left cannot be told from the motion: not tested, not unexplained
     val confounded = Identifiable.motionConfounded(e)
-    val unexplained = (if (confounded) Nil else left) ++ rejected
-    val coarse = if (e.coarseBits == 0) Nil else {
-      val p = Map("effective_bits" -> (rec.adc.bits - e.coarseBits).toDouble, "format_bits" -> rec.adc.bits.toDouble, "step_lsb" -> (1 << e.coarseBits).toDouble)
-      val c = Cand("coarse_quantization", "both", e.spec, 0, 0, p, p.map { case (k, _) => k -> 0.0 }, "")
-      Seq(Finding(c.effect, c.channel, Describe.summary(c, cands.fMin, cands.fMax), c.params, c.unc, Double.NaN, e.rms, e.rms,
-        s"code histogram: the low ${e.coarseBits} bits never change on either channel"))
+    // adequacy: where the model does not follow the signal; over the whole record, nothing fitted on it is a finding
+    val misfit = Adequacy.misfit(e); val ratio = Adequacy.ratio(e)
+    val follows = !(ratio > Adequacy.Margin)
+    val withdrawn = if (follows) Nil else fin.map { case (f, _, _) =>
+      Located(s"${f.effect} (${f.channel}): ${f.where}", f"fitted while the default model does not follow the signal (residual rms " +
+        f"$ratio%.1f x the noise floor from neighbouring samples): not assessed", f.params, significant = true)
     }
-    val report = Report(file, "signals", baseRms, baseBic, baseParams, located, coarse ++ fin.map(_._1), unexplained, e.rms, e.bic,
+    val unexplained = (if (confounded || !follows) Nil else left) ++ rejected ++ withdrawn
+    val coarse = CoarseQuantization.finding(e)
+    val shown = if (follows) fin else Nil
+    val report = Report(file, "signals", baseRms, baseBic, baseParams, located, coarse ++ shown.map(_._1), unexplained, e.rms, e.bic,
       rec.length, (System.nanoTime() - t0) / 1e9, notes(e), Coverage.untested(e, cands.fMin, cands.fMax) ++
-        (if (confounded) Identifiable.leftOver(left) else Nil))
-    Result(report, e, before, fin)
+        (if (confounded) Identifiable.leftOver(left) else Nil), small, misfit)
+    Result(report, e, before, shown)
   }
+
+  /** A new linear term's own part of the prediction (its columns times its coefficients): its size. */
+  private def termSize(e: SignalEngine, prev: ModelSpec): Option[Double] =
+    e.spec.terms.diff(prev.terms).headOption.filter(e.termIndex.contains).map { t =>
+      val cols = e.termCols(t); val at = e.termIndex(t); val b = e.sol.beta.slice(at, at + cols.size)
+      val ps = new Array[Double](e.n); val pc = new Array[Double](e.n)
+      LinearFit.addTo(ps, cols, b, sinCh = true, 1.0); LinearFit.addTo(pc, cols, b, sinCh = false, 1.0)
+      Materiality.size(new Array[Double](e.n), new Array[Double](e.n), ps, pc, math.max(1, e.n / 200000))
+    }
+
+  /** None when the located departures an effect claims (their chi-square or peak-to-mean, summed) fell from `before`
+    * to `after`, or when it claims none that was measured; else why it is not a finding.
+    */
+  private def claimed(claims: Seq[String], before: Seq[Located], after: Seq[Located]): Option[String] = {
+    def stat(ls: Seq[Located]) = ls.filter(l => claims.exists(l.where.startsWith))
+      .flatMap(l => l.params.get("chi2_sd").orElse(l.params.get("peak_to_mean"))).filter(!_.isNaN)
+    val b = stat(before); val a = stat(after)
+    if (b.isEmpty || a.size != b.size || a.sum < b.sum) None
+    else Some(f"it does not lower the located departure it claims (${claims.mkString(", ")}: ${b.sum}%.1f before, ${a.sum}%.1f after)")
+  }
+
+  /** Why the record cannot support a candidate's parameters (its effect's physics), or None. */
+  private def unsupported(c: Cand, e: SignalEngine, cands: Candidates): Option[String] =
+    Effects(c.effect).flatMap(_.unsupported(c, e, cands.fMin, cands.fMax))
 
   /** Parameters of a finding from the final joint fit (linear terms) or the final spec (nonlinear). */
   private def refresh(f: Finding, e: SignalEngine): Finding = {
@@ -168,19 +200,17 @@ object SignalExplain {
       case Some((t, at)) =>
         val k = e.termCols(t).size
         val b = e.sol.beta.slice(at, at + k); val sd = (at until at + k).map(i => math.sqrt(math.max(0, e.sol.inv(i)(i)) * v)).toArray
-        val (p, u, _, _) = Describe.term(t, b, sd, e)
+        val (p, u, _, _) = t.effect.describe(t, b, sd, e)
         f.copy(params = p, unc = u.map { case (k, x) => k -> (if (x.isNaN) f.unc.getOrElse(k, x) else x) })
-      case None => f.effect match {
-        case "channel_skew" => f.copy(params = f.params + ("skew_s" -> e.spec.skewS))
-        case "bandwidth" => f.copy(params = f.params + ("cutoff_hz" -> e.spec.bw.getOrElse(f.channel, f.params("cutoff_hz"))))
-        case "jitter" => f.copy(params = f.params + ("jitter_s" -> math.sqrt(e.noise.jitter2)))
-        case _ => f
-      }
+      case None => Effects(f.effect).fold(f)(_.refresh(f, e))
     }
   }
   private def termMatches(t: Term, f: Finding): Boolean = t match {
     case Term.Harm(k, ch) => f.params.get("order").contains(k.toDouble) && ch == f.channel
     case Term.Interference(hz) => f.params.get("frequency_hz").contains(hz)
+    case Term.Inl(ch) => ch == f.channel
+    case Term.ContrastSpline(k) => f.params.get("knots").contains(k.toDouble)
+    case Term.Contrast => !f.params.contains("knots")
     case Term.AngleHarm(m) => m == 1 || f.params.get("order").contains(m.toDouble)
     case _ => true
   }
@@ -234,8 +264,16 @@ object SignalExplain {
       RefReport.notes(e)
   }
 
-  def baselineParams(e: SignalEngine): Map[String, Double] = Map(
-    "offset_sin_fs" -> e.base(0), "offset_cos_fs" -> e.base(3), "amplitude_sin_fs" -> e.ampS, "amplitude_cos_fs" -> e.ampC,
-    "phase_error_deg" -> e.phaseErrorDeg, "noise_sin_fs" -> math.sqrt(e.noise.varS), "noise_cos_fs" -> math.sqrt(e.noise.varC),
-    "typical_fringe_hz" -> e.typicalHz, "trajectory_segments" -> e.traj.nseg.toDouble) ++ RefReport.params(e)
+  /** The default part's parameters. The noise is the model's residual where the model follows the signal, else the
+    * noise floor from neighbouring samples (a misfit is not noise); `residual_*_fs` is always the model's.
+    */
+  def baselineParams(e: SignalEngine): Map[String, Double] = {
+    val follows = !(Adequacy.ratio(e) > Adequacy.Margin)
+    val (ns, nc) = if (follows) (math.sqrt(e.noise.varS), math.sqrt(e.noise.varC)) else (Adequacy.floorOf(e.resS), Adequacy.floorOf(e.resC))
+    Map(
+      "offset_sin_fs" -> e.base(0), "offset_cos_fs" -> e.base(3), "amplitude_sin_fs" -> e.ampS, "amplitude_cos_fs" -> e.ampC,
+      "phase_error_deg" -> e.phaseErrorDeg, "noise_sin_fs" -> ns, "noise_cos_fs" -> nc,
+      "residual_sin_fs" -> math.sqrt(e.noise.varS), "residual_cos_fs" -> math.sqrt(e.noise.varC),
+      "typical_fringe_hz" -> e.typicalHz, "noise_floor_fs" -> Adequacy.floor(e), "trajectory_segments" -> e.traj.nseg.toDouble) ++ RefReport.params(e)
+  }
 }

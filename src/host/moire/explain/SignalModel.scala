@@ -1,20 +1,27 @@
 package moire.explain
 
-/** Linear terms of the backward model (their columns are linear in the parameters). */
-sealed trait Term { def name: String; def params: Int }
+import moire.explain.effects._
+
+/** Linear terms of the backward model (their columns are linear in the parameters); each belongs to one effect. */
+sealed trait Term { def effect: Effect; def params: Int; def name: String = effect.name }
 object Term {
-  final case class Harm(order: Int, ch: String) extends Term { val name = "harmonic"; val params: Int = if (ch == "both") 4 else 2 }
-  case object Drift extends Term { val name = "drift"; val params = 4 }
-  case object Am extends Term { val name = "amplitude_modulation"; val params = 2 }
-  case object Inl extends Term { val name = "adc_nonlinearity"; val params = 2 }
-  case object Crosstalk extends Term { val name = "crosstalk"; val params = 2 }
-  final case class Interference(hz: Double) extends Term { val name = "interference"; val params = 5 }
+  final case class Harm(order: Int, ch: String) extends Term { def effect: Effect = Harmonic; val params: Int = if (ch == "both") 4 else 2 }
+  case object Drift extends Term { def effect: Effect = effects.Drift; val params = 4 }
+  case object Am extends Term { def effect: Effect = AmplitudeModulation; val params = 2 }
+  /** INL of one ADC (ch sin or cos) or the same on both. */
+  final case class Inl(ch: String) extends Term { def effect: Effect = AdcNonlinearity; val params = 2 }
+  case object Crosstalk extends Term { def effect: Effect = effects.Crosstalk; val params = 2 }
+  final case class Interference(hz: Double) extends Term { def effect: Effect = effects.Interference; val params = 5 }
   /** Offsets and amplitudes changing along the travel (beam walk, scale contamination): linear in the fringe position. */
-  case object Contrast extends Term { val name = "contrast_along_travel"; val params = 4 }
+  case object Contrast extends Term { def effect: Effect = ContrastAlongTravel; val params = 4 }
+  /** Amplitudes as a smooth function of the position: piecewise linear between `knots` equally spaced knots over the
+    * travel (the first knot's value is the default part's), so a local band (contamination) is representable.
+    */
+  final case class ContrastSpline(knots: Int) extends Term { def effect: Effect = ContrastAlongTravel; val params: Int = 2 * (knots - 1) }
   /** Warm-up: offsets and amplitudes approaching their final values as 1 - exp(-t / tauS) (tauS fitted: 5 parameters). */
-  final case class Warmup(tauS: Double) extends Term { val name = "warmup"; val params = 5 }
+  final case class Warmup(tauS: Double) extends Term { def effect: Effect = effects.Warmup; val params = 5 }
   /** Fringe phase modulated at `order` times the mechanical angle (the read angle's error): order 1 is eccentricity. */
-  final case class AngleHarm(order: Int) extends Term { val name: String = if (order == 1) "eccentricity" else "angle_harmonic"; val params = 2 }
+  final case class AngleHarm(order: Int) extends Term { def effect: Effect = if (order == 1) Eccentricity else AngleHarmonic; val params = 2 }
 }
 
 /** A stuck (stuckAt 0/1) or bridged (wired-AND with bit `bridgedTo`) data line on channel 0 = sin, 1 = cos. */
@@ -38,8 +45,14 @@ final case class ModelSpec(
   terms: Vector[Term] = Vector.empty,
   faults: Vector[Fault] = Vector.empty,
   clips: Vector[Clip] = Vector.empty,
-  jitter: Boolean = false
+  jitter: Boolean = false,
+  /** Phase noise of the motion (white per sample, radians of fringe phase): noise in proportion to the slope against
+    * the fringe phase, not growing with speed as jitter's does.
+    */
+  phaseNoise: Boolean = false
 ) {
+  /** The noise model has a slope-dependent part (jitter or phase noise). */
+  def slopeNoise: Boolean = jitter || phaseNoise
   /** Parameters beyond the default part. */
-  def extraParams: Int = (if (hasSkew) 1 else 0) + bw.size + terms.map(_.params).sum + faults.size + clips.map(_.params).sum + (if (jitter) 1 else 0)
+  def extraParams: Int = (if (hasSkew) 1 else 0) + bw.size + terms.map(_.params).sum + faults.size + clips.map(_.params).sum + (if (jitter) 1 else 0) + (if (phaseNoise) 1 else 0)
 }

@@ -1,0 +1,29 @@
+package moire.explain.effects
+
+import moire.explain._
+
+/** An ADC data line stuck at 0 or 1, or wired-AND with another line. */
+object AdcBitFault extends Effect {
+  val name = "adc_bit_fault"
+  val params = Seq(Param("bit", "", "0..bits-1"), Param("stuck_at", "", "0 or 1"), Param("bridged_to", "", "0..bits-1"))
+  val what = "data line stuck at 0/1, or wired-AND with another bit (channel=sin|cos)"
+  val shows = "code histogram"
+  override val claims: Seq[String] = Seq("code histogram")
+  override def example: Example = Example(EffectSpec(name, Map("bit" -> 3, "stuck_at" -> 1), "cos"))
+  val domain: Domain = Domain.Codes
+  override val plot: PlotKind = PlotKind.Level
+  override val confoundedWithMotion = false
+
+  override def validate(e: EffectSpec, m: PhysicsModel): Unit = {
+    val b = e.p("bit"); if (!(b >= 0 && b < m.adc.bits)) throw new ExplainError(s"$name bit must be in 0..${m.adc.bits - 1}")
+    if (e.channel == "both") throw new ExplainError(s"$name needs channel=sin or channel=cos")
+  }
+  override def backward(sp: ModelSpec, e: EffectSpec): ModelSpec =
+    sp.copy(faults = sp.faults :+ Fault(if (e.channel == "cos") 1 else 0, e.p("bit", 0).toInt,
+      if (e.p("stuck_at").isNaN) -1 else e.p("stuck_at").toInt, if (e.p("bridged_to").isNaN) -1 else e.p("bridged_to").toInt))
+  override def searches(c: Candidates): Seq[() => Seq[Cand]] = Seq(() => c.faults())
+
+  def summary(p: Map[String, Double], channel: String, fMin: Double, fMax: Double): String =
+    if (p.contains("stuck_at")) f"$channel ADC data line ${Effect.g(p, "bit").toInt} stuck at ${Effect.g(p, "stuck_at").toInt}"
+    else f"$channel ADC data lines ${Effect.g(p, "bit").toInt} and ${Effect.g(p, "bridged_to").toInt} bridged (wired AND)"
+}

@@ -1,0 +1,38 @@
+package moire.explain.effects
+
+import moire.explain._
+
+/** Integral nonlinearity of the ADCs: a bow (T2) and an S shape (T3) of the transfer curve, per channel or both. */
+object AdcNonlinearity extends Effect {
+  val name = "adc_nonlinearity"
+  val params = Seq(Param("inl2_lsb", "LSB", "any"), Param("inl3_lsb", "LSB", "any"))
+  val what = "INL = inl2 T2(v) + inl3 T3(v) LSB, Chebyshev bow and S shape over full scale (channel=sin|cos|both)"
+  val shows = "against signal level"
+  override val claims: Seq[String] = Seq("against fringe phase")
+  override def example: Example = Example(EffectSpec(name, Map("inl2_lsb" -> 2.0, "inl3_lsb" -> 1.5)))
+  val domain: Domain = Domain.Periodic
+  override val plot: PlotKind = PlotKind.Level
+
+  override def backward(sp: ModelSpec, e: EffectSpec): ModelSpec = sp.copy(terms = sp.terms :+ Term.Inl(e.channel))
+  override def searches(c: Candidates): Seq[() => Seq[Cand]] =
+    Seq("both", "sin", "cos").map(ch => () => c.linear(Term.Inl(ch)).map(_._1).toSeq)
+  override def describe(t: Term, b: Array[Double], sd: Array[Double], e: SignalEngine): Effect.Described = {
+    val ch = t match { case Term.Inl(c) => c; case _ => "both" }
+    (Map("inl2_lsb" -> b(0), "inl3_lsb" -> b(1)), Map("inl2_lsb" -> sd(0), "inl3_lsb" -> sd(1)),
+      s"against signal level: ${if (ch == "both") "both ADCs" else s"the $ch ADC"}", ch)
+  }
+  private def amp(c: Cand, e: SignalEngine) = (math.abs(c.params.getOrElse("inl2_lsb", 0.0)) + math.abs(c.params.getOrElse("inl3_lsb", 0.0))) * e.lsb
+  override def valueAmplitude(c: Cand, e: SignalEngine): Option[Double] = Some(amp(c, e))
+  /** One ADC's bow or S shape at constant amplitude is a 2nd or 3rd harmonic on that channel. */
+  override def yieldsTo(c: Cand, other: Cand): Boolean =
+    (c.channel != "both" && other.effect == Harmonic.name && other.channel == c.channel) ||
+      // the same INL on both ADCs stands back for one ADC's that explains as much
+      (c.channel == "both" && other.effect == name && other.channel != "both")
+  override def lookAlikes(f: Finding, e: SignalEngine): Seq[String] =
+    if (f.channel == "both") Nil
+    else Seq(s"${Harmonic.name} 2 and 3 on the ${f.channel} channel predict the same signal while its amplitude stays constant, as it " +
+      s"does here; a record at another amplitude or offset of the ${f.channel} channel separates them (INL stays with the code)")
+
+  def summary(p: Map[String, Double], channel: String, fMin: Double, fMax: Double): String =
+    f"ADC integral nonlinearity${if (channel == "both") " (both ADCs)" else s" of the $channel ADC"}: bow ${Effect.g(p, "inl2_lsb")}%.2f LSB, S-shape ${Effect.g(p, "inl3_lsb")}%.2f LSB at full scale"
+}

@@ -1,0 +1,25 @@
+package moire.explain.effects
+
+import moire.explain._
+
+/** The cos channel sampled later than sin: a phase error growing with speed. */
+object ChannelSkew extends Effect {
+  val name = "channel_skew"
+  val params = Seq(Param("skew_s", "s", "|skew| < 1 / (4 pi f_max)"))
+  val what = "cos channel sampled skew_s seconds after sin"
+  val shows = "phase error growing with speed"
+  override val claims: Seq[String] = Seq("against speed")
+  override def example: Example = Example(EffectSpec(name, Map("skew_s" -> 30e-9)))
+  val domain: Domain = Domain.Speed
+  override val plot: PlotKind = PlotKind.Speed(phaseOnly = true)
+
+  override def backward(sp: ModelSpec, e: EffectSpec): ModelSpec = sp.copy(hasSkew = true, skewS = e.p("skew_s", 0.0))
+  override def searches(c: Candidates): Seq[() => Seq[Cand]] = Seq(() => c.skew().toSeq)
+  override def refresh(f: Finding, e: SignalEngine): Finding = f.copy(params = f.params + ("skew_s" -> e.spec.skewS))
+
+  def summary(p: Map[String, Double], channel: String, fMin: Double, fMax: Double): String = {
+    val tau = Effect.g(p, "skew_s"); val who = if (tau >= 0) "cos channel sampled %.1f ns after sin" else "cos channel sampled %.1f ns before sin"
+    val d0 = 360 * fMin * tau; val d1 = 360 * fMax * tau
+    f"${who.format(math.abs(tau) * 1e9)}: the phase error grows with speed, ${math.abs(d0)}%.2f degree at ${fMin / 1e3}%.1f kHz to ${math.abs(d1)}%.2f degree at ${fMax / 1e3}%.1f kHz"
+  }
+}

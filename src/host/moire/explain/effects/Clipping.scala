@@ -1,0 +1,24 @@
+package moire.explain.effects
+
+import moire.explain._
+
+/** Amplifier saturation below the ADC's range: a pile-up of samples at one code. */
+object Clipping extends Effect {
+  val name = "clipping"
+  val params = Seq(Param("high_fs", "full scale", "-1..1"), Param("low_fs", "full scale", "-1..1"))
+  val what = "amplifier saturation levels in full-scale units (channel=sin|cos|both)"
+  val shows = "pile-up at one code"
+  override val claims: Seq[String] = Seq("code histogram")
+  override def example: Example = Example(EffectSpec(name, Map("high_fs" -> 0.8), "sin"))
+  val domain: Domain = Domain.Codes
+  override val plot: PlotKind = PlotKind.Level
+  override val confoundedWithMotion = false
+  override val direct = true
+
+  override def backward(sp: ModelSpec, e: EffectSpec): ModelSpec =
+    sp.copy(clips = sp.clips :+ Clip(if (e.channel == "cos") 1 else 0, e.p("low_fs", Double.NegativeInfinity), e.p("high_fs", Double.PositiveInfinity)))
+  override def searches(c: Candidates): Seq[() => Seq[Cand]] = Seq(() => c.clips())
+
+  def summary(p: Map[String, Double], channel: String, fMin: Double, fMax: Double): String =
+    s"$channel channel saturates" + p.map { case (k, v) => f" ${k.stripSuffix("_fs")} at $v%.4f FS" }.mkString(",")
+}

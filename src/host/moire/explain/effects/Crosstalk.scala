@@ -1,0 +1,24 @@
+package moire.explain.effects
+
+import moire.explain._
+
+/** Capacitive coupling between the channels: each gets tau times the other's derivative. */
+object Crosstalk extends Effect {
+  val name = "crosstalk"
+  val params = Seq(Param("sin_from_cos_tau_s", "s", "any"), Param("cos_from_sin_tau_s", "s", "any"))
+  val what = "capacitive coupling: channel += tau * d(other channel)/dt"
+  val shows = "amplitude against speed"
+  override val claims: Seq[String] = Seq("against speed")
+  override def example: Example = Example(EffectSpec(name, Map("sin_from_cos_tau_s" -> 2e-9)))
+  val domain: Domain = Domain.Speed
+  override val plot: PlotKind = PlotKind.Speed(phaseOnly = false)
+
+  override def backward(sp: ModelSpec, e: EffectSpec): ModelSpec = sp.copy(terms = sp.terms :+ Term.Crosstalk)
+  override def searches(c: Candidates): Seq[() => Seq[Cand]] = Seq(() => c.linear(Term.Crosstalk).map(_._1).toSeq)
+  override def describe(t: Term, b: Array[Double], sd: Array[Double], e: SignalEngine): Effect.Described =
+    (Map("sin_from_cos_tau_s" -> b(0), "cos_from_sin_tau_s" -> b(1)), Map("sin_from_cos_tau_s" -> sd(0), "cos_from_sin_tau_s" -> sd(1)),
+      "against speed: amplitude of each channel", "both")
+
+  def summary(p: Map[String, Double], channel: String, fMin: Double, fMax: Double): String =
+    f"capacitive crosstalk: sin gets ${Effect.g(p, "sin_from_cos_tau_s") * 1e9}%.2f ns x d(cos)/dt, cos gets ${Effect.g(p, "cos_from_sin_tau_s") * 1e9}%.2f ns x d(sin)/dt"
+}

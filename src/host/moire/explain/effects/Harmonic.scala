@@ -1,0 +1,49 @@
+package moire.explain.effects
+
+import moire.explain._
+
+/** Harmonic k of the fringe on one channel or both: the grating's profile, a non-sinusoidal read head. */
+object Harmonic extends Effect {
+  val name = "harmonic"
+  val params = Seq(Param("order", "", "2..7"), Param("amplitude_rel", "of the fundamental", "0..0.2"), Param("phase_deg", "degree", "-180..180"))
+  val what = "order k of the fringe on one channel or both (channel=sin|cos|both)"
+  val shows = "against fringe phase"
+  override val claims: Seq[String] = Seq("against fringe phase")
+  override def example: Example = Example(EffectSpec(name, Map("order" -> 3, "amplitude_rel" -> 2e-3), "sin"))
+  val domain: Domain = Domain.Periodic
+  val Orders: Range = 2 to 7
+
+  override def validate(e: EffectSpec, m: PhysicsModel): Unit =
+    if (e.p("order", 2) < 2) throw new ExplainError("harmonic order must be >= 2")
+  override def backward(sp: ModelSpec, e: EffectSpec): ModelSpec = sp.copy(terms = sp.terms :+ Term.Harm(e.p("order", 2).toInt, e.channel))
+  override def searches(c: Candidates): Seq[() => Seq[Cand]] =
+    for (k <- Orders; ch <- Seq("sin", "cos", "both")) yield () => c.linear(Term.Harm(k, ch)).map(_._1).toSeq
+
+  override def describe(t: Term, b: Array[Double], sd: Array[Double], e: SignalEngine): Effect.Described = t match {
+    case Term.Harm(k, ch) if ch != "both" =>
+      val (a, sa) = Effect.amp(b(0), b(1), sd(0), sd(1)); val (ph, sph) = Effect.deg(b(0), b(1), a, sa)
+      (Map("order" -> k, "amplitude_rel" -> a, "phase_deg" -> ph), Map("order" -> 0, "amplitude_rel" -> sa, "phase_deg" -> sph),
+        s"against fringe phase: $ch channel, order $k", ch)
+    case Term.Harm(k, _) =>
+      val (a, sa) = Effect.amp(b(0), b(1), sd(0), sd(1)); val (c, sc) = Effect.amp(b(2), b(3), sd(2), sd(3))
+      (Map("order" -> k, "amplitude_sin_rel" -> a, "amplitude_cos_rel" -> c, "amplitude_rel" -> 0.5 * (a + c)),
+        Map("order" -> 0, "amplitude_sin_rel" -> sa, "amplitude_cos_rel" -> sc, "amplitude_rel" -> 0.5 * math.hypot(sa, sc)),
+        s"against fringe phase: both channels, order $k", "both")
+    case _ => super.describe(t, b, sd, e)
+  }
+
+  private def rel(p: Map[String, Double]): Double =
+    Seq("amplitude_rel", "amplitude_sin_rel", "amplitude_cos_rel").flatMap(p.get).filter(!_.isNaN).maxOption.getOrElse(0.0)
+  override def valueAmplitude(c: Cand, e: SignalEngine): Option[Double] = Some(rel(c.params) * math.max(e.ampS, e.ampC))
+
+  override def lookAlikes(f: Finding, e: SignalEngine): Seq[String] = {
+    val k = f.params.getOrElse("order", 0.0).toInt
+    if (f.channel == "both" || (k != 2 && k != 3)) Nil
+    else Seq(s"${AdcNonlinearity.name} of the ${f.channel} ADC alone (a ${if (k == 2) "bow" else "S shape"} of its transfer curve) predicts " +
+      s"the same signal while the ${f.channel} amplitude stays constant, as it does here; a record at another amplitude or offset of " +
+      s"the ${f.channel} channel separates them (a harmonic scales with the amplitude, INL stays with the code)")
+  }
+
+  def summary(p: Map[String, Double], channel: String, fMin: Double, fMax: Double): String =
+    f"harmonic ${Effect.g(p, "order").toInt} of the fringe on ${sinCos(channel)}: ${100 * Effect.g(p, "amplitude_rel")}%.3f %% of the fundamental"
+}

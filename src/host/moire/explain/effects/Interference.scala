@@ -1,0 +1,54 @@
+package moire.explain.effects
+
+import moire.explain._
+
+/** A fixed-frequency pickup (mains, switching supply) on both channels. */
+object Interference extends Effect {
+  val name = "interference"
+  val params = Seq(Param("frequency_hz", "Hz", "> 0"), Param("amplitude_fs", "full scale", ">= 0"), Param("phase_deg", "degree", "-180..180"))
+  val what = "a fixed-frequency pickup (mains, switching supply) on both channels"
+  val shows = "a spectral line"
+  override val claims: Seq[String] = Seq("spectrum")
+  override def example: Example = Example(EffectSpec(name, Map("frequency_hz" -> 12345.0, "amplitude_fs" -> 0.0015)))
+  val domain: Domain = Domain.Time
+  override val plot: PlotKind = PlotKind.Spectrum
+  /** A line must complete this many cycles in the record to be told from a slow change (judged with its uncertainty and
+    * the record's resolution of half a cycle).
+    */
+  val MinCycles = 10.0
+  /** A record resolves a line's cycle count to about one cycle (its Fourier resolution is 1 / duration): half of it. */
+  val Resolution = 0.5
+  /** Standard deviations by which the cycle count must fall short of `MinCycles` to refuse the line. */
+  val Sd = 3.0
+
+  override def backward(sp: ModelSpec, e: EffectSpec): ModelSpec = sp.copy(terms = sp.terms :+ Term.Interference(e.p("frequency_hz", 50)))
+  override def searches(c: Candidates): Seq[() => Seq[Cand]] = Seq(() => c.interference().toSeq)
+  override def describe(t: Term, b: Array[Double], sd: Array[Double], e: SignalEngine): Effect.Described = {
+    val hz = t match { case Term.Interference(h) => h; case _ => Double.NaN }
+    val (a, sa) = Effect.amp(b(0), b(1), sd(0), sd(1)); val (c, sc) = Effect.amp(b(2), b(3), sd(2), sd(3))
+    // Cramer-Rao bound of a sinusoid's frequency in white noise, both channels' power together (the noise variance
+    // from the amplitude's sd: sd^2 = 2 v / n for a unit sinusoid over n samples)
+    val v = 0.25 * (sd(0) * sd(0) + sd(1) * sd(1) + sd(2) * sd(2) + sd(3) * sd(3)) * e.n / 2
+    val n = e.n.toDouble
+    val sdF = e.fs / (2 * math.Pi) * math.sqrt(24 * v / math.max(1e-300, (a * a + c * c) * n * n * n))
+    (Map("frequency_hz" -> hz, "amplitude_sin_fs" -> a, "amplitude_cos_fs" -> c, "amplitude_fs" -> 0.5 * (a + c)),
+      Map("frequency_hz" -> sdF, "amplitude_sin_fs" -> sa, "amplitude_cos_fs" -> sc, "amplitude_fs" -> 0.5 * math.hypot(sa, sc)),
+      f"spectrum: a line at $hz%.1f Hz on both channels", "both")
+  }
+  override def unsupported(c: Cand, e: SignalEngine, fMin: Double, fMax: Double): Option[String] = {
+    val seconds = e.n / e.fs
+    tooFewCycles(c.params.getOrElse("frequency_hz", Double.NaN), c.unc.getOrElse("frequency_hz", 0.0), seconds)
+  }
+
+  /** A line of `hz` +- `sdHz` in a record of `seconds`: refused when its cycle count is short of `MinCycles` by more than
+    * `Sd` of its own uncertainty and the record's `Resolution` (9.996 +- 0.001 cycles is not fewer than 10).
+    */
+  def tooFewCycles(hz: Double, sdHz: Double, seconds: Double): Option[String] = {
+    val cycles = hz * seconds; val sd = math.abs(sdHz) * seconds
+    if (cycles + Sd * sd + Resolution >= MinCycles) None
+    else Some(f"a line at $hz%.4g Hz completes ${cycles}%.3g +- ${sd}%.2g cycles in the ${seconds}%.3g s record (at least ${MinCycles}%.0f needed)")
+  }
+
+  def summary(p: Map[String, Double], channel: String, fMin: Double, fMax: Double): String =
+    f"pickup at ${Effect.g(p, "frequency_hz")}%.1f Hz, ${Effect.g(p, "amplitude_fs")}%.3g full scale amplitude"
+}

@@ -1,0 +1,109 @@
+package moire.explain.evidence
+
+import moire.recording.Recording
+
+import java.util.Random
+
+/** One harmonic of the fringe on a channel ("sin", "cos" or "both"): rel of the fundamental, at phaseDeg. */
+final case class Harmonic(order: Int, rel: Double, phaseDeg: Double = 25, channel: String = "both")
+
+/** The analog chain and the ADC of a bench, with its own formulas (not moire's fit model, not `simulate`):
+  * the fringe of a read head with per-channel offset, gain and quadrature error, contrast that may change along
+  * the travel (a function of the position in periods from the start), harmonics, warm-up of offset and gain,
+  * sampling-clock jitter, phase noise of the motion (fast vibration: an AR(1) process in fringe phase), additive
+  * pickup lines (mains hum, a switching line), a one-pole amplifier low-pass run sample by sample, capacitive
+  * crosstalk (cos += tau d sin / dt), Gaussian noise, and ADCs with their own bowed transfer curve (INL) and an
+  * optional stuck data line. Amplitudes are in full-scale units (1 = half the ADC range).
+  */
+final case class Bench(amp: Double = 0.8, offS: Double = 0.011, offC: Double = -0.007, gainC: Double = 1.012, quadDeg: Double = 0.9,
+                       noiseLsb: Double = 1.0, bits: Int = 12, harmonics: Seq[Harmonic] = Nil,
+                       contrast: Double => Double = _ => 1.0,
+                       warmOffsetLsb: Double = 0, warmGainRel: Double = 0, warmTauS: Double = 1,
+                       jitterS: Double = 0, phaseNoiseDeg: Double = 0, phaseNoiseTauS: Double = 0,
+                       lines: Seq[(Double, Double)] = Nil,
+                       cutoffHz: Double = 0, crosstalkTauS: Double = 0,
+                       inlSinLsb: Double = 0, inlCosLsb: Double = 0,
+                       stuck: Option[(String, Int, Int)] = None, seed: Long = 1) {
+  require(jitterS == 0 || cutoffHz == 0, "jitter is modelled before the low-pass; use one or the other")
+  def half: Int = 1 << (bits - 1)
+  def lsb: Double = 1.0 / half
+
+  /** The rms of noise and rounding in full-scale units: the floor a model that follows the signal reaches. */
+  def floorRms: Double = math.sqrt(noiseLsb * noiseLsb + 1.0 / 12) * lsb
+
+  /** ADC codes (offset binary) of both channels for a travel sampled at fs. */
+  def codes(tr: Travel, fs: Double): (Array[Int], Array[Int]) = {
+    val rnd = new Random(seed); val pn = new Random(seed + 7919)
+    val n = tr.n
+    val cs = new Array[Int](n); val cc = new Array[Int](n)
+    val quad = math.toRadians(quadDeg)
+    val alpha = if (cutoffHz > 0) 1 - math.exp(-2 * math.Pi * cutoffHz / fs) else 1.0
+    val rho = if (phaseNoiseTauS > 0) math.exp(-1 / (phaseNoiseTauS * fs)) else 0.0
+    val pnStep = math.toRadians(phaseNoiseDeg) * math.sqrt(1 - rho * rho)
+    var phaseNoise = math.toRadians(phaseNoiseDeg) * pn.nextGaussian()
+    var ys = 0.0; var yc = 0.0
+    val x0 = tr.periods(0)
+    for (i <- 0 until n) {
+      val t = i / fs
+      if (i > 0) phaseNoise = rho * phaseNoise + pnStep * pn.nextGaussian()
+      val dt = if (jitterS > 0) jitterS * rnd.nextGaussian() else 0.0
+      val a = 2 * math.Pi * (tr.periods(i) + tr.speed(i) * dt) + phaseNoise
+      val warm = 1 - math.exp(-t / warmTauS)
+      val g = amp * contrast(tr.periods(i) - x0) * (1 + warmGainRel * warm)
+      var s = math.sin(a); var c = math.cos(a + quad)
+      for (h <- harmonics) {
+        val hp = math.toRadians(h.phaseDeg)
+        if (h.channel != "cos") s += h.rel * math.sin(h.order * a + hp)
+        if (h.channel != "sin") c += h.rel * math.cos(h.order * (a + quad) + hp)
+      }
+      var vs = g * s; var vc = gainC * g * c
+      if (crosstalkTauS > 0) vc += crosstalkTauS * g * math.cos(a) * 2 * math.Pi * tr.speed(i)
+      if (alpha < 1) {
+        if (i == 0) { // the filter's steady state at the first sample's frequency: no switch-on transient
+          val r = tr.speed(0) / cutoffHz; val gain = 1 / math.sqrt(1 + r * r); val lag = math.atan(r)
+          ys = g * gain * math.sin(a - lag); yc = gainC * g * gain * math.cos(a + quad - lag)
+        } else { ys += alpha * (vs - ys); yc += alpha * (vc - yc) }
+        vs = ys; vc = yc
+      }
+      var pick = warmOffsetLsb * lsb * warm
+      for ((hz, l) <- lines) pick += l * lsb * math.sin(2 * math.Pi * hz * t + 0.4)
+      cs(i) = adc(offS + vs + pick + noiseLsb * lsb * rnd.nextGaussian(), inlSinLsb, "sin")
+      cc(i) = adc(offC + vc + pick + noiseLsb * lsb * rnd.nextGaussian(), inlCosLsb, "cos")
+    }
+    (cs, cc)
+  }
+
+  /** A converter whose transfer curve bows by `bowLsb` at mid-scale (INL = bow (1 - u^2), u = -1 .. 1 over the range). */
+  private def adc(v: Double, bowLsb: Double, ch: String): Int = {
+    val u = math.max(-1.0, math.min(1.0, v))
+    val c = math.max(0, math.min(2 * half - 1, math.floor(v * half + bowLsb * (1 - u * u) + 0.5).toInt + half))
+    stuck match {
+      case Some((`ch`, bit, 0)) => c & ~(1 << bit)
+      case Some((`ch`, bit, _)) => c | (1 << bit)
+      case _ => c
+    }
+  }
+}
+
+/** The recording's CSV text, written here and not by moire: metadata, a header, the codes and any reference. */
+object BenchText {
+  /** `refName` and `ref` (one value per sample, written with `refDigits` decimals) are optional. */
+  def apply(source: String, fs: Double, bits: Int, codes: (Array[Int], Array[Int]), meta: Seq[(String, String)] = Nil,
+            refName: String = "", ref: Array[Double] = null, refDigits: Int = 4): String = {
+    val (s, c) = codes
+    val sb = new StringBuilder(s.length * 20)
+    sb.append("# moire-recording v1\n# sample_rate_hz: ").append(fs).append("\n# adc_bits: ").append(bits).append('\n')
+    meta.foreach { case (k, v) => sb.append("# ").append(k).append(": ").append(v).append('\n') }
+    sb.append("# source: ").append(source).append('\n')
+    sb.append(if (refName.isEmpty) "sin,cos\n" else s"sin,cos,$refName\n")
+    val fmt = s"%.${refDigits}f"
+    for (i <- s.indices) {
+      sb.append(s(i)).append(',').append(c(i))
+      if (refName.nonEmpty) sb.append(',').append(String.format(java.util.Locale.ROOT, fmt, Double.box(ref(i))))
+      sb.append('\n')
+    }
+    sb.toString
+  }
+
+  def recording(name: String, text: String): Recording = Recording.parse(name, text.split("\n").toIndexedSeq)
+}

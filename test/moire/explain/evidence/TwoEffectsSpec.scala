@@ -1,0 +1,63 @@
+package moire.explain.evidence
+
+import org.scalatest.flatspec.AnyFlatSpec
+import org.scalatest.matchers.should.Matchers
+
+/** Issue 28, Prove it 8: two effects at once, each reported with its parameter within 20 %, nothing else. */
+class TwoEffectsSpec extends AnyFlatSpec with Matchers {
+  import Evidence._
+
+  private def param(r: moire.explain.Report, effect: String, key: String): Double =
+    r.findings.find(_.effect == effect).map(_.params(key)).getOrElse(Double.NaN)
+
+  "explain" should "report a 3rd harmonic on sin and a 20 kHz switching-supply line together" in {
+    val fs = 10e6
+    val b = Bench(harmonics = Seq(Harmonic(3, 1e-3, channel = "sin")), lines = Seq(20e3 -> 2.0), noiseLsb = 1.2, seed = 81)
+    val r = explain("3rd harmonic 0.1 % + 2 LSB at 20 kHz", Interferometer.text(Motions.chirp(150000, fs, 20e3, 250e3), fs, b))
+    withClue(line(r)) {
+      effects(r).toSet shouldBe Set("harmonic", "interference")
+      param(r, "harmonic", "order") shouldBe 3.0
+      param(r, "harmonic", "amplitude_rel") shouldBe 1e-3 +- 2e-4
+      param(r, "interference", "frequency_hz") shouldBe 20e3 +- 20.0
+      param(r, "interference", "amplitude_fs") shouldBe 2.0 / 2048 +- 0.4 / 2048
+    }
+  }
+
+  it should "report a 500 kHz read-head cut-off and a stuck bit on sin together" in {
+    val fs = 10e6
+    val b = Bench(cutoffHz = 500e3, stuck = Some(("sin", 1, 0)), noiseLsb = 1.2, seed = 84)
+    val r = explain("cut-off 500 kHz + sin bit 1 stuck at 0", Interferometer.text(Motions.chirp(150000, fs, 20e3, 250e3), fs, b))
+    withClue(line(r)) {
+      effects(r).toSet shouldBe Set("bandwidth", "adc_bit_fault")
+      param(r, "bandwidth", "cutoff_hz") shouldBe 500e3 +- 100e3
+      param(r, "adc_bit_fault", "bit") shouldBe 1.0
+      r.findings.find(_.effect == "adc_bit_fault").get.channel shouldBe "sin"
+    }
+  }
+
+  it should "report a stuck bit and mains hum together" in {
+    val fs = 100e3
+    val b = Bench(stuck = Some(("cos", 2, 1)), lines = Seq(50.0 -> 5.0), noiseLsb = 1.0, seed = 82)
+    val r = explain("cos bit 2 stuck at 1 + hum 5 LSB", Interferometer.text(Motions.chirp(60000, fs, 2e3, 6e3), fs, b))
+    withClue(line(r)) {
+      effects(r).toSet shouldBe Set("adc_bit_fault", "interference")
+      r.findings.find(_.effect == "adc_bit_fault").get.channel shouldBe "cos"
+      param(r, "adc_bit_fault", "bit") shouldBe 2.0
+      param(r, "interference", "frequency_hz") shouldBe 50.0 +- 0.5
+      param(r, "interference", "amplitude_fs") shouldBe 5.0 / 2048 +- 1.0 / 2048
+    }
+  }
+
+  it should "report a contamination band and a 3rd harmonic of a linear scale with ref_um together" in {
+    val fs = 20e3
+    val w = 2 * math.Pi * 2.3
+    val tr = Motions.formula(20000, fs)(t => 500 * t + 5 * math.sin(w * t), t => 500 + 5 * w * math.cos(w * t))
+    val b = Bench(contrast = LinearStage.band(20, 3000, 4000, 0.08), harmonics = Seq(Harmonic(3, 3e-3)), noiseLsb = 1.0, seed = 83)
+    val r = explain("contamination 8 % + 3rd harmonic 0.3 %", LinearStage.text(LinearStage.Spec(tr, fs, b)))
+    withClue(line(r)) {
+      effects(r).toSet shouldBe Set("contrast_along_travel", "harmonic")
+      param(r, "harmonic", "order") shouldBe 3.0
+      param(r, "harmonic", "amplitude_rel") shouldBe 3e-3 +- 6e-4
+    }
+  }
+}
