@@ -1,35 +1,39 @@
 package moire.explain
 
 /** Adequacy first (issue 28): whether the model follows the signal at all, judged against a noise floor that does not
-  * depend on the motion model. The floor comes from differences of neighbouring residual samples: white noise gives
-  * var(r(i) - r(i-1)) = 2 sigma^2, while a misfit that varies slowly over a few samples cancels in the difference.
+  * depend on the motion model. The floor comes from second differences of neighbouring residual samples: white noise gives
+  * var(r(i-1) - 2 r(i) + r(i+1)) = 6 sigma^2, while a misfit that varies over more than a few samples cancels in them.
   * Where the residual's rms exceeds that floor by `Margin` (in any of `Windows` contiguous windows), the model does not
   * follow the signal there: the report says where (time, position, speed). When it does not follow over the record as
   * a whole, nothing fitted on it is a finding.
   */
 object Adequacy {
-  /** Residual rms over the noise floor above which the model does not follow (3: noise correlated between neighbouring
-    * samples up to r = 0.89, as an oversampled analog bandwidth makes, stays below it).
+  /** Residual rms over the noise floor above which the model does not follow (3: white noise gives 1; noise whose band
+    * ends at half the Nyquist frequency, as an oversampled analog bandwidth makes, gives 2.6).
     */
   val Margin = 3.0
   val Windows = 32
 
-  /** Noise floor (full scale rms) from neighbouring differences of the residual on both channels, over [a, b). */
+  /** Noise floor (full scale rms) from second differences of neighbouring residual samples on both channels, over
+    * [a, b): white noise gives var(r(i-1) - 2 r(i) + r(i+1)) = 6 sigma^2. A misfit at a fraction x of the sample rate
+    * passes with (2 sin(pi x))^2 / sqrt(6) of its size (first differences let 2 sin(pi x) / sqrt(2) through: a misfit
+    * near a tenth of the sample rate, as vibration faster than a trajectory segment makes, would count as noise).
+    */
   def floor(e: SignalEngine, a: Int = 1, b: Int = -1): Double = {
     val end = if (b < 0) e.n else b
     var s = 0.0; var k = 0; var i = math.max(1, a)
-    while (i < end) {
-      val ds = e.resS(i) - e.resS(i - 1); val dc = e.resC(i) - e.resC(i - 1)
+    while (i + 1 < end) {
+      val ds = e.resS(i - 1) - 2 * e.resS(i) + e.resS(i + 1); val dc = e.resC(i - 1) - 2 * e.resC(i) + e.resC(i + 1)
       s += ds * ds + dc * dc; k += 2; i += 1
     }
-    if (k == 0) 0.0 else math.sqrt(s / k / 2)
+    if (k == 0) 0.0 else math.sqrt(s / k / 6)
   }
 
-  /** The noise floor of one channel's residual (full scale rms). */
+  /** The noise floor of one channel's residual (full scale rms), from second differences. */
   def floorOf(r: Array[Double]): Double = {
     var s = 0.0; var i = 1
-    while (i < r.length) { val d = r(i) - r(i - 1); s += d * d; i += 1 }
-    if (r.length < 2) 0.0 else math.sqrt(s / (r.length - 1) / 2)
+    while (i + 1 < r.length) { val d = r(i - 1) - 2 * r(i) + r(i + 1); s += d * d; i += 1 }
+    if (r.length < 3) 0.0 else math.sqrt(s / (r.length - 2) / 6)
   }
 
   private def rms(e: SignalEngine, a: Int, b: Int): Double = {
