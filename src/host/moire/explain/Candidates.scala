@@ -157,9 +157,10 @@ final class Candidates(val engine: SignalEngine) {
     Some(Cand(Bandwidth.name, ch, sp, fullM2ll(sp), 1, p, u, where))
   }
 
-  def jitter(): Option[Cand] = {
-    if (spec.slopeNoise || fMax <= 0) return None
-    val (ds, dc) = slopes()
+  /** Noise variance growing with a slope (ds, dc): the fitted scale (rms of the slope's factor), its sd from the Fisher
+    * information, the white noise left (full scale rms) and -2 ln L; None when the slope adds no variance.
+    */
+  private def slopeNoise(ds: Array[Double], dc: Array[Double]): Option[(Double, Double, Double, Double)] = {
     val nz = Noise.fit(resS, resC, (ds, dc), cens)
     if (nz.jitter2 <= 0) return None
     var info = 0.0; var i = 0
@@ -167,28 +168,27 @@ final class Candidates(val engine: SignalEngine) {
       val a = ds(i) * ds(i) / (nz.varS + nz.jitter2 * ds(i) * ds(i)); val b = dc(i) * dc(i) / (nz.varC + nz.jitter2 * dc(i) * dc(i))
       info += 0.5 * (a * a + b * b); i += 1
     }
-    val j = math.sqrt(nz.jitter2); val sdj = (1 / math.sqrt(info)) / (2 * j)
-    val white = math.sqrt(0.5 * (nz.varS + nz.varC))
-    val (p, u, where) = (Map("jitter_s" -> j, "white_noise_fs" -> white), Map("jitter_s" -> sdj, "white_noise_fs" -> 0.0),
-      "noise against signal slope (speed and fringe phase)")
-    Some(Cand(Jitter.name, "both", spec.copy(jitter = true), nz.m2ll, 1, p, u, where))
+    val r = math.sqrt(nz.jitter2)
+    Some((r, (1 / math.sqrt(info)) / (2 * r), math.sqrt(0.5 * (nz.varS + nz.varC)), nz.m2ll))
+  }
+
+  def jitter(): Option[Cand] = {
+    if (spec.slopeNoise || fMax <= 0) return None
+    val (ds, dc) = slopes()
+    slopeNoise(ds, dc).map { case (j, sdj, white, m2ll) =>
+      Cand(Jitter.name, "both", spec.copy(jitter = true), m2ll, 1, Map("jitter_s" -> j, "white_noise_fs" -> white),
+        Map("jitter_s" -> sdj, "white_noise_fs" -> 0.0), "noise against signal slope (speed and fringe phase)")
+    }
   }
 
   /** Phase noise of the motion: noise variance growing with the slope against the fringe phase (radians rms). */
   def phaseNoise(): Option[Cand] = {
     if (spec.slopeNoise) return None
     val (ds, dc) = phaseSlopes()
-    val nz = Noise.fit(resS, resC, (ds, dc), cens)
-    if (nz.jitter2 <= 0) return None
-    var info = 0.0; var i = 0
-    while (i < n) {
-      val a = ds(i) * ds(i) / (nz.varS + nz.jitter2 * ds(i) * ds(i)); val b = dc(i) * dc(i) / (nz.varC + nz.jitter2 * dc(i) * dc(i))
-      info += 0.5 * (a * a + b * b); i += 1
+    slopeNoise(ds, dc).map { case (r, sd, white, m2ll) =>
+      Cand(PhaseNoise.name, "both", spec.copy(phaseNoise = true), m2ll, 1, Map("phase_noise_rad" -> r, "white_noise_fs" -> white),
+        Map("phase_noise_rad" -> sd, "white_noise_fs" -> 0.0), "noise against the slope over the fringe phase, not growing with speed")
     }
-    val r = math.sqrt(nz.jitter2); val sd = (1 / math.sqrt(info)) / (2 * r)
-    val white = math.sqrt(0.5 * (nz.varS + nz.varC))
-    Some(Cand(PhaseNoise.name, "both", spec.copy(phaseNoise = true), nz.m2ll, 1, Map("phase_noise_rad" -> r, "white_noise_fs" -> white),
-      Map("phase_noise_rad" -> sd, "white_noise_fs" -> 0.0), "noise against the slope over the fringe phase, not growing with speed"))
   }
 
   /** Warm-up: the time constant by a log grid and golden section on every stride-th sample, then the full linear fit. */
