@@ -100,7 +100,7 @@ class MonitorApiSpec extends AnyFlatSpec {
     assert(err(o.copy(simulate = false)).contains("give one of --port"))
     assert(err(o.copy(port = Some("/dev/ttyUSB9"))).contains("give one of"))
     assert(err(o.copy(httpPort = 70000)).contains("--http-port must be in 0..65535"))
-    assert(err(o.copy(bind = "no.such.host.invalid")).contains("--bind"))
+    assert(err(o.copy(bind = "192.0.2.1")).contains("--bind '192.0.2.1' is not an address of this computer")) // TEST-NET-1
     assert(err(o.copy(scale = Scale(None, Some(-1), None, None))).contains("--period-um must be a positive number"))
     assert(err(o.copy(simulate = false, replay = Some("x.csv"), effects = Seq("jitter:jitter_s=1e-9"))).contains("--effect belongs to --simulate"))
     assert(intercept[MonitorError](MonitorCmd.source(o.copy(simulate = false, replay = Some("/nonexistent.csv")))).getMessage.contains("no such file"))
@@ -116,9 +116,9 @@ class MonitorApiSpec extends AnyFlatSpec {
       moire.signal.Motion.Constant(200), 20000, 40000, moire.signal.Adc(12))
     moire.recording.Recording.write(dir / "r.csv", m.generate()._1)
     val o = MonitorCmd.Options(None, Some((dir / "r.csv").toString), simulate = false, Nil, 115200, None, "127.0.0.1", 0, (dir / "out").toString, Scale.none)
+    val t0 = System.nanoTime() // before start: the replay's clock starts there, the server after it
     val (server, all) = MonitorCmd.start(o, w => fail(w))
     try {
-      val t0 = System.nanoTime()
       val st = until("an ellipse", 20) {
         val j = ujson.read(get(server.url + "api/state").body)
         if (!j("ellipse").isNull && j("records_total").num >= 2000) Some(j) else None

@@ -83,8 +83,9 @@ object Live {
   val Window = 4096
   /** Points of the Lissajous figure sent to the page (the newest). */
   val PlotPoints = 1024
-  /** Records over which the speed is measured (the newest). */
-  val SpeedRecords = 256
+  /** The speed is measured over the newest records that span at least this time (or the whole window when shorter):
+    * the position is whole counts, so a shorter span would read a count's step as a change of speed. */
+  val SpeedSeconds = 0.1
 
   private def r4(v: Double): ujson.Value = if (v.isNaN || v.isInfinite) ujson.Null else ujson.Num(math.rint(v * 1e4) / 1e4)
 
@@ -112,7 +113,8 @@ object Live {
     val p = r.extra("position"); val idx = r.extra("sample_index"); val last = p(n - 1)
     out += "position" -> ujson.Obj("counts" -> last, "um" -> s.scale.um(last).fold[ujson.Value](ujson.Null)(ujson.Num(_)),
       "degrees" -> s.scale.degrees(last).fold[ujson.Value](ujson.Null)(ujson.Num(_)))
-    val k = math.max(0, n - SpeedRecords)
+    val span = (SpeedSeconds * s.sampleRateHz).toLong
+    val k = { var j = n - 1; while (j > 0 && idx(n - 1) - idx(j) < span) j -= 1; j }
     val dt = (idx(n - 1) - idx(k)) / s.sampleRateHz
     val v = if (dt > 0) (p(n - 1) - p(k)) / dt else Double.NaN
     out += "speed" -> ujson.Obj("counts_per_s" -> r4(v), "um_per_s" -> s.scale.um(v).fold[ujson.Value](ujson.Null)(r4),

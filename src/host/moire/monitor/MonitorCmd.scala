@@ -18,7 +18,9 @@ object MonitorCmd {
     for ((k, v) <- Seq("--counts-per-period" -> o.scale.countsPerPeriod, "--period-um" -> o.scale.periodUm,
       "--lines-per-rev" -> o.scale.linesPerRev, "--full-scale-v" -> o.scale.fullScaleV); x <- v)
       if (!(x > 0) || x.isInfinite) throw new MonitorError(s"$k must be a positive number, got $x")
-    try java.net.InetAddress.getByName(o.bind) catch { case _: java.net.UnknownHostException => throw new MonitorError(s"--bind '${o.bind}' is not an address of this computer") }
+    val notHere = new MonitorError(s"--bind '${o.bind}' is not an address of this computer")
+    val a = try java.net.InetAddress.getByName(o.bind) catch { case _: java.net.UnknownHostException => throw notHere }
+    if (!a.isAnyLocalAddress && !a.isLoopbackAddress && java.net.NetworkInterface.getByInetAddress(a) == null) throw notHere
     moire.files.SafeWrite.checkFolder(os.Path(o.out, os.pwd))
   }
 
