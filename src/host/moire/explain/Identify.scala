@@ -11,10 +11,24 @@ object Identify {
     case Some(t @ (Term.Drift | Term.Warmup(_))) =>
       val alts = (if (e.spec.terms.contains(Term.Contrast)) Nil else Seq("a contrast change along the travel" -> (() => e.termCols(Term.Contrast)))) :+
         ("an amplitude change with speed" -> (() => speedCols(e)))
-      beyond(e, t, alts)
-    case Some(t @ (Term.Contrast | Term.ContrastSpline(_))) if !e.spec.terms.exists(t => t == Term.Drift || t.isInstanceOf[Term.Warmup]) =>
-      beyond(e, t, Seq("a drift in time" -> (() => e.termCols(Term.Drift))))
+      beyond(e, t, alts ++ fringeHarmonics(e))
+    case Some(t @ (Term.Contrast | Term.ContrastSpline(_))) =>
+      val time = if (e.spec.terms.exists(t => t == Term.Drift || t.isInstanceOf[Term.Warmup])) Nil else Seq("a drift in time" -> (() => e.termCols(Term.Drift)))
+      beyond(e, t, time ++ fringeHarmonics(e))
     case _ => None
+  }
+
+  /** The harmonics of the fringe (the catalogue's orders) as the alternative of a change in time or along the travel in a
+    * record of a few fringe periods. Over one period (a magnetic encoder's turn) time and position are the fringe phase:
+    * offsets and gains changing linearly over it are a mix of all its harmonics (t = 1/2 - sum sin(k theta) / (k pi) over
+    * the period), so only what a change predicts beyond them tells it from harmonics of the fringe; over the periods
+    * that split a periodic effect into contiguous halves (`Replicate.MinCycles` each) they differ.
+    */
+  private def fringeHarmonics(e: SignalEngine): Seq[(String, () => IndexedSeq[Col])] = {
+    val orders = effects.Harmonic.Orders
+    if (e.travelPeriods >= 2 * Replicate.MinCycles) Nil
+    else Seq(f"harmonics ${orders.head}..${orders.last} of the fringe (the record spans ${e.travelPeriods}%.2g fringe periods)" ->
+      (() => orders.flatMap(k => e.termCols(Term.Harm(k, "both"))).toIndexedSeq))
   }
 
   /** Amplitudes in proportion to the squared fringe frequency (the first order of any low-pass). */
@@ -48,7 +62,8 @@ object Identify {
         case (Some(a), Some(b)) =>
           val gain = a - b - t.params * e.lnN
           if (gain > SignalExplain.Threshold) None
-          else Some(f"the record cannot tell it from $name: beyond that it lowers BIC by only $gain%.1f (position and time correlate, r = ${correlation(e)}%.3f)")
+          else Some(f"the record cannot tell it from $name: beyond that it lowers BIC by only $gain%.1f" +
+            (if (name.contains("(")) "" else f" (position and time correlate, r = ${correlation(e)}%.3f)"))
         case (Some(_), None) => Some(s"the record cannot tell it from $name: the two are collinear")
         case _ => None
       }

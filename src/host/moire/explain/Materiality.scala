@@ -28,9 +28,13 @@ object Materiality {
   }
 }
 
-/** A significant structure too small to matter: its effect, channel, size and the floor it is below. */
-final case class Negligible(effect: String, channel: String, sizeLsb: Double, floorLsb: Double, deltaBic: Double, params: Map[String, Double]) {
+/** A significant structure too small to matter: its effect, channel, size, the floor it is below, and what it is (the
+  * effect's own sentence, with where it shows: a line's frequency, a harmonic's order), so the list says which structure it was.
+  */
+final case class Negligible(effect: String, channel: String, sizeLsb: Double, floorLsb: Double, deltaBic: Double, params: Map[String, Double],
+                            what: String = "") {
   def json: ujson.Obj = ujson.Obj("effect" -> effect, "channel" -> channel, "size_lsb" -> Report.num(sizeLsb),
     "floor_lsb" -> Report.num(floorLsb), "delta_bic" -> Report.num(deltaBic), "params" -> Report.nums(params),
-    "summary" -> f"$effect lowers BIC by $deltaBic%.0f but changes the signal by only $sizeLsb%.3g LSB (floor $floorLsb%.3g LSB): too small to matter")
+    "summary" -> ((if (what.isEmpty) effect else s"$effect: $what") +
+      f": lowers BIC by $deltaBic%.0f but changes the signal by only $sizeLsb%.3g LSB (floor $floorLsb%.3g LSB): too small to matter"))
 }

@@ -117,18 +117,23 @@ object SignalExplain {
             e.spec = c.spec; e.converge(); settle(e)
             val c1 = demote(e, c)
             lap("refit")
-            // no finding when the joint refit does not lower the criterion, or the effect does not replicate
-            val why = if (!(bic0 - e.bic > 0)) Some("") else Replicate.why(e, prev)
-            lap("replicate")
-            // materiality: the change it makes to the signal, against the floor
+            // materiality first: the change it makes to the signal, against the floor. What lowers the criterion but is
+            // smaller is too small to matter, whatever its halves say (and their refits are not needed)
             val fx = Effects(c1.effect)
             lazy val size = fx.map(_.size(c1, e)).filter(!_.isNaN).orElse(termSize(e, prev))
               .getOrElse(Materiality.size(predBS, predBC, e.predS, e.predC, math.max(1, e.n / 200000)))
             // the noise is the floor from neighbouring samples: the model's residual still holds the effects not yet fitted
             lazy val floor = materiality.floor(e.lsb, Adequacy.floor(e))
-            why.orElse(if (size >= floor) None else Some("negligible")).orElse(claimed(claims, before, claimedNow)) match {
+            // no finding when the joint refit does not lower the criterion, the effect is negligible or does not replicate
+            val why = if (!(bic0 - e.bic > 0)) Some("") else if (size < floor) Some("negligible") else Replicate.why(e, prev)
+            lap("replicate")
+            why.orElse(claimed(claims, before, claimedNow)) match {
               case Some(w) =>
-                if (w == "negligible") negligible += Negligible(c1.effect, c1.channel, size / e.lsb, floor / e.lsb, bic0 - e.bic, c1.params)
+                if (w == "negligible") {
+                  val g = refresh(Finding(c1.effect, c1.channel, "", c1.params, c1.unc, bic0 - e.bic, rmsB, e.rms, c1.where), e)
+                  val what = fx.fold(c1.where)(_.summary(g.params, g.channel, cands.fMin, cands.fMax))
+                  negligible += Negligible(g.effect, g.channel, size / e.lsb, floor / e.lsb, bic0 - e.bic, g.params, what)
+                }
                 else if (w.nonEmpty) reject(c, w)
                 e.spec = prev; e.converge(); settle(e)
               case None =>

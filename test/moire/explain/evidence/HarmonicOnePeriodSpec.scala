@@ -37,7 +37,7 @@ class HarmonicOnePeriodSpec extends AnyFlatSpec with Matchers {
     sweep(12, 1.5, 3)
   }
 
-  it should "do the same with a coarser converter (10 bit, 1 LSB) and a 0.2 % 3rd harmonic of the magnet's shape" in pendingUntilFixed {
+  it should "do the same with a coarser converter (10 bit, 1 LSB) and a 0.2 % 3rd harmonic of the magnet's shape" in {
     sweep(10, 1.0, 4, h3 = 0.002)
   }
 

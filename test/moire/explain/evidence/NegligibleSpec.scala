@@ -64,7 +64,7 @@ class NegligibleSpec extends AnyFlatSpec with Matchers {
     }
   }
 
-  "explain" should "list the significant 0.1 LSB line beside a stuck bit as too small to matter, with its size" in pendingUntilFixed {
+  "explain" should "list the significant 0.1 LSB line beside a stuck bit as too small to matter, with its size" in {
     withClue(line(bit) + " | " + bit.notes.mkString("; ")) { negligible(bit).exists(n => n.contains("21") && n.contains("LSB")) shouldBe true }
   }
 }

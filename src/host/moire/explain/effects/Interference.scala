@@ -50,5 +50,13 @@ object Interference extends Effect {
   }
 
   def summary(p: Map[String, Double], channel: String, fMin: Double, fMax: Double): String =
-    f"pickup at ${Effect.g(p, "frequency_hz")}%.1f Hz, ${Effect.g(p, "amplitude_fs")}%.3g full scale amplitude"
+    f"pickup at ${hz(Effect.g(p, "frequency_hz"))}, ${Effect.g(p, "amplitude_fs")}%.3g full scale amplitude"
+
+  /** A frequency to 6 significant digits in Hz, kHz or MHz (21.0000 MHz, not 20999990.8 Hz: the line's frequency is
+    * known to about 1e-6 of itself in a record of 10^5 samples).
+    */
+  def hz(x: Double): String = if (x.isNaN || x.isInfinite) s"$x Hz" else {
+    val (v, u) = if (math.abs(x) >= 1e6) (x / 1e6, "MHz") else if (math.abs(x) >= 1e3) (x / 1e3, "kHz") else (x, "Hz")
+    s"${new java.math.BigDecimal(v).round(new java.math.MathContext(6)).toPlainString} $u"
+  }
 }
