@@ -100,7 +100,7 @@ object SignalExplain {
         if (!rejected.exists(_.where.startsWith(c.effect + " ")))
           rejected += Located(s"${c.effect} (${c.channel}): ${c.where}", s"structure of this shape lowers BIC by ${"%.0f".format(dbic(c))}, but $why",
             c.params, significant = true)
-      var accepted = false; var tries = 0
+      var accepted = false; var tries = 0; var smallTries = 0
       while (!accepted && tries < MaxTries && ordered.hasNext) {
         val c = ordered.next()
         Quantization.why(e, c).orElse(Identify.why(e, c)) match {
@@ -130,6 +130,8 @@ object SignalExplain {
             why.orElse(claimed(claims, before, claimedNow)) match {
               case Some(w) =>
                 if (w == "negligible") {
+                  // too small is not failed evidence: it does not use up the round's tries (its own budget bounds the cost)
+                  if (smallTries < MaxTries) { smallTries += 1; tries -= 1 }
                   val g = refresh(Finding(c1.effect, c1.channel, "", c1.params, c1.unc, bic0 - e.bic, rmsB, e.rms, c1.where), e)
                   val what = fx.fold(c1.where)(_.summary(g.params, g.channel, cands.fMin, cands.fMax))
                   negligible += Negligible(g.effect, g.channel, size / e.lsb, floor / e.lsb, bic0 - e.bic, g.params, what)
