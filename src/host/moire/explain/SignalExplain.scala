@@ -47,13 +47,33 @@ object SignalExplain {
   val MaxTries = 3
 
 
-  final case class Result(report: Report, engine: SignalEngine, before: Snapshot, steps: Seq[(Finding, Snapshot, Snapshot)])
+  /** `rerun`: the samples where the model does not follow, when it follows elsewhere (the search is made again without them). */
+  final case class Result(report: Report, engine: SignalEngine, before: Snapshot, steps: Seq[(Finding, Snapshot, Snapshot)],
+                          rerun: Option[Array[Boolean]] = None)
 
   def specOf(model: Seq[EffectSpec]): ModelSpec =
     model.foldLeft(ModelSpec())((sp, e) => Effects(e.effect).fold(sp)(_.backward(sp, e)))
 
+  /** Explains a recording. Adequacy first: where the final model does not follow the signal in some windows but does
+    * in others, the search is made again with those windows weighted out (effects fitted and judged where it follows).
+    */
   def run(file: String, rec: Recording, model: Seq[EffectSpec], progress: Progress, maxFindings: Int = 8,
           holdBytes: Long = Runtime.getRuntime.maxMemory / 8, materiality: Materiality = Materiality()): Result = {
+    val t0 = System.nanoTime()
+    val first = search(file, rec, model, progress, maxFindings, holdBytes, materiality, None)
+    first.rerun match {
+      case None => first
+      case Some(mask) =>
+        val again = search(file, rec, model, progress, maxFindings, holdBytes, materiality, Some((mask, first.report.misfit)))
+        again.copy(report = again.report.copy(seconds = (System.nanoTime() - t0) / 1e9))
+    }
+  }
+
+  /** One search; `notFollowed`: the samples to weight out and the misfit statement that says where (None: all in). The
+    * result's `rerun` marks the windows to leave out when the search should be made again without them.
+    */
+  private def search(file: String, rec: Recording, model: Seq[EffectSpec], progress: Progress, maxFindings: Int,
+                     holdBytes: Long, materiality: Materiality, notFollowed: Option[(Array[Boolean], Seq[Located])]): Result = {
     val t0 = System.nanoTime()
     val timing = sys.props.contains("moire.timing")
     var tl = t0
@@ -63,8 +83,13 @@ object SignalExplain {
     e.init(); progress.step(4)
     val givenModel = specOf(model)
     if (givenModel != ModelSpec()) { e.spec = givenModel; e.converge(); settle(e) }
-    val baseRms = e.rms; val baseBic = e.bic; val baseParams = baselineParams(e)
+    val baseRms = e.rms; val baseBic = e.bic
+    // the noise of the default part where the model does not follow somewhere (or nowhere): the floor, not the misfit
+    val noiseMask = notFollowed.fold(null: Array[Boolean])(_._1)
+    val floorNoise = (Adequacy.noiseOf(e.resS, noiseMask), Adequacy.noiseOf(e.resC, noiseMask))
+    val baseParams0 = baselineParams(e)
     val before = Snapshot.of("default model", e.resS, e.resC)
+    notFollowed.foreach { case (mask, _) => e.exclude(mask); settle(e) }
     lap("default fit")
     val located = Locate.all(e)
     val negligible = Seq.newBuilder[Negligible]
@@ -153,20 +178,23 @@ object SignalExplain {
     val left = Locate.all(e).filter(l => l.significant && !smallClaims.exists(l.where.startsWith))
     // with a free motion that bends within a period, what is left cannot be told from the motion: not tested, not unexplained
     val confounded = Identifiable.motionConfounded(e)
-    // adequacy: where the model does not follow the signal; over the whole record, nothing fitted on it is a finding
-    val misfit = Adequacy.misfit(e); val ratio = Adequacy.ratio(e)
-    val follows = !(ratio > Adequacy.Margin)
+    // adequacy: where the model does not follow the signal. Where it follows nowhere, nothing fitted is a finding; where
+    // it follows in part, the search is made again on the windows that follow (the caller), and this one is dropped.
+    val misfit = notFollowed.map(_._2).getOrElse(Adequacy.misfit(e))
+    val mask = if (notFollowed.isEmpty) Adequacy.mask(e) else null
+    val follows = mask == null || mask.count(!_) >= Adequacy.MinFollowed * e.n
     val withdrawn = if (follows) Nil else fin.map { case (f, _, _) =>
-      Located(s"${f.effect} (${f.channel}): ${f.where}", f"fitted while the default model does not follow the signal (residual rms " +
-        f"$ratio%.1f x the noise floor from neighbouring samples): not assessed", f.params, significant = true)
+      Located(s"${f.effect} (${f.channel}): ${f.where}", f"fitted while the default model does not follow the signal over more than ${100 * (1 - Adequacy.MinFollowed)}%.0f %% of " +
+        f"the record (residual rms above ${Adequacy.Margin}%.0f x the noise floor from neighbouring samples): not assessed", f.params, significant = true)
     }
+    val baseParams = if (misfit.isEmpty) baseParams0 else baseParams0 ++ Map("noise_sin_fs" -> floorNoise._1, "noise_cos_fs" -> floorNoise._2)
     val unexplained = (if (confounded || !follows) Nil else left) ++ rejected ++ withdrawn
     val coarse = CoarseQuantization.finding(e)
     val shown = if (follows) fin else Nil
     val report = Report(file, "signals", baseRms, baseBic, baseParams, located, coarse ++ shown.map(_._1), unexplained, e.rms, e.bic,
       rec.length, (System.nanoTime() - t0) / 1e9, notes(e), Coverage.untested(e, cands.fMin, cands.fMax) ++
         (if (confounded) Identifiable.leftOver(left) else Nil), small, misfit)
-    Result(report, e, before, shown)
+    Result(report, e, before, shown, if (mask != null && follows) Some(mask) else None)
   }
 
   /** A new linear term's own part of the prediction (its columns times its coefficients): its size. */
@@ -269,7 +297,8 @@ object SignalExplain {
     */
   def baselineParams(e: SignalEngine): Map[String, Double] = {
     val follows = !(Adequacy.ratio(e) > Adequacy.Margin)
-    val (ns, nc) = if (follows) (math.sqrt(e.noise.varS), math.sqrt(e.noise.varC)) else (Adequacy.floorOf(e.resS), Adequacy.floorOf(e.resC))
+    def floorOf(r: Array[Double]) = Adequacy.floorOf(r, null, 0, e.n, Adequacy.JudgeOrder, null)
+    val (ns, nc) = if (follows) (math.sqrt(e.noise.varS), math.sqrt(e.noise.varC)) else (floorOf(e.resS), floorOf(e.resC))
     Map(
       "offset_sin_fs" -> e.base(0), "offset_cos_fs" -> e.base(3), "amplitude_sin_fs" -> e.ampS, "amplitude_cos_fs" -> e.ampC,
       "phase_error_deg" -> e.phaseErrorDeg, "noise_sin_fs" -> ns, "noise_cos_fs" -> nc,

@@ -33,18 +33,18 @@ class MisfitSpec extends AnyFlatSpec with Matchers {
 
   private lazy val reports = cases.map { case (name, text) => name -> explain(name, text) }
 
-  "explain on motion the default model cannot follow" should "report no catalogued effect" in pendingUntilFixed {
+  "explain on motion the default model cannot follow" should "report no catalogued effect" in {
     val withFinding = reports.filter(_._2.findings.nonEmpty)
     withClue(withFinding.map { case (k, r) => s"$k: ${line(r)}" }.mkString("\n")) { withFinding shouldBe empty }
   }
 
-  it should "say the default model does not follow, with where (needs: the adequacy statement of issue 28)" in pendingUntilFixed {
+  it should "say the default model does not follow, with where (needs: the adequacy statement of issue 28)" in {
     val silent = reports.filter { case (_, r) => misfit(r).isEmpty }
     withClue(silent.map { case (k, r) => s"$k: ${line(r)}" }.mkString("\n")) { silent.map(_._1) shouldBe empty }
     for ((name, r) <- reports) withClue(s"$name: ${misfit(r)}") { hasTimeRange(misfit(r).get) shouldBe true }
   }
 
-  it should "not report the misfit's residual as noise (baseline noise near the bench's, needs: the adequacy statement)" in pendingUntilFixed {
+  it should "not report the misfit's residual as noise (baseline noise near the bench's, needs: the adequacy statement)" in {
     for ((name, r) <- reports; key <- Seq("noise_sin_fs", "noise_cos_fs")) withClue(s"$name, $key: ${r.baseline.get(key)}") {
       // the benches' noise is 1-3 LSB (below 0.002 full scale); several % of full scale is the misfit, not noise
       r.baseline.getOrElse(key, Double.NaN) should be < 0.005
