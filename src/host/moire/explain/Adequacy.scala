@@ -99,38 +99,61 @@ object Adequacy {
   /** The model's rms over the floor for the whole record. */
   def ratio(e: SignalEngine): Double = { val f = floor(e); if (f > 0) rms(e, 0, e.n) / f else Double.PositiveInfinity }
 
-  /** The windows [a, b) of the record and each one's residual rms over its floor. */
-  def windows(e: SignalEngine): Seq[(Int, Int, Double)] = {
-    // windows of n / Windows samples (at least 16); the last takes the remainder
+  /** A window [a, b) of the record, its residual rms over its floor, and its residual rms (full scale). */
+  final case class Window(a: Int, b: Int, ratio: Double, rms: Double)
+
+  /** The windows of the record: n / Windows samples each (at least 16), the last takes the remainder. */
+  def windows(e: SignalEngine): Seq[Window] = {
     val w = math.max(16, e.n / Windows); val k = math.max(1, e.n / w)
     (0 until k).map(j => (j * w, if (j == k - 1) e.n else (j + 1) * w)).map { case (a, b) =>
-      val f = floor(e, a, b); (a, b, if (f > 0) rms(e, a, b) / f else 0.0)
+      val f = floor(e, a, b); val r = rms(e, a, b); Window(a, b, if (f > 0) r / f else 0.0, r)
     }
   }
 
-  /** The samples in windows where the model does not follow (null when it follows everywhere). */
-  def mask(e: SignalEngine): Array[Boolean] = {
-    val bad = windows(e).filter(_._3 > Margin)
-    if (bad.isEmpty) null else { val m = new Array[Boolean](e.n); bad.foreach { case (a, b, _) => java.util.Arrays.fill(m, a, b, true) }; m }
+  /** Where the model (the engine's current spec) does not follow, besides the windows `prior` already weighted out.
+    * A misfit in part of the record also spoils the fit elsewhere (the default part and the trajectory take up some of
+    * it), so the windows above `Margin` x their floor whose rms is also above `Margin` x the median rms of the windows
+    * in the fit ("standing out") are weighted out and the spec is refitted without them, up to 4 times, until none
+    * stands out. Returns those, and the windows still above the margin after that (each with its ratio when judged).
+    * Leaves the standing-out windows weighted out of the engine's fit.
+    */
+  def judge(e: SignalEngine, prior: Seq[Window]): (Seq[Window], Seq[Window]) = {
+    var out = Vector.empty[Window]; var k = 0; var more = true
+    def inFit = windows(e).filter(w => !out.exists(_.a == w.a) && !prior.exists(_.a == w.a))
+    while (more && k < 4) {
+      val ws = inFit; val med = median(ws.map(_.rms))
+      val stand = ws.filter(w => w.ratio > Margin && w.rms > Margin * med)
+      if (stand.isEmpty) more = false
+      else { out ++= stand; k += 1; e.exclude(maskOf(e, prior ++ out)) }
+    }
+    (out, inFit.filter(_.ratio > Margin))
   }
 
-  /** The windows where the model does not follow the signal, merged into runs, as located departures. */
-  def misfit(e: SignalEngine): Seq[Located] = {
-    val bad = windows(e).filter(_._3 > Margin)
+  private def median(xs: Seq[Double]): Double = if (xs.isEmpty) 0.0 else xs.sorted.apply(xs.size / 2)
+
+  /** The samples in `ws` (null when empty). */
+  def maskOf(e: SignalEngine, ws: Seq[Window]): Array[Boolean] =
+    if (ws.isEmpty) null else { val m = new Array[Boolean](e.n); ws.foreach(w => java.util.Arrays.fill(m, w.a, w.b, true)); m }
+
+  /** Whether effects are assessed with the windows `ws` weighted out: those that follow hold at least `MinFollowed`. */
+  def assessable(e: SignalEngine, ws: Seq[Window]): Boolean = ws.map(w => w.b - w.a).sum <= (1 - MinFollowed) * e.n
+
+  /** The windows `ws` where the model does not follow the signal, merged into runs, as located departures. */
+  def misfit(e: SignalEngine, ws: Seq[Window]): Seq[Located] = {
     // runs of neighbouring windows
-    val runs = bad.foldLeft(List.empty[(Int, Int, Double)]) {
-      case ((a0, b0, r0) :: rest, (a, b, r)) if a == b0 => (a0, b, math.max(r0, r)) :: rest
-      case (acc, x) => x :: acc
+    val runs = ws.foldLeft(List.empty[(Int, Int, Double)]) {
+      case ((a0, b0, r0) :: rest, w) if w.a == b0 => (a0, w.b, math.max(r0, w.ratio)) :: rest
+      case (acc, w) => (w.a, w.b, w.ratio) :: acc
     }.reverse
     val p0 = e.phase(0)
-    val share = bad.map(w => w._2 - w._1).sum.toDouble / e.n
+    val share = ws.map(w => w.b - w.a).sum.toDouble / e.n
     runs.map { case (a, b, r) =>
       var x0 = Double.MaxValue; var x1 = -Double.MaxValue; var f0 = Double.MaxValue; var f1 = 0.0; var i = a
       while (i < b) { val x = e.phase(i) - p0; x0 = math.min(x0, x); x1 = math.max(x1, x); val f = math.abs(e.freq(i)); f0 = math.min(f0, f); f1 = math.max(f1, f); i += 1 }
       Located("the default model does not follow the signal here",
         f"residual rms up to ${r}%.1f x the noise floor (from neighbouring samples) at ${a / e.fs}%.4g..${b / e.fs}%.4g s, position ${x0}%.4g..${x1}%.4g " +
           f"fringe periods from the start, fringe frequency ${f0 / 1e3}%.4g..${f1 / 1e3}%.4g kHz; " +
-          (if (share > 1 - MinFollowed) f"the model does not follow over ${share * 100}%.0f %% of the record: no effect is assessed"
+          (if (!assessable(e, ws)) f"the model does not follow over ${share * 100}%.0f %% of the record: no effect is assessed"
            else f"effects are fitted and judged without these samples (${share * 100}%.0f %% of the record)"),
         Map("ratio" -> r, "t0_s" -> a / e.fs, "t1_s" -> b / e.fs, "position0_periods" -> x0, "position1_periods" -> x1, "f0_hz" -> f0, "f1_hz" -> f1,
           "share_not_followed" -> share),
