@@ -1,11 +1,16 @@
 package moire.explain
 
-/** Adequacy first (issue 28): whether the model follows the signal at all, judged against a noise floor that does not
-  * depend on the motion model. The floor comes from second differences of neighbouring residual samples: white noise gives
-  * var(r(i-1) - 2 r(i) + r(i+1)) = 6 sigma^2, while a misfit that varies over more than a few samples cancels in them.
-  * Where the residual's rms exceeds that floor by `Margin` (in any of `Windows` contiguous windows), the model does not
-  * follow the signal there: the report says where (time, position, speed). When it does not follow over the record as
-  * a whole, nothing fitted on it is a finding.
+/** Adequacy first (issue 28): whether the model follows the signal, judged window by window against a noise floor that
+  * does not depend on the motion model. The floor comes from k-th differences of neighbouring residual samples: white
+  * noise of rms sigma gives mean square C(2k, k) sigma^2 to them, while a misfit that varies over more than a few samples
+  * cancels in them (one at a fraction x of the sample rate passes with (2 sin(pi x))^k / sqrt(C(2k, k)) of its size).
+  * The largest `Trim` of the squared differences are left out (a slip or a shock a few samples long is a misfit, not
+  * noise) and the mean of the rest is scaled back to sigma^2 for Gaussian noise.
+  *
+  * The record is cut into `Windows` contiguous windows; where the residual's rms exceeds the window's floor by `Margin`,
+  * the model does not follow the signal there. Effects are then fitted and judged only on the windows that follow
+  * (the others are weighted out of the fit, `SignalEngine.exclude`); when those that follow hold less than
+  * `MinFollowed` of the record, nothing is assessed.
   */
 object Adequacy {
   /** Residual rms over the noise floor above which the model does not follow (3: white noise gives 1; noise whose band
@@ -13,27 +18,76 @@ object Adequacy {
     */
   val Margin = 3.0
   val Windows = 32
-
-  /** Noise floor (full scale rms) from second differences of neighbouring residual samples on both channels, over
-    * [a, b): white noise gives var(r(i-1) - 2 r(i) + r(i+1)) = 6 sigma^2. A misfit at a fraction x of the sample rate
-    * passes with (2 sin(pi x))^2 / sqrt(6) of its size (first differences let 2 sin(pi x) / sqrt(2) through: a misfit
-    * near a tenth of the sample rate, as vibration faster than a trajectory segment makes, would count as noise).
+  /** The share of the record the windows that follow must hold for effects to be assessed on them: between short
+    * islands the misfit's edges and the gaps leave slow effects (of time, position, low frequencies) undetermined.
     */
-  def floor(e: SignalEngine, a: Int = 1, b: Int = -1): Double = {
-    val end = if (b < 0) e.n else b
-    var s = 0.0; var k = 0; var i = math.max(1, a)
-    while (i + 1 < end) {
-      val ds = e.resS(i - 1) - 2 * e.resS(i) + e.resS(i + 1); val dc = e.resC(i - 1) - 2 * e.resC(i) + e.resC(i + 1)
-      s += ds * ds + dc * dc; k += 2; i += 1
+  val MinFollowed = 0.5
+  /** The fraction of the largest squared differences left out of the floor. */
+  val Trim = 0.1
+  /** Differences of the floor that judges adequacy: 2nd (noise band-limited to half the Nyquist frequency still passes). */
+  val JudgeOrder = 2
+  /** Differences of the noise reported where the model does not follow: 4th (a misfit at a tenth of the sample rate
+    * passes with 1 % of its size, against 12 % through 2nd differences).
+    */
+  val NoiseOrder = 4
+
+  private val coef: Map[Int, Array[Double]] = Seq(JudgeOrder, NoiseOrder).map { k =>
+    k -> Array.tabulate(k + 1)(j => (if (j % 2 == 0) 1.0 else -1.0) * (0 until j).foldLeft(1.0)((c, m) => c * (k - m) / (m + 1)))
+  }.toMap
+
+  /** Noise floor (full scale rms) of the residuals `rs` (and `rc`, when not null, pooled) over [a, b) from k-th
+    * differences, skipping differences that touch a sample where `skip` is true (null: none); NaN from fewer than
+    * `minCount` differences.
+    */
+  def floorOf(rs: Array[Double], rc: Array[Double], a: Int, b: Int, k: Int, skip: Array[Boolean], minCount: Int = 0): Double = {
+    val c = coef(k); val norm = c.map(x => x * x).sum
+    val d2 = new Array[Double](2 * math.max(0, b - a)); var m = 0; var i = math.max(0, a)
+    var bad = -1 // the last skipped sample at or before i + k
+    while (i + k < b) {
+      if (skip != null) { var j = math.max(i, bad + 1); while (j <= i + k) { if (skip(j)) bad = j; j += 1 } }
+      if (bad < i) {
+        var s = 0.0; var t = 0.0; var j = 0
+        while (j <= k) { s += c(j) * rs(i + j); if (rc != null) t += c(j) * rc(i + j); j += 1 }
+        d2(m) = s * s; m += 1
+        if (rc != null) { d2(m) = t * t; m += 1 }
+      }
+      i += 1
     }
-    if (k == 0) 0.0 else math.sqrt(s / k / 6)
+    if (m < minCount) Double.NaN else if (m == 0) 0.0 else math.sqrt(trimmedMeanSquare(d2, m) / norm)
   }
 
-  /** The noise floor of one channel's residual (full scale rms), from second differences. */
-  def floorOf(r: Array[Double]): Double = {
-    var s = 0.0; var i = 1
-    while (i + 1 < r.length) { val d = r(i - 1) - 2 * r(i) + r(i + 1); s += d * d; i += 1 }
-    if (r.length < 3) 0.0 else math.sqrt(s / (r.length - 2) / 6)
+  /** The mean of the smallest (1 - Trim) of d2(0 until m), scaled to the full mean of a Gaussian's squares. */
+  private def trimmedMeanSquare(d2: Array[Double], m: Int): Double = {
+    // the threshold from (a strided sample of) the values; the correction from the fraction actually kept
+    val stride = math.max(1, m / 40000)
+    val smp = Array.tabulate((m + stride - 1) / stride)(j => d2(j * stride)); java.util.Arrays.sort(smp)
+    val thr = smp(math.min(smp.length - 1, ((1 - Trim) * smp.length).toInt))
+    var s = 0.0; var kept = 0; var i = 0
+    while (i < m) { if (d2(i) <= thr) { s += d2(i); kept += 1 }; i += 1 }
+    val p = kept.toDouble / m
+    if (kept == 0) 0.0
+    else if (p >= 1) s / kept
+    else {
+      // E[z^2 | |z| < q] = 1 - 2 q phi(q) / p, with P(|z| < q) = p
+      val q = normal.inverseCumulativeProbability(0.5 + 0.5 * p)
+      val c = 1 - 2 * q * math.exp(-0.5 * q * q) / math.sqrt(2 * math.Pi) / p
+      if (c > 0) s / kept / c else s / kept
+    }
+  }
+  private val normal = new org.hipparchus.distribution.continuous.NormalDistribution(0, 1)
+
+  /** Noise floor (full scale rms) of the engine's residual on both channels over [a, b), from 2nd differences, on the
+    * samples in the fit (not weighted out).
+    */
+  def floor(e: SignalEngine, a: Int = 0, b: Int = -1): Double =
+    floorOf(e.resS, e.resC, a, if (b < 0) e.n else b, JudgeOrder, e.excluded)
+
+  /** The noise (full scale rms) of one channel's residual where the model does not follow somewhere: from 4th
+    * differences, over the windows that follow (all of them when none does).
+    */
+  def noiseOf(r: Array[Double], skip: Array[Boolean]): Double = {
+    val f = if (skip == null) Double.NaN else floorOf(r, null, 0, r.length, NoiseOrder, skip, minCount = 64)
+    if (f.isNaN) floorOf(r, null, 0, r.length, NoiseOrder, null) else f
   }
 
   private def rms(e: SignalEngine, a: Int, b: Int): Double = {
@@ -45,25 +99,64 @@ object Adequacy {
   /** The model's rms over the floor for the whole record. */
   def ratio(e: SignalEngine): Double = { val f = floor(e); if (f > 0) rms(e, 0, e.n) / f else Double.PositiveInfinity }
 
-  /** The windows where the model does not follow the signal, merged into runs, as located departures. */
-  def misfit(e: SignalEngine): Seq[Located] = {
-    val w = math.max(16, e.n / Windows)
-    val bad = (0 until e.n by w).map(a => (a, math.min(e.n, a + w))).filter { case (a, b) => b - a >= 16 }.map { case (a, b) =>
-      val f = floor(e, a + 1, b); (a, b, if (f > 0) rms(e, a, b) / f else 0.0)
-    }.filter(_._3 > Margin)
+  /** A window [a, b) of the record, its residual rms over its floor, and its residual rms (full scale). */
+  final case class Window(a: Int, b: Int, ratio: Double, rms: Double)
+
+  /** The windows of the record: n / Windows samples each (at least 16), the last takes the remainder. */
+  def windows(e: SignalEngine): Seq[Window] = {
+    val w = math.max(16, e.n / Windows); val k = math.max(1, e.n / w)
+    (0 until k).map(j => (j * w, if (j == k - 1) e.n else (j + 1) * w)).map { case (a, b) =>
+      val f = floor(e, a, b); val r = rms(e, a, b); Window(a, b, if (f > 0) r / f else 0.0, r)
+    }
+  }
+
+  /** Where the model (the engine's current spec) does not follow, besides the windows `prior` already weighted out.
+    * A misfit in part of the record also spoils the fit elsewhere (the default part and the trajectory take up some of
+    * it), so the windows above `Margin` x their floor whose rms is also above `Margin` x the median rms of the windows
+    * in the fit ("standing out") are weighted out and the spec is refitted without them, up to 4 times, until none
+    * stands out. Returns those, and the windows still above the margin after that (each with its ratio when judged).
+    * Leaves the standing-out windows weighted out of the engine's fit.
+    */
+  def judge(e: SignalEngine, prior: Seq[Window]): (Seq[Window], Seq[Window]) = {
+    var out = Vector.empty[Window]; var k = 0; var more = true
+    def inFit = windows(e).filter(w => !out.exists(_.a == w.a) && !prior.exists(_.a == w.a))
+    while (more && k < 4) {
+      val ws = inFit; val med = median(ws.map(_.rms))
+      val stand = ws.filter(w => w.ratio > Margin && w.rms > Margin * med)
+      if (stand.isEmpty) more = false
+      else { out ++= stand; k += 1; e.exclude(maskOf(e, prior ++ out)) }
+    }
+    (out, inFit.filter(_.ratio > Margin))
+  }
+
+  private def median(xs: Seq[Double]): Double = if (xs.isEmpty) 0.0 else xs.sorted.apply(xs.size / 2)
+
+  /** The samples in `ws` (null when empty). */
+  def maskOf(e: SignalEngine, ws: Seq[Window]): Array[Boolean] =
+    if (ws.isEmpty) null else { val m = new Array[Boolean](e.n); ws.foreach(w => java.util.Arrays.fill(m, w.a, w.b, true)); m }
+
+  /** Whether effects are assessed with the windows `ws` weighted out: those that follow hold at least `MinFollowed`. */
+  def assessable(e: SignalEngine, ws: Seq[Window]): Boolean = ws.map(w => w.b - w.a).sum <= (1 - MinFollowed) * e.n
+
+  /** The windows `ws` where the model does not follow the signal, merged into runs, as located departures. */
+  def misfit(e: SignalEngine, ws: Seq[Window]): Seq[Located] = {
     // runs of neighbouring windows
-    val runs = bad.foldLeft(List.empty[(Int, Int, Double)]) {
-      case ((a0, b0, r0) :: rest, (a, b, r)) if a == b0 => (a0, b, math.max(r0, r)) :: rest
-      case (acc, x) => x :: acc
+    val runs = ws.foldLeft(List.empty[(Int, Int, Double)]) {
+      case ((a0, b0, r0) :: rest, w) if w.a == b0 => (a0, w.b, math.max(r0, w.ratio)) :: rest
+      case (acc, w) => (w.a, w.b, w.ratio) :: acc
     }.reverse
     val p0 = e.phase(0)
+    val share = ws.map(w => w.b - w.a).sum.toDouble / e.n
     runs.map { case (a, b, r) =>
       var x0 = Double.MaxValue; var x1 = -Double.MaxValue; var f0 = Double.MaxValue; var f1 = 0.0; var i = a
       while (i < b) { val x = e.phase(i) - p0; x0 = math.min(x0, x); x1 = math.max(x1, x); val f = math.abs(e.freq(i)); f0 = math.min(f0, f); f1 = math.max(f1, f); i += 1 }
       Located("the default model does not follow the signal here",
-        f"residual rms ${r}%.1f x the noise floor (from neighbouring samples) at ${a / e.fs}%.4g..${b / e.fs}%.4g s, position ${x0}%.4g..${x1}%.4g " +
-          f"fringe periods from the start, fringe frequency ${f0 / 1e3}%.4g..${f1 / 1e3}%.4g kHz",
-        Map("ratio" -> r, "t0_s" -> a / e.fs, "t1_s" -> b / e.fs, "position0_periods" -> x0, "position1_periods" -> x1, "f0_hz" -> f0, "f1_hz" -> f1),
+        f"residual rms up to ${r}%.1f x the noise floor (from neighbouring samples) at ${a / e.fs}%.4g..${b / e.fs}%.4g s, position ${x0}%.4g..${x1}%.4g " +
+          f"fringe periods from the start, fringe frequency ${f0 / 1e3}%.4g..${f1 / 1e3}%.4g kHz; " +
+          (if (!assessable(e, ws)) f"the model does not follow over ${share * 100}%.0f %% of the record: no effect is assessed"
+           else f"effects are fitted and judged without these samples (${share * 100}%.0f %% of the record)"),
+        Map("ratio" -> r, "t0_s" -> a / e.fs, "t1_s" -> b / e.fs, "position0_periods" -> x0, "position1_periods" -> x1, "f0_hz" -> f0, "f1_hz" -> f1,
+          "share_not_followed" -> share),
         significant = true)
     }
   }

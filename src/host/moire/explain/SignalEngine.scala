@@ -88,8 +88,27 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
   def predC: Array[Double] = Array.tabulate(n)(i => repC(i) - resC(i))
   def params: Int = 6 + traj.params + 2 + spec.extraParams
   def bic: Double = noise.m2ll + params * lnN
-  def rms: Double = math.sqrt((sumSq(resS) + sumSq(resC)) / (2.0 * n))
+  /** The rms of the residual over the samples in the fit. */
+  def rms: Double = math.sqrt((sumSq(resS) + sumSq(resC)) / (2.0 * math.max(1, n - excludedCount)))
   def rmsOf(a: Array[Double]): Double = math.sqrt(sumSq(a) / a.length)
+
+  // Samples weighted out of the fit (where the model does not follow the signal, `Adequacy`): their data are held at
+  // the prediction, so they carry no residual; null when every sample is in the fit.
+  private var _excluded: Array[Boolean] = null
+  private var _excludedCount = 0
+  def excluded: Array[Boolean] = _excluded
+  def excludedCount: Int = _excludedCount
+  /** Weights the samples where `mask` is true out of the fit (null: none) and refits. */
+  def exclude(mask: Array[Boolean]): Unit = {
+    _excluded = mask; _excludedCount = if (mask == null) 0 else mask.count(identity)
+    if (mask != null) { _repS = repS.clone(); _repC = repC.clone(); _cens = _cens.copy(s = _repS, c = _repC); holdExcluded() }
+    converge()
+  }
+  /** The data of the excluded samples at the current prediction: no residual there. */
+  private def holdExcluded(): Unit = if (_excluded != null) {
+    var i = 0
+    while (i < n) { if (_excluded(i)) { _repS(i) -= resS(i); _repC(i) -= resC(i); resS(i) = 0; resC(i) = 0 }; i += 1 }
+  }
 
   /** Initial ellipse from the extremes, raw phase by atan2, first trajectory, then the full default fit. */
   def init(): Unit = {
@@ -306,6 +325,8 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
       var out = y; var cen: Array[Double] = null; var i = 0
       def own(): Unit = if (out eq y) out = y.clone()
       while (i < n) {
+        if (_excluded != null && _excluded(i)) { own(); out(i) = p(i) }
+        else {
         if (fl.nonEmpty) {
           var best = codes(i); var bestD = Double.MaxValue
           val cands = fl.foldLeft(Seq(codes(i)))((cs, f) => cs.flatMap(f.preimages)).distinct
@@ -316,6 +337,7 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
         if (censor && (v >= hi - 0.5 * lsb || v <= lo + 0.5 * lsb)) {
           if (cen == null) cen = Array.fill(n)(Double.NaN)
           own(); cen(i) = if (v >= hi - 0.5 * lsb) v - 0.5 * lsb - p(i) else p(i) - (v + 0.5 * lsb); out(i) = p(i)
+        }
         }
         i += 1
       }
@@ -345,7 +367,7 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
       _sol = cols.solve(repS, repC)
       _termIndex = spec.terms.zip(cols.offsets.tail).toMap
       // the terms' columns may be made again below: from the state they were fitted in (the old default part)
-      residual(cols)
+      residual(cols); holdExcluded()
       predictionSlope(cols, sol.beta.take(6))
       _base = sol.beta.take(6)
       it += 1

@@ -47,13 +47,32 @@ object SignalExplain {
   val MaxTries = 3
 
 
-  final case class Result(report: Report, engine: SignalEngine, before: Snapshot, steps: Seq[(Finding, Snapshot, Snapshot)])
+  /** `rerun`: the windows where the model does not follow, when the search is to be made again without them. */
+  final case class Result(report: Report, engine: SignalEngine, before: Snapshot, steps: Seq[(Finding, Snapshot, Snapshot)],
+                          rerun: Seq[Adequacy.Window] = Nil)
 
   def specOf(model: Seq[EffectSpec]): ModelSpec =
     model.foldLeft(ModelSpec())((sp, e) => Effects(e.effect).fold(sp)(_.backward(sp, e)))
 
+  /** Explains a recording. Adequacy first: where the final model does not follow the signal in some windows but does
+    * in others, the search is made again with those windows weighted out (effects fitted and judged where it follows).
+    */
   def run(file: String, rec: Recording, model: Seq[EffectSpec], progress: Progress, maxFindings: Int = 8,
           holdBytes: Long = Runtime.getRuntime.maxMemory / 8, materiality: Materiality = Materiality()): Result = {
+    val t0 = System.nanoTime()
+    var res = search(file, rec, model, progress, maxFindings, holdBytes, materiality, Nil, 0)
+    var depth = 0
+    while (res.rerun.nonEmpty && depth < MaxReruns) { depth += 1; res = search(file, rec, model, progress, maxFindings, holdBytes, materiality, res.rerun, depth) }
+    res.copy(report = res.report.copy(seconds = (System.nanoTime() - t0) / 1e9))
+  }
+  /** Searches made again with more windows weighted out, at most. */
+  val MaxReruns = 2
+
+  /** One search with the windows `prior` weighted out after the default fit; the result's `rerun` lists the windows
+    * to leave out when the search should be made again without them (empty: this one stands).
+    */
+  private def search(file: String, rec: Recording, model: Seq[EffectSpec], progress: Progress, maxFindings: Int,
+                     holdBytes: Long, materiality: Materiality, prior: Seq[Adequacy.Window], depth: Int): Result = {
     val t0 = System.nanoTime()
     val timing = sys.props.contains("moire.timing")
     var tl = t0
@@ -63,8 +82,13 @@ object SignalExplain {
     e.init(); progress.step(4)
     val givenModel = specOf(model)
     if (givenModel != ModelSpec()) { e.spec = givenModel; e.converge(); settle(e) }
-    val baseRms = e.rms; val baseBic = e.bic; val baseParams = baselineParams(e)
+    val baseRms = e.rms; val baseBic = e.bic
+    // the noise of the default part where the model does not follow somewhere (or nowhere): the floor, not the misfit
+    val noiseMask = Adequacy.maskOf(e, prior)
+    val floorNoise = (Adequacy.noiseOf(e.resS, noiseMask), Adequacy.noiseOf(e.resC, noiseMask))
+    val baseParams0 = baselineParams(e)
     val before = Snapshot.of("default model", e.resS, e.resC)
+    if (prior.nonEmpty) { e.exclude(noiseMask); settle(e) }
     lap("default fit")
     val located = Locate.all(e)
     val negligible = Seq.newBuilder[Negligible]
@@ -160,20 +184,30 @@ object SignalExplain {
     val left = Locate.all(e).filter(l => l.significant && !smallClaims.exists(l.where.startsWith))
     // with a free motion that bends within a period, what is left cannot be told from the motion: not tested, not unexplained
     val confounded = Identifiable.motionConfounded(e)
-    // adequacy: where the model does not follow the signal; over the whole record, nothing fitted on it is a finding
-    val misfit = Adequacy.misfit(e); val ratio = Adequacy.ratio(e)
-    val follows = !(ratio > Adequacy.Margin)
+    val finalRms = e.rms; val finalBic = e.bic
+    // adequacy: where the model does not follow the signal. Where it follows over less than half the record, nothing
+    // fitted is a finding; where it follows over more, the search is made again on the windows that follow (the caller)
+    // and this one is dropped.
+    // Windows that stand out are left out first (the rest may hold an effect the misfit kept the search from fitting).
+    val (stand, rest) = Adequacy.judge(e, prior)
+    val notHere = (prior ++ stand ++ rest).sortBy(_.a)
+    val again = depth < MaxReruns
+    val rerun = if (stand.nonEmpty && again && Adequacy.assessable(e, prior ++ stand)) (prior ++ stand).sortBy(_.a)
+      else if ((stand ++ rest).nonEmpty && again && Adequacy.assessable(e, notHere)) notHere else Nil
+    val follows = Adequacy.assessable(e, notHere) || rerun.nonEmpty
+    val misfit = Adequacy.misfit(e, notHere)
     val withdrawn = if (follows) Nil else fin.map { case (f, _, _) =>
-      Located(s"${f.effect} (${f.channel}): ${f.where}", f"fitted while the default model does not follow the signal (residual rms " +
-        f"$ratio%.1f x the noise floor from neighbouring samples): not assessed", f.params, significant = true)
+      Located(s"${f.effect} (${f.channel}): ${f.where}", f"fitted while the default model does not follow the signal over more than ${100 * (1 - Adequacy.MinFollowed)}%.0f %% of " +
+        f"the record (residual rms above ${Adequacy.Margin}%.0f x the noise floor from neighbouring samples): not assessed", f.params, significant = true)
     }
+    val baseParams = if (misfit.isEmpty) baseParams0 else baseParams0 ++ Map("noise_sin_fs" -> floorNoise._1, "noise_cos_fs" -> floorNoise._2)
     val unexplained = (if (confounded || !follows) Nil else left) ++ rejected ++ withdrawn
     val coarse = CoarseQuantization.finding(e)
     val shown = if (follows) fin else Nil
-    val report = Report(file, "signals", baseRms, baseBic, baseParams, located, coarse ++ shown.map(_._1), unexplained, e.rms, e.bic,
+    val report = Report(file, "signals", baseRms, baseBic, baseParams, located, coarse ++ shown.map(_._1), unexplained, finalRms, finalBic,
       rec.length, (System.nanoTime() - t0) / 1e9, notes(e), Coverage.untested(e, cands.fMin, cands.fMax) ++
         (if (confounded) Identifiable.leftOver(left) else Nil), small, misfit)
-    Result(report, e, before, shown)
+    Result(report, e, before, shown, rerun)
   }
 
   /** A new linear term's own part of the prediction (its columns times its coefficients): its size. */
@@ -276,7 +310,8 @@ object SignalExplain {
     */
   def baselineParams(e: SignalEngine): Map[String, Double] = {
     val follows = !(Adequacy.ratio(e) > Adequacy.Margin)
-    val (ns, nc) = if (follows) (math.sqrt(e.noise.varS), math.sqrt(e.noise.varC)) else (Adequacy.floorOf(e.resS), Adequacy.floorOf(e.resC))
+    def floorOf(r: Array[Double]) = Adequacy.floorOf(r, null, 0, e.n, Adequacy.JudgeOrder, null)
+    val (ns, nc) = if (follows) (math.sqrt(e.noise.varS), math.sqrt(e.noise.varC)) else (floorOf(e.resS), floorOf(e.resC))
     Map(
       "offset_sin_fs" -> e.base(0), "offset_cos_fs" -> e.base(3), "amplitude_sin_fs" -> e.ampS, "amplitude_cos_fs" -> e.ampC,
       "phase_error_deg" -> e.phaseErrorDeg, "noise_sin_fs" -> ns, "noise_cos_fs" -> nc,
