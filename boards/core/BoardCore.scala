@@ -60,15 +60,15 @@ class BoardCore(val p: BoardParams) extends Module {
   private val dpIn = Wire(Valid(new AdcPins(12)))
   dpIn.valid := sampleValid
   dpIn.bits.sin := sinD; dpIn.bits.cos := cosD; dpIn.bits.otrSin := otrS; dpIn.bits.otrCos := otrC
-  private val (out, encA, encB, encZ, status, latency) = p.design match {
+  private val (out, encA, encB, encZ, status, latency, adapt) = p.design match {
     case BoardDesign.Subdiv =>
       val m = Module(new SubdivAdc(p.subdiv, p.adcFormat))
       m.io.in := dpIn; m.io.clearStatus := clear
-      (m.io.out, m.io.a, m.io.b, m.io.z, m.io.status, m.latency)
+      (m.io.out, m.io.a, m.io.b, m.io.z, m.io.status, m.latency, None)
     case BoardDesign.Corrected =>
-      val m = Module(new CorrectedSubdivider(p.correctedParams))
+      val m = Module(new CorrectedSubdivider(p.correctedParams, withReadBack = true))
       m.io.in := dpIn; m.io.clearStatus := clear
-      (m.io.out, m.io.a, m.io.b, m.io.z, m.io.status, m.latency)
+      (m.io.out, m.io.a, m.io.b, m.io.z, m.io.status, m.latency, m.readBack)
     case BoardDesign.Compensated =>
       val m = Module(new SubdivAdc(p.subdiv, p.adcFormat))
       m.io.in := dpIn; m.io.clearStatus := clear
@@ -92,7 +92,7 @@ class BoardCore(val p: BoardParams) extends Module {
       o.bits := RegNext(c.bits)
       val q = Module(new QuadratureOut(p.subdiv.positionWidth, p.subdiv.countBits, p.subdiv.minEdgeClocks))
       q.io.in.valid := o.valid; q.io.in.bits := o.bits.position
-      (o, q.io.a, q.io.b, q.io.z, m.io.status, m.latency + hp.latency + BoardParams.compensatedOutRegs)
+      (o, q.io.a, q.io.b, q.io.z, m.io.status, m.latency + hp.latency + BoardParams.compensatedOutRegs, None)
   }
   require(latency == p.datapathLatency, s"datapath latency $latency, expected ${p.datapathLatency}")
 
@@ -228,7 +228,7 @@ class BoardCore(val p: BoardParams) extends Module {
     Registers.BurstThreshold -> burstCfg.threshold, Registers.BurstTarget -> burstCfg.target.asUInt,
     Registers.BurstState -> Cat(burst.io.sending || infoPending, burst.io.state), Registers.BurstDepth -> p.burst.samples.U
   ).map { case (r, v) => r.addr -> Cat(0.U(32.W), v)(31, 0) } ++
-    harmonicKept.zipWithIndex.map { case (v, i) => (Registers.HarmonicBase + i) -> v }
+    harmonicKept.zipWithIndex.map { case (v, i) => (Registers.HarmonicBase + i) -> v } ++ adaptReadable
   private val cmd = cmdRx.io.cmd
   private val isWrite = cmd.valid && cmd.bits.write
   clear := isWrite && cmd.bits.addr === Registers.Control.addr.U && cmd.bits.value(ControlBit.Clear)
@@ -263,6 +263,27 @@ class BoardCore(val p: BoardParams) extends Module {
     }
     when(harmonicPort.we && cmd.bits.addr === (Registers.HarmonicBase + i).U) { r := kept }
     r
+  }
+  // the adaptive corrector's read-back (design corrected): its registered copies, the table entry at the index register
+  private val adaptReadable: Seq[(Int, UInt)] = adapt.toSeq.flatMap { rb =>
+    import moire.protocol.AdaptRegisters._
+    val ap = p.correctedParams.adapt
+    val index = RegInit(0.U(rb.tableIndex.getWidth.W))
+    when(written(TableIndex)) { index := cmd.bits.value(rb.tableIndex.getWidth - 1, 0) }
+    rb.tableIndex := index
+    val l = rb.learned
+    def word(v: SInt): UInt = v.pad(32).asUInt
+    Seq(OffsetSin -> word(l.offsetSin), OffsetCos -> word(l.offsetCos),
+      GainSin -> word(l.gainSin), GainCos -> word(l.gainCos),
+      Phase -> word(l.phase),
+      Updates -> l.updates,
+      Locked -> Cat(0.U(31.W), l.locked),
+      TableSum -> word(l.tableSum),
+      TableIndex -> index.pad(32),
+      TableData -> word(l.tableData),
+      Format -> moire.adapt.AdaptLearned.format(ap).U(32.W),
+      Size -> moire.adapt.AdaptLearned.size(ap).U(32.W)
+    ).map { case (r, v) => r.addr -> v }
   }
   // The reply reads the register one clock later, so a write answers with the new value. The address is decoded
   // to one select per register beside the command and the selected value registered: a reply takes 2 clocks.
