@@ -141,6 +141,12 @@ class BoardRegSpec extends AnyFlatSpec with Matchers {
       j("readout")("phase_error_deg").num shouldBe -4.0 +- 1e-3 // 17 fractional bits: 0.0004 deg a step
       j("readout")("table_deg").arr.map(_.num).sum shouldBe 0.0 +- 1e-9 // the mean removed, as the corrector applies it
       BoardRegFile.read(file).learned.map(_.words) shouldBe Some(learned.words.toMap)
+      // the whole table of a corrected board: the learned values too, decoded
+      val shown = new FakeBoard(pty, corrector(learned), adaptTable = learned.tableWords.toIndexedSeq)
+      val all = try run(pty, o => o) finally shown.close()
+      all.init.map(_.split("\\s+")(1)) shouldBe Registers.all.map(_.name) ++ AdaptRegisters.learned.map(_.name)
+      all.find(_.contains("adapt_phase")).get should endWith(s"signed ${learned.phase}")
+      all.last shouldBe "corrector: offsets 61.50 / -20.00 codes, amplitudes 1741.0 / 1650.0 codes (sin/cos 1.0552), phase error -4.000 deg; table: --save"
       // the same corrector, learned a little differently: compared, named, not written
       val moved = learned.copy(offsetSin = learned.offsetSin + 4096, table = table.updated(2, 3100L))
       val b = new FakeBoard(pty, corrector(moved), adaptTable = moved.tableWords.toIndexedSeq)

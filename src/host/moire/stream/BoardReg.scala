@@ -54,8 +54,17 @@ object BoardReg {
         }
         say(s"loaded ${ws.size} harmonic registers (0x${"%02x".format(ws.map(_._1).min)}..0x${"%02x".format(ws.map(_._1).max)}) from $file, each read back")
       }
-      val toRead = if (reads.isEmpty && writes.isEmpty && coefs.isEmpty && loadFile.isEmpty && saveFile.isEmpty) Registers.all.map(_.addr) else reads
+      val whole = reads.isEmpty && writes.isEmpty && coefs.isEmpty && loadFile.isEmpty && saveFile.isEmpty
+      val toRead = if (whole) Registers.all.map(_.addr) else reads
       toRead.foreach(a => say(line(a, ask(c.read(a)))))
+      // the whole table of a board with the corrector: its learned values too, and what they mean
+      if (whole) BoardRegLearned.layout(c, ask(_), o.port).foreach { case (_, _, l) =>
+        val words = AdaptRegisters.learned.map(r => r -> ask(c.read(r))).toMap
+        AdaptRegisters.learned.foreach(r => say(line(r.addr, words(r))))
+        val ro = AdaptRegisters.readout(l, words, Nil)
+        say(f"corrector: offsets ${ro.offsetSinCodes}%.2f / ${ro.offsetCosCodes}%.2f codes, amplitudes ${ro.amplitudeSinCodes}%.1f / " +
+          f"${ro.amplitudeCosCodes}%.1f codes (sin/cos ${ro.ratio}%.4f), phase error ${ro.phaseErrorDeg}%.3f deg; table: --save")
+      }
       for (f <- saveFile) {
         val (s, h, learned) = BoardRegFile.save(c, f, o.port, ask(_))
         say(s"saved $f: $s setting(s), $h non-zero harmonic register(s) of ${BoardRegFile.Harmonic.size}, " +
