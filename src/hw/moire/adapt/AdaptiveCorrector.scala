@@ -252,15 +252,18 @@ class AdaptiveCorrector(val p: AdaptParams, withReadBack: Boolean = false) exten
     val q2Prod = reg(q1Diff * q1Frac.zext); val q2A = reg(q1A); val q2Mean = reg(q1Mean)
     val delta: SInt = reg(fit(q2A +& shR(q2Prod, p.interpBits) -& q2Mean, dw))
 
-    /** The entry at `index` as the read-back sees it: copies of both banks written with them (the same registered
-      * write port), read by their own port; the words, `written` bit and bank select registered; the selected word
-      * registered again. Three clocks from `index` to the word; nothing here feeds the table's read or update.
+    /** The entry at `index` as the read-back sees it: copies of both banks, written from registered copies of their
+      * write port (a clock after the banks: the read-modify-write loop's registers get one load more, no more), read by
+      * their own port; the words, `written` bit and bank select registered; the selected word registered again. Three
+      * clocks from `index` to the word (an entry's first write shows a clock late); nothing here feeds the table's read or update.
       */
     def readBack(index: UInt): SInt = {
       val ra = index(bw, 1)
+      val cV = valid(wV)
       val words = banks.indices.map { b =>
         val copy = SyncReadMem(half, SInt(p.tableBits.W))
-        when(wV) { copy.write(wAddr(b), wData(b)) }
+        val (cAddr, cData) = (reg(wAddr(b)), reg(wData(b)))
+        when(cV) { copy.write(cAddr, cData) }
         val word = reg(copy.read(ra))
         val known = delay(VecInit(written(b).asBools)(ra), 2)
         Mux(known, word, 0.S)
