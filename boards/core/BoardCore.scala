@@ -267,7 +267,8 @@ class BoardCore(val p: BoardParams) extends Module {
   // the adaptive corrector's read-back (design corrected): its values through a mux of their own, selected by the
   // command's address in the clock it arrives and registered (a value one clock older than the others'), which is one
   // entry of the register file's mux; the index register, written by commands, among the others (a write answers with it)
-  private val (adaptIndex, adaptWord): (Seq[(Int, UInt)], Seq[(Bool, UInt)]) = adapt.fold((Seq.empty[(Int, UInt)], Seq.empty[(Bool, UInt)])) { rb =>
+  private val none = (Seq.empty[(Int, UInt)], Seq.empty[(Bool, UInt)])
+  private val (adaptIndex, adaptWord): (Seq[(Int, UInt)], Seq[(Bool, UInt)]) = adapt.fold(none) { rb =>
     import moire.protocol.AdaptRegisters._
     val ap = p.correctedParams.adapt
     val index = RegInit(0.U(rb.tableIndex.getWidth.W))
