@@ -60,15 +60,15 @@ class BoardCore(val p: BoardParams) extends Module {
   private val dpIn = Wire(Valid(new AdcPins(12)))
   dpIn.valid := sampleValid
   dpIn.bits.sin := sinD; dpIn.bits.cos := cosD; dpIn.bits.otrSin := otrS; dpIn.bits.otrCos := otrC
-  private val (out, encA, encB, encZ, status, latency) = p.design match {
+  private val (out, encA, encB, encZ, status, latency, adapt) = p.design match {
     case BoardDesign.Subdiv =>
       val m = Module(new SubdivAdc(p.subdiv, p.adcFormat))
       m.io.in := dpIn; m.io.clearStatus := clear
-      (m.io.out, m.io.a, m.io.b, m.io.z, m.io.status, m.latency)
+      (m.io.out, m.io.a, m.io.b, m.io.z, m.io.status, m.latency, None)
     case BoardDesign.Corrected =>
-      val m = Module(new CorrectedSubdivider(p.correctedParams))
+      val m = Module(new CorrectedSubdivider(p.correctedParams, withReadBack = true))
       m.io.in := dpIn; m.io.clearStatus := clear
-      (m.io.out, m.io.a, m.io.b, m.io.z, m.io.status, m.latency)
+      (m.io.out, m.io.a, m.io.b, m.io.z, m.io.status, m.latency, m.readBack)
     case BoardDesign.Compensated =>
       val m = Module(new SubdivAdc(p.subdiv, p.adcFormat))
       m.io.in := dpIn; m.io.clearStatus := clear
@@ -92,7 +92,7 @@ class BoardCore(val p: BoardParams) extends Module {
       o.bits := RegNext(c.bits)
       val q = Module(new QuadratureOut(p.subdiv.positionWidth, p.subdiv.countBits, p.subdiv.minEdgeClocks))
       q.io.in.valid := o.valid; q.io.in.bits := o.bits.position
-      (o, q.io.a, q.io.b, q.io.z, m.io.status, m.latency + hp.latency + BoardParams.compensatedOutRegs)
+      (o, q.io.a, q.io.b, q.io.z, m.io.status, m.latency + hp.latency + BoardParams.compensatedOutRegs, None)
   }
   require(latency == p.datapathLatency, s"datapath latency $latency, expected ${p.datapathLatency}")
 
@@ -228,7 +228,7 @@ class BoardCore(val p: BoardParams) extends Module {
     Registers.BurstThreshold -> burstCfg.threshold, Registers.BurstTarget -> burstCfg.target.asUInt,
     Registers.BurstState -> Cat(burst.io.sending || infoPending, burst.io.state), Registers.BurstDepth -> p.burst.samples.U
   ).map { case (r, v) => r.addr -> Cat(0.U(32.W), v)(31, 0) } ++
-    harmonicKept.zipWithIndex.map { case (v, i) => (Registers.HarmonicBase + i) -> v }
+    harmonicKept.zipWithIndex.map { case (v, i) => (Registers.HarmonicBase + i) -> v } ++ adaptIndex
   private val cmd = cmdRx.io.cmd
   private val isWrite = cmd.valid && cmd.bits.write
   clear := isWrite && cmd.bits.addr === Registers.Control.addr.U && cmd.bits.value(ControlBit.Clear)
@@ -264,16 +264,40 @@ class BoardCore(val p: BoardParams) extends Module {
     when(harmonicPort.we && cmd.bits.addr === (Registers.HarmonicBase + i).U) { r := kept }
     r
   }
+  // the adaptive corrector's read-back (design corrected): its values through a mux of their own, selected by the
+  // command's address in the clock it arrives and registered (a value one clock older than the others'), which is one
+  // entry of the register file's mux; the index register, written by commands, among the others (a write answers with it)
+  private val none = (Seq.empty[(Int, UInt)], Seq.empty[(Bool, UInt)])
+  private val (adaptIndex, adaptWord): (Seq[(Int, UInt)], Seq[(Bool, UInt)]) = adapt.fold(none) { rb =>
+    import moire.protocol.AdaptRegisters._
+    val ap = p.correctedParams.adapt
+    val index = RegInit(0.U(rb.tableIndex.getWidth.W))
+    when(written(TableIndex)) { index := cmd.bits.value(rb.tableIndex.getWidth - 1, 0) }
+    rb.tableIndex := index
+    val l = rb.learned
+    def word(v: SInt): UInt = v.pad(32).asUInt
+    val values = Seq(OffsetSin -> word(l.offsetSin), OffsetCos -> word(l.offsetCos),
+      GainSin -> word(l.gainSin), GainCos -> word(l.gainCos),
+      Phase -> word(l.phase),
+      Updates -> l.updates,
+      Locked -> Cat(0.U(31.W), l.locked),
+      TableSum -> word(l.tableSum),
+      TableData -> word(l.tableData),
+      Format -> moire.adapt.AdaptLearned.format(ap).U(32.W),
+      Size -> moire.adapt.AdaptLearned.size(ap).U(32.W))
+    val hits = values.map { case (r, _) => cmd.bits.addr === r.addr.U }
+    (Seq(TableIndex.addr -> index.pad(32)), Seq((VecInit(hits).asUInt.orR, RegNext(Mux1H(hits, values.map(_._2))))))
+  }
   // The reply reads the register one clock later, so a write answers with the new value. The address is decoded
   // to one select per register beside the command and the selected value registered: a reply takes 2 clocks.
   private val replies = Module(new Queue(new RegReply, 4))
   private val regs = readable
   require(regs.map(_._1).distinct.size == regs.size, "two readable registers share an address")
-  private val readSel = RegNext(VecInit(regs.map { case (a, _) => cmd.bits.addr === a.U }))
+  private val readSel = RegNext(VecInit(regs.map { case (a, _) => cmd.bits.addr === a.U } ++ adaptWord.map(_._1)))
   private val replyAddr = ShiftRegister(cmd.bits.addr, 2)
   replies.io.enq.valid := ShiftRegister(cmd.valid, 2, false.B, true.B)
   replies.io.enq.bits.addr := replyAddr
-  replies.io.enq.bits.value := RegNext(Mux1H(readSel, regs.map(_._2)))
+  replies.io.enq.bits.value := RegNext(Mux1H(readSel, regs.map(_._2) ++ adaptWord.map(_._2)))
   framer.io.reply <> replies.io.deq
   private val lostReply = replies.io.enq.valid && !replies.io.enq.ready
   when(cmdRx.io.error || lostReply) { cmdErrors := cmdErrors + 1.U }

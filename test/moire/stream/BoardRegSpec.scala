@@ -112,4 +112,69 @@ class BoardRegSpec extends AnyFlatSpec with Matchers {
         .getMessage should include("registers.status is not a setting board-reg saves")
     } finally os.remove.all(dir)
   }
+
+  "board-reg --save / --load with the adaptive corrector" should "keep its learned values, compare them on load and write none" in PtyPair { pty =>
+    import moire.protocol.AdaptRegisters
+    val ap = moire.adapt.AdaptParams(harmonicEntries = 8)
+    val layout = Map(AdaptRegisters.Format.addr -> moire.adapt.AdaptLearned.format(ap), AdaptRegisters.Size.addr -> moire.adapt.AdaptLearned.size(ap))
+    def corrector(l: moire.adapt.AdaptLearned, index: Long = 0): Map[Int, Long] =
+      FakeBoard.registers() ++ layout ++ l.words.map { case (r, v) => r.addr -> v } + (AdaptRegisters.TableIndex.addr -> index)
+    val table = IndexedSeq(100L, -250L, 3000L, 0L, -7L, 12L, 40000L, -40000L)
+    // offset 61.5 codes, gains for amplitudes 1741 and 1650 codes, tan of -4 degrees
+    val gain = (a: Double) => math.round(math.pow(2, 15) / math.sqrt(2) / a * math.pow(2, ap.gainFrac))
+    val learned = moire.adapt.AdaptLearned(math.round(61.5 * 4096), -20 * 4096, gain(1741), gain(1650),
+      math.round(math.tan(math.toRadians(-4)) * math.pow(2, ap.phaseFrac)), 320, locked = true, table.sum, table)
+    val dir = os.temp.dir(prefix = "moire-board-reg")
+    val file = dir / "board.json"
+    try {
+      val a = new FakeBoard(pty, corrector(learned, index = 5), adaptTable = learned.tableWords.toIndexedSeq)
+      val out = try run(pty, _.copy(save = Some(file.toString))) finally a.close()
+      out.last should include("the corrector's learned values (8 table entries)")
+      a.registers(AdaptRegisters.TableIndex.addr) shouldBe 5 // put back as it was
+      val j = ujson.read(os.read(file))("learned")
+      j("adapt_offset_sin").num shouldBe learned.offsetSin
+      j("adapt_phase").num shouldBe (learned.phase & 0xFFFFFFFFL)
+      j("adapt_table").arr.map(_.num.toLong) shouldBe learned.tableWords
+      j("readout")("offset_sin_codes").num shouldBe 61.5
+      j("readout")("amplitude_sin_codes").num shouldBe 1741.0 +- 0.01
+      j("readout")("amplitude_ratio_sin_cos").num shouldBe (1741.0 / 1650) +- 1e-4
+      j("readout")("phase_error_deg").num shouldBe -4.0 +- 1e-3 // 17 fractional bits: 0.0004 deg a step
+      j("readout")("table_deg").arr.map(_.num).sum shouldBe 0.0 +- 1e-9 // the mean removed, as the corrector applies it
+      BoardRegFile.read(file).learned.map(_.words) shouldBe Some(learned.words.toMap)
+      // the whole table of a corrected board: the learned values too, decoded
+      val shown = new FakeBoard(pty, corrector(learned), adaptTable = learned.tableWords.toIndexedSeq)
+      val all = try run(pty, o => o) finally shown.close()
+      all.init.map(_.split("\\s+")(1)) shouldBe Registers.all.map(_.name) ++ AdaptRegisters.learned.map(_.name)
+      all.find(_.contains("adapt_phase")).get should endWith(s"signed ${learned.phase}")
+      all.last shouldBe "corrector: offsets 61.50 / -20.00 codes, amplitudes 1741.0 / 1650.0 codes (sin/cos 1.0552), phase error -4.000 deg; table: --save"
+      // the same corrector, learned a little differently: compared, named, not written
+      val moved = learned.copy(offsetSin = learned.offsetSin + 4096, table = table.updated(2, 3100L))
+      val b = new FakeBoard(pty, corrector(moved), adaptTable = moved.tableWords.toIndexedSeq)
+      val loaded = try run(pty, _.copy(load = Some(file.toString))) finally b.close()
+      loaded(1) should startWith("learned values are read-only on the board (kept in the file for the record, not written): the board's differ: " +
+        "offset_sin 61.5000 codes in the file, 62.5000 codes on the board; table: 1 of 8 entries differ, by up to")
+      b.commands.filter(_.write).map(_.addr).toSet shouldBe (Set(Registers.Decimation.addr, AdaptRegisters.TableIndex.addr) ++ BoardRegFile.Harmonic)
+      b.registers(AdaptRegisters.OffsetSin.addr) shouldBe moved.offsetSin
+      // a corrector of another size, or none: another kind of board, nothing written
+      val other = Map(AdaptRegisters.Size.addr -> moire.adapt.AdaptLearned.size(ap.copy(harmonicEntries = 16)))
+      for ((regs, what) <- Seq(corrector(learned) ++ other -> "adapt_size 0x0008100c in the file, 0x0010100c on the board",
+                               FakeBoard.registers() -> "the adaptive corrector's learned values in the file, no corrector read-back on the board (adapt_format 0)")) {
+        val c = new FakeBoard(pty, regs)
+        val e = try intercept[MoireError](run(pty, _.copy(load = Some(file.toString)))) finally c.close()
+        e.getMessage should include(s"saved from another kind of board: $what; nothing written")
+        c.commands.count(_.write) shouldBe 0
+      }
+      // bad learned sections: one line each, before the port is opened
+      def bad(edit: ujson.Value => Unit): String = {
+        val v = ujson.read(os.read(file)); edit(v("learned"))
+        os.write.over(dir / "bad.json", ujson.write(v))
+        intercept[MoireError](BoardReg.run(BoardReg.Options("/dev/nonexistent", load = Some((dir / "bad.json").toString)), _ => ())).getMessage
+      }
+      bad { v => v("adapt_table").arr.remove(0); () } should include("learned.adapt_table has 7 entries, adapt_size says 8")
+      bad(_("adapt_gain_sin") = -1) should include("learned.adapt_gain_sin must be an integer in 0..4294967295, got -1")
+      bad { v => v.obj.remove("adapt_updates"); () } should include("learned.adapt_updates is missing")
+      bad(_("offset") = 1) should include("learned.offset is not a value board-reg saves")
+      bad(_("adapt_size") = ujson.Num(0x0007100c.toDouble)) should include("do not describe a corrector")
+    } finally os.remove.all(dir)
+  }
 }

@@ -1,6 +1,6 @@
 package moire.stream
 
-import moire.protocol.Registers
+import moire.protocol.{AdaptRegisters, Registers}
 import java.io.{FileInputStream, FileOutputStream, IOException}
 import java.util.concurrent.ConcurrentLinkedQueue
 import scala.collection.mutable
@@ -99,11 +99,12 @@ final case class Sent(frame: RecordFrame, wire: Array[Byte], damaged: Boolean)
   * registers ([[Registers.writable]], the harmonic window only up to `harmonicSlots`), others reply unchanged;
   * bad commands count in cmd_errors. `stream` sends record frames; seq is shared with the replies.
   * Several boards may follow one another on a pair (close one before making the next).
+  * `adaptTable`: the adaptive corrector's table (adapt_table_data shows the entry at adapt_table_index); empty: none.
   * `streamWhen`: the stream starts (if `stream` was called) after the reply to the first command it
   * accepts; None: at once.
   */
 final class FakeBoard(pty: PtyPair, initial: Map[Int, Long], harmonicSlots: Int = 0,
-                      streamWhen: Option[Command => Boolean] = None) extends AutoCloseable {
+                      streamWhen: Option[Command => Boolean] = None, adaptTable: IndexedSeq[Long] = IndexedSeq.empty) extends AutoCloseable {
   private val regs = mutable.Map(initial.toSeq: _*)
   private var seq = 0
   private val cmdDecoder = new CommandDecoder
@@ -118,7 +119,8 @@ final class FakeBoard(pty: PtyPair, initial: Map[Int, Long], harmonicSlots: Int 
   def sent: Seq[Sent] = sentLog.asScala.toSeq
 
   private def writable(a: Int): Boolean =
-    if (a >= Registers.HarmonicBase) a < Registers.HarmonicBase + 4 * harmonicSlots && (a & 3) != 3 else Registers.writable(a)
+    if (a == AdaptRegisters.TableIndex.addr) adaptTable.nonEmpty
+    else if (a >= Registers.HarmonicBase) a < Registers.HarmonicBase + 4 * harmonicSlots && (a & 3) != 3 else Registers.writable(a)
 
   private def send(bytes: Array[Byte]): Unit = synchronized { pty.boardOut.write(bytes); pty.boardOut.flush() }
 
@@ -132,7 +134,8 @@ final class FakeBoard(pty: PtyPair, initial: Map[Int, Long], harmonicSlots: Int 
         cmds.add(c)
         synchronized {
           regs(Registers.CmdErrors.addr) = cmdDecoder.errors
-          if (c.write && writable(c.addr)) regs(c.addr) = c.value
+          if (c.write && writable(c.addr)) regs(c.addr) = if (c.addr == AdaptRegisters.TableIndex.addr) c.value % adaptTable.size else c.value
+          if (adaptTable.nonEmpty) regs(AdaptRegisters.TableData.addr) = adaptTable(regs.getOrElse(AdaptRegisters.TableIndex.addr, 0L).toInt)
           send(Encoder.frame(RegisterReply(seq, c.addr, regs.getOrElse(c.addr, 0L))))
           seq = (seq + 1) & 0xFFFF
         }

@@ -1,7 +1,7 @@
 package moire.stream
 
 import moire.calibration.CoefficientFile
-import moire.protocol.{Registers, StreamV1}
+import moire.protocol.{AdaptRegisters, Registers, StreamV1}
 
 /** `moire board-reg`: read and write the board's registers by name, load harmonic coefficients. */
 object BoardReg {
@@ -37,8 +37,9 @@ object BoardReg {
       BoardClient.check(c, o.baud, "")
       def ask[T](f: => T): T = try f catch { case e: NoAnswer => throw new StreamError(e.getMessage) }
       for (f <- loadFile) {
-        val h = BoardRegFile.load(c, f, o.port, ask(_))
+        val (h, learned) = BoardRegFile.load(c, f, o.port, ask(_))
         say(s"loaded $f: ${BoardRegFile.Settings.map(_.name).mkString(", ")} and ${BoardRegFile.Harmonic.size} harmonic registers ($h not zero), each read back")
+        learned.foreach(say)
       }
       for ((a, v) <- writes) {
         val got = ask(c.write(a, v))
@@ -53,11 +54,21 @@ object BoardReg {
         }
         say(s"loaded ${ws.size} harmonic registers (0x${"%02x".format(ws.map(_._1).min)}..0x${"%02x".format(ws.map(_._1).max)}) from $file, each read back")
       }
-      val toRead = if (reads.isEmpty && writes.isEmpty && coefs.isEmpty && loadFile.isEmpty && saveFile.isEmpty) Registers.all.map(_.addr) else reads
+      val whole = reads.isEmpty && writes.isEmpty && coefs.isEmpty && loadFile.isEmpty && saveFile.isEmpty
+      val toRead = if (whole) Registers.all.map(_.addr) else reads
       toRead.foreach(a => say(line(a, ask(c.read(a)))))
+      // the whole table of a board with the corrector: its learned values too, and what they mean
+      if (whole) BoardRegLearned.layout(c, ask(_), o.port).foreach { case (_, _, l) =>
+        val words = AdaptRegisters.learned.map(r => r -> ask(c.read(r))).toMap
+        AdaptRegisters.learned.foreach(r => say(line(r.addr, words(r))))
+        val ro = AdaptRegisters.readout(l, words, Nil)
+        say(f"corrector: offsets ${ro.offsetSinCodes}%.2f / ${ro.offsetCosCodes}%.2f codes, amplitudes ${ro.amplitudeSinCodes}%.1f / " +
+          f"${ro.amplitudeCosCodes}%.1f codes (sin/cos ${ro.ratio}%.4f), phase error ${ro.phaseErrorDeg}%.3f deg; table: --save")
+      }
       for (f <- saveFile) {
-        val (s, h) = BoardRegFile.save(c, f, o.port, ask(_))
-        say(s"saved $f: $s setting(s), $h non-zero harmonic register(s) of ${BoardRegFile.Harmonic.size}, and the board's model")
+        val (s, h, learned) = BoardRegFile.save(c, f, o.port, ask(_))
+        say(s"saved $f: $s setting(s), $h non-zero harmonic register(s) of ${BoardRegFile.Harmonic.size}, " +
+          learned.fold("and the board's model")(l => s"the corrector's learned values (${l.table.size} table entries) and the board's model"))
       }
     } finally link.close()
   }
@@ -69,7 +80,9 @@ object BoardReg {
       case Registers.Id.addr => new String(Array(24, 16, 8, 0).map(s => ((v >> s) & 0xFF).toByte), "ISO-8859-1").filter(ch => ch >= ' ' && ch < 127)
       case Registers.Status.addr => Registers.StatusBit.named.collect { case (b, n) if ((v >> b) & 1) != 0 => n }.mkString(" ")
       case Registers.Control.addr => if (((v >> Registers.ControlBit.Enable) & 1) != 0) "stream on" else "stream off"
-      case Registers.Position.addr | Registers.EncoderCount.addr | Registers.EncoderZCount.addr => s"signed $signed"
+      case Registers.Position.addr | Registers.EncoderCount.addr | Registers.EncoderZCount.addr |
+           AdaptRegisters.OffsetSin.addr | AdaptRegisters.OffsetCos.addr | AdaptRegisters.Phase.addr |
+           AdaptRegisters.TableSum.addr | AdaptRegisters.TableData.addr => s"signed $signed"
       case Registers.AdcFormat.addr => v match {
         case Registers.AdcOffsetBinary => "offset-binary"; case Registers.AdcTwosComplement => "twos-complement"; case _ => "unknown"
       }

@@ -6,6 +6,7 @@ import moire.protocol.{Registers, StreamV1}
   * turntable compensator's harmonic slots, `h<slot>_<order|c|phi>`) in one JSON file (docs/recording.md), with the
   * board's model (id, stream version, ADC clock and format, counts per period, records per frame) to check on load.
   * A harmonic register the file does not list is 0 (slot off): load writes every slot, so the board ends as saved.
+  * A board with the adaptive corrector adds what it has learned ([[BoardRegLearned]]): kept and compared, not written.
   */
 object BoardRegFile {
   val Format = "moire-board-registers v1"
@@ -17,19 +18,26 @@ object BoardRegFile {
   /** Harmonic addresses: slots of 4 words (order, c, phi, unused) from [[Registers.HarmonicBase]] up to the burst registers. */
   val Harmonic: Seq[Int] = (Registers.HarmonicBase until Registers.BurstControl.addr).filter(a => ((a - Registers.HarmonicBase) & 3) != 3)
 
-  def save(c: BoardClient, file: os.Path, port: String, ask: (=> Long) => Long): (Int, Int) = {
+  /** Writes the file; the number of settings, of non-zero harmonic registers, and the learned values (if any). */
+  def save(c: BoardClient, file: os.Path, port: String, ask: (=> Long) => Long): (Int, Int, Option[BoardRegLearned]) = {
     val model = Model.map(r => r.name -> ask(c.read(r)))
     val settings = Settings.map(r => r.name -> ask(c.read(r)))
     val harm = Harmonic.map(a => a -> ask(c.read(a))).filter(_._2 != 0)
+    val learned = BoardRegLearned.read(c, ask, port)
     val j = ujson.Obj("format" -> Format, "saved_utc" -> java.time.Instant.now().toString, "port" -> port,
       "model" -> ujson.Obj.from(model.map { case (k, v) => k -> ujson.Num(v.toDouble) }),
       "registers" -> ujson.Obj.from((settings ++ harm.map { case (a, v) => Registers.name(a) -> v }).map { case (k, v) => k -> ujson.Num(v.toDouble) }))
+    learned.foreach(l => j(BoardRegLearned.Key) = l.json)
     moire.files.SafeWrite.text(file, ujson.write(j, indent = 2) + "\n")
-    (settings.size, harm.size)
+    (settings.size, harm.size, learned)
   }
 
-  /** The file's model and the register writes (every harmonic register, 0 where the file lists none). */
-  def read(file: os.Path): (Map[String, Long], Seq[(Int, Long)]) = {
+  /** What a file holds: the model, the register writes (every harmonic register, 0 where the file lists none) and the
+    * corrector's learned values if it has them.
+    */
+  final case class Saved(model: Map[String, Long], writes: Seq[(Int, Long)], learned: Option[BoardRegLearned])
+
+  def read(file: os.Path): Saved = {
     if (!os.isFile(file)) throw new StreamError(s"$file: no such file")
     val j = try ujson.read(os.read(file)) catch { case e: Exception => throw new StreamError(s"$file: not valid JSON (${e.getMessage.linesIterator.next().take(80)})") }
     val o = j.objOpt.getOrElse(throw new StreamError(s"$file: expected a JSON object"))
@@ -46,19 +54,39 @@ object BoardRegFile {
       a -> u32(s"registers.$k", v)
     }.toMap
     Settings.foreach(r => if (!inFile.contains(r.addr)) throw new StreamError(s"$file: registers.${r.name} is missing"))
-    (m, Settings.map(r => r.addr -> inFile(r.addr)) ++ Harmonic.map(a => a -> inFile.getOrElse(a, 0L)))
+    val known = Set("format", "saved_utc", "port", "model", "registers", BoardRegLearned.Key)
+    o.keys.find(k => !known.contains(k)).foreach(k => throw new StreamError(s"$file: '$k' is not a key board-reg saves (${known.mkString(", ")})"))
+    Saved(m, Settings.map(r => r.addr -> inFile(r.addr)) ++ Harmonic.map(a => a -> inFile.getOrElse(a, 0L)),
+      o.get(BoardRegLearned.Key).map(BoardRegLearned.parse(file, _)))
   }
 
-  /** Checks the model, then writes and reads back each register; the number of non-zero harmonic registers. */
-  def load(c: BoardClient, file: os.Path, port: String, ask: (=> Long) => Long): Int = {
-    val (model, writes) = read(file)
+  /** Checks the model (and the corrector's layout when the file has learned values), then writes and reads back each
+    * register; the number of non-zero harmonic registers and a line on the learned values (None: neither side has any).
+    */
+  def load(c: BoardClient, file: os.Path, port: String, ask: (=> Long) => Long): (Int, Option[String]) = {
+    val Saved(model, writes, learned) = read(file)
     val differ = Model.flatMap { r => val b = ask(c.read(r)); if (b != model(r.name)) Some(s"${r.name} ${model(r.name)} in the file, $b on the board") else None }
-    if (differ.nonEmpty) throw new StreamError(s"$file was saved from another kind of board: ${differ.mkString("; ")}; nothing written")
+    val onBoard = BoardRegLearned.layout(c, ask, port)
+    val layoutDiffers = learned.toSeq.flatMap { l => onBoard match {
+      case None => Seq("the adaptive corrector's learned values in the file, no corrector read-back on the board (adapt_format 0)")
+      case Some((bf, bs, _)) => Seq((moire.protocol.AdaptRegisters.Format, l.format, bf), (moire.protocol.AdaptRegisters.Size, l.size, bs)).collect {
+        case (r, x, y) if x != y => f"${r.name} 0x$x%08x in the file, 0x$y%08x on the board" }
+    } }
+    if (differ.nonEmpty || layoutDiffers.nonEmpty)
+      throw new StreamError(s"$file was saved from another kind of board: ${(differ ++ layoutDiffers).mkString("; ")}; nothing written")
     for ((a, v) <- writes) {
       val got = ask(c.write(a, v))
       if (got != v) throw new StreamError(f"$port: wrote 0x$v%08x to ${Registers.name(a)}, the board kept 0x$got%08x" +
         (if (a >= Registers.HarmonicBase) ": is the harmonic compensator in the design, with enough slots?" else ""))
     }
-    writes.count { case (a, v) => a >= Registers.HarmonicBase && v != 0 }
+    val note = (learned, onBoard) match {
+      case (Some(l), Some(_)) =>
+        val d = l.differences(BoardRegLearned.read(c, ask, port).get)
+        Some("learned values are read-only on the board (kept in the file for the record, not written): " +
+          (if (d.isEmpty) "the board's are the same" else "the board's differ: " + d.mkString("; ")))
+      case (None, Some(_)) => Some("the file holds no learned values (saved from a board without the corrector's read-back)")
+      case _ => None
+    }
+    (writes.count { case (a, v) => a >= Registers.HarmonicBase && v != 0 }, note)
   }
 }

@@ -63,6 +63,10 @@ class AdaptModel(val p: AdaptParams) {
   private val updates = line[Snapshot](p.updateDelay)
   private final class Snapshot(val aS: Long, val aC: Long, val bS: Long, val bC: Long, val cX: Long, val l: Int)
 
+  /** What the corrector has learned now, as the read-back registers of the board show it once it stops moving. */
+  def learned: AdaptLearned = AdaptLearned(os, oc, ks, kc, t, math.min(periods, AdaptLearned.MaxUpdates), lockCnt == lockMax,
+    tableSum, table.toSeq.take(entries))
+
   def quadrant(sp: Long, cp: Long): Int = (if (sp >= 0) (if (cp >= 0) 0 else 1) else if (cp < 0) 2 else 3)
 
   private val otrLine = scala.collection.mutable.Queue.fill(p.latency)((false, false))

@@ -22,13 +22,18 @@ class AdaptSample(w: Int) extends Bundle {
   * 12 multipliers (default widths, counted in the emitted Verilog): gains 18x24 (2), phase term
   * 16x18, statistics 16x16 (3), interpolation 23x8, radians 25x17 (constant 2 pi), rotation 18x16 (2),
   * table update 28x9 (2): at most 18 of the EP4CE115's 266 embedded 18x18 multipliers.
+  *
+  * @param withReadBack adds `readBack` ([[AdaptReadBackIO]]): the learned state for a register file, each value a
+  *                     registered copy, the table through copies of its banks with their own read port. Without it
+  *                     (the datapath designs) the module is as before.
   */
-class AdaptiveCorrector(val p: AdaptParams) extends Module with moire.emit.Latency {
+class AdaptiveCorrector(val p: AdaptParams, withReadBack: Boolean = false) extends Module with moire.emit.Latency {
   override def desiredName: String = p.moduleName
   val io = IO(new Bundle {
     val in = Flipped(Valid(new AdaptSample(p.inputBits)))
     val out = Valid(new AdaptSample(p.outputBits))
   })
+  val readBack: Option[AdaptReadBackIO] = if (withReadBack) Some(IO(new AdaptReadBackIO(p))) else None
   val latency: Int = p.latency
 
   private val F = p.fineBits
@@ -201,6 +206,18 @@ class AdaptiveCorrector(val p: AdaptParams) extends Module with moire.emit.Laten
   private val q5En = valid(q4V && lockCnt === lockMax.U && !PllMath.absBelow(vel, F - p.minSpeedShift))
   tbl.foreach(_.update())
 
+  // ---- read-back: registered copies (one more load on each register, no path back into the loops) ----
+  readBack.foreach { rb =>
+    val l = rb.learned
+    l.offsetSin := reg(os); l.offsetCos := reg(oc); l.gainSin := reg(ks); l.gainCos := reg(kc); l.phase := reg(t)
+    val updates = RegInit(0.U(32.W))
+    when(vV && updates =/= AdaptLearned.MaxUpdates.U) { updates := updates + 1.U }
+    l.updates := updates
+    l.locked := valid(lockCnt === lockMax.U)
+    l.tableSum := reg(tableSum)
+    l.tableData := tbl.map(_.readBack(rb.tableIndex)).getOrElse(0.S(p.tableBits.W))
+  }
+
   /** The table: read (q0), interpolated (q1 to q3: `delta`), and updated by LMS at rmwStage
     * (`update`), forwarding the writes still in flight so that back-to-back updates of one entry add up exactly.
     */
@@ -234,6 +251,25 @@ class AdaptiveCorrector(val p: AdaptParams) extends Module with moire.emit.Laten
     // q2: interpolation product; q3: delta
     val q2Prod = reg(q1Diff * q1Frac.zext); val q2A = reg(q1A); val q2Mean = reg(q1Mean)
     val delta: SInt = reg(fit(q2A +& shR(q2Prod, p.interpBits) -& q2Mean, dw))
+
+    /** The entry at `index` as the read-back sees it: copies of both banks, written from registered copies of their
+      * write port (a clock after the banks: the read-modify-write loop's registers get one load more, no more), read by
+      * their own port; the words, `written` bit and bank select registered; the selected word registered again. Three
+      * clocks from `index` to the word (an entry's first write shows a clock late); nothing here feeds the table's read or update.
+      */
+    def readBack(index: UInt): SInt = {
+      val ra = index(bw, 1)
+      val cV = valid(wV)
+      val words = banks.indices.map { b =>
+        val copy = SyncReadMem(half, SInt(p.tableBits.W))
+        val (cAddr, cData) = (reg(wAddr(b)), reg(wData(b)))
+        when(cV) { copy.write(cAddr, cData) }
+        val word = reg(copy.read(ra))
+        val known = delay(VecInit(written(b).asBools)(ra), 2)
+        Mux(known, word, 0.S)
+      }
+      reg(Mux(delay(index(0), 2), words(1), words(0)))
+    }
 
     def update(): Unit = {
       // q6: LMS products; q7: their rounded steps, the leak, and the youngest in-flight write of each entry

@@ -26,8 +26,10 @@ final case class CorrectedSubdivParams(
   private[chain] val frontEnd: SubdivParams = SubdivParams(inputBits = adapt.inputBits)
 }
 
-/** Pin codes in; the subdivider's outputs, A/B/Z and status out. Latency [[CorrectedSubdivParams.latency]]. */
-class CorrectedSubdivider(val p: CorrectedSubdivParams) extends Module with moire.emit.Latency {
+/** Pin codes in; the subdivider's outputs, A/B/Z and status out. Latency [[CorrectedSubdivParams.latency]].
+  * `withReadBack`: the corrector's learned state out as `readBack` (the board's registers read it).
+  */
+class CorrectedSubdivider(val p: CorrectedSubdivParams, withReadBack: Boolean = false) extends Module with moire.emit.Latency {
   override def desiredName: String = p.moduleName
   val io = IO(new Bundle {
     val in = Flipped(Valid(new AdcPins(p.adapt.inputBits)))
@@ -39,7 +41,7 @@ class CorrectedSubdivider(val p: CorrectedSubdivParams) extends Module with moir
     val clearStatus = Input(Bool())
   })
   private val fe = Module(new AdcFrontEnd(p.frontEnd, p.format))
-  private val ac = Module(new AdaptiveCorrector(p.adapt))
+  private val ac = Module(new AdaptiveCorrector(p.adapt, withReadBack))
   private val sd = Module(new Subdivider(p.subdiv))
   val latency: Int = fe.latency + ac.latency + sd.latency
   require(latency == p.latency)
@@ -60,6 +62,11 @@ class CorrectedSubdivider(val p: CorrectedSubdivParams) extends Module with moir
   io.b := sd.io.b
   io.z := sd.io.z
   io.status := sd.io.status
+  val readBack: Option[moire.adapt.AdaptReadBackIO] = ac.readBack.map { rb =>
+    val x = IO(new moire.adapt.AdaptReadBackIO(p.adapt))
+    x <> rb
+    x
+  }
 }
 
 /** Codes on the ADC pins in one clock. */

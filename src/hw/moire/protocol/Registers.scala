@@ -57,7 +57,10 @@ object Registers {
   /** Bit of `burst_state` set while the burst is being sent. */
   val BurstSendingBit: Int = 2
 
-  private def known: Seq[Reg] = all ++ burst
+  /** The adaptive corrector's read-back, above the burst registers (design corrected). */
+  val adapt: Seq[Reg] = AdaptRegisters.all
+
+  private def known: Seq[Reg] = all ++ burst ++ adapt
 
   /** First address of the harmonic-coefficient window: 0x10 + slot*4 + {0 order, 1 c_k, 2 phi_k}. */
   val HarmonicBase: Int = 0x10

@@ -1,0 +1,83 @@
+package moire.stream
+
+import moire.protocol.{AdaptRegisters, Reg, StreamV1}
+import moire.protocol.AdaptRegisters.{Layout, Readout}
+
+/** The adaptive corrector's learned values in a `board-reg --save` file (section `learned`, docs/recording.md): the
+  * u32 words of its read-back registers, the harmonic table entry by entry, and a `readout` in codes and degrees for
+  * the reader (derived from the words; not read back). They are read-only on the board: `--load` checks that the
+  * board has the same corrector (adapt_format, adapt_size), compares the board's values with the file's and writes
+  * none of them.
+  */
+final case class BoardRegLearned(format: Long, size: Long, layout: Layout, words: Map[Reg, Long], table: Seq[Long]) {
+  def readout: Readout = AdaptRegisters.readout(layout, words, table)
+
+  def json: ujson.Obj = {
+    val r = readout
+    ujson.Obj.from(Seq(AdaptRegisters.Format.name -> ujson.Num(format.toDouble), AdaptRegisters.Size.name -> ujson.Num(size.toDouble)) ++
+      AdaptRegisters.learned.map(g => g.name -> ujson.Num(words(g).toDouble)) ++ Seq(
+      BoardRegLearned.TableKey -> ujson.Arr.from(table.map(v => ujson.Num(v.toDouble))),
+      BoardRegLearned.ReadoutKey -> ujson.Obj("offset_sin_codes" -> r.offsetSinCodes, "offset_cos_codes" -> r.offsetCosCodes,
+        "amplitude_sin_codes" -> r.amplitudeSinCodes, "amplitude_cos_codes" -> r.amplitudeCosCodes, "amplitude_ratio_sin_cos" -> r.ratio,
+        "phase_error_deg" -> r.phaseErrorDeg, "table_deg" -> ujson.Arr.from(r.tableDeg.map(ujson.Num(_))))))
+  }
+
+  /** One line per value that differs between `this` (the file) and `board`, in codes and degrees; Nil when all agree. */
+  def differences(board: BoardRegLearned): Seq[String] = {
+    val (f, b) = (readout, board.readout)
+    val scalars = Seq(("offset_sin", f.offsetSinCodes, b.offsetSinCodes, "codes"), ("offset_cos", f.offsetCosCodes, b.offsetCosCodes, "codes"),
+      ("amplitude_sin", f.amplitudeSinCodes, b.amplitudeSinCodes, "codes"), ("amplitude_cos", f.amplitudeCosCodes, b.amplitudeCosCodes, "codes"),
+      ("phase_error", f.phaseErrorDeg, b.phaseErrorDeg, "deg")).zip(Seq(AdaptRegisters.OffsetSin, AdaptRegisters.OffsetCos,
+      AdaptRegisters.GainSin, AdaptRegisters.GainCos, AdaptRegisters.Phase)).collect {
+      case ((n, x, y, u), g) if words(g) != board.words(g) => f"$n $x%.4f $u in the file, $y%.4f $u on the board"
+    }
+    val entries = table.indices.filter(i => table(i) != board.table(i))
+    val worst = entries.map(i => math.abs(f.tableDeg(i) - b.tableDeg(i))).maxOption
+    scalars ++ worst.map(w => f"table: ${entries.size} of ${table.size} entries differ, by up to $w%.5f deg")
+  }
+}
+
+object BoardRegLearned {
+  val Key = "learned"
+  val TableKey = "adapt_table"
+  val ReadoutKey = "readout"
+
+  /** The board's layout: None without a corrector (both words 0). */
+  def layout(c: BoardClient, ask: (=> Long) => Long, port: String): Option[(Long, Long, Layout)] = {
+    val (f, s) = (ask(c.read(AdaptRegisters.Format)), ask(c.read(AdaptRegisters.Size)))
+    Layout.of(f, s).fold(e => throw new StreamError(s"$port: $e"), _.map(l => (f, s, l)))
+  }
+
+  /** Reads every learned value and table entry (the index register is put back as it was). The corrector keeps
+    * learning meanwhile: a snapshot taken register by register.
+    */
+  def read(c: BoardClient, ask: (=> Long) => Long, port: String): Option[BoardRegLearned] = layout(c, ask, port).map { case (f, s, l) =>
+    val words = AdaptRegisters.learned.map(r => r -> ask(c.read(r))).toMap
+    val index = ask(c.read(AdaptRegisters.TableIndex))
+    val table = (0 until l.entries).map { i =>
+      val got = ask(c.write(AdaptRegisters.TableIndex.addr, i))
+      if (got != i) throw new StreamError(s"$port: wrote $i to ${AdaptRegisters.TableIndex.name}, the board kept $got")
+      ask(c.read(AdaptRegisters.TableData))
+    }
+    if (l.entries > 0) ask(c.write(AdaptRegisters.TableIndex.addr, index))
+    BoardRegLearned(f, s, l, words, table)
+  }
+
+  /** The `learned` section of a file, every word checked. */
+  def parse(file: os.Path, v: ujson.Value): BoardRegLearned = {
+    val o = v.objOpt.getOrElse(throw new StreamError(s"$file: '$Key' must be an object"))
+    def u32(where: String, x: ujson.Value): Long = x.numOpt.filter(y => y == math.rint(y) && y >= 0 && y <= StreamV1.MaxU32).map(_.toLong)
+      .getOrElse(throw new StreamError(s"$file: $where must be an integer in 0..${StreamV1.MaxU32}, got ${ujson.write(x).take(30)}"))
+    def get(k: String): ujson.Value = o.getOrElse(k, throw new StreamError(s"$file: $Key.$k is missing"))
+    val known = Set(AdaptRegisters.Format.name, AdaptRegisters.Size.name, TableKey, ReadoutKey) ++ AdaptRegisters.learned.map(_.name)
+    o.keys.find(k => !known.contains(k)).foreach(k => throw new StreamError(
+      s"$file: $Key.$k is not a value board-reg saves (${(AdaptRegisters.learned.map(_.name) :+ TableKey).mkString(", ")})"))
+    val (f, s) = (u32(s"$Key.${AdaptRegisters.Format.name}", get(AdaptRegisters.Format.name)), u32(s"$Key.${AdaptRegisters.Size.name}", get(AdaptRegisters.Size.name)))
+    val l = Layout.of(f, s).fold(e => throw new StreamError(s"$file: $Key: $e"), identity)
+      .getOrElse(throw new StreamError(s"$file: $Key: adapt_format and adapt_size are 0 (no corrector)"))
+    val words = AdaptRegisters.learned.map(r => r -> u32(s"$Key.${r.name}", get(r.name))).toMap
+    val arr = get(TableKey).arrOpt.getOrElse(throw new StreamError(s"$file: $Key.$TableKey must be a list of ${l.entries} entries"))
+    if (arr.size != l.entries) throw new StreamError(s"$file: $Key.$TableKey has ${arr.size} entries, adapt_size says ${l.entries}")
+    BoardRegLearned(f, s, l, words, arr.zipWithIndex.map { case (x, i) => u32(s"$Key.$TableKey[$i]", x) }.toSeq)
+  }
+}
