@@ -11,7 +11,7 @@ import org.scalatest.matchers.should.Matchers
 class BoardRegSpec extends AnyFlatSpec with Matchers {
   private def run(pty: PtyPair, o: BoardReg.Options => BoardReg.Options): Vector[String] = {
     val lines = Vector.newBuilder[String]
-    BoardReg.run(o(BoardReg.Options(pty.host.toString, timeoutMs = 200)), lines += _)
+    BoardReg.run(o(BoardReg.Options(pty.host.toString, timeoutMs = 2000)), lines += _)
     lines.result()
   }
 

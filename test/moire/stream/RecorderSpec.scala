@@ -32,7 +32,7 @@ class RecorderSpec extends AnyFlatSpec with Matchers {
   }
 
   private def opts(pty: PtyPair, out: os.Path, seconds: Double = 1.2) =
-    RecordOptions(pty.host.toString, seconds, out.toString, quiet = true, timeoutMs = 200)
+    RecordOptions(pty.host.toString, seconds, out.toString, quiet = true, timeoutMs = 1000)
 
   "record" should "write every record received, with realistic columns and exact loss figures" in PtyPair { pty =>
     val (frames, _) = plan()
@@ -136,7 +136,7 @@ class RecorderSpec extends AnyFlatSpec with Matchers {
   it should "say in one line when the board does not answer, and write no file" in PtyPair { pty =>
     val out = pty.dir / "none.csv"
     val e = intercept[MoireError](Recorder.run(opts(pty, out), _ => (), _ => ()))
-    e.getMessage should include("the board did not answer a read of id within 200 ms")
+    e.getMessage should include("the board did not answer a read of id within 1000 ms")
     e.getMessage should include("--listen-only")
     e.getMessage.linesIterator.size shouldBe 1
     os.exists(out) shouldBe false
