@@ -18,7 +18,9 @@ object AdcNonlinearity extends Effect {
     Seq("both", "sin", "cos").map(ch => () => c.linear(Term.Inl(ch)).map(_._1).toSeq)
   override def describe(t: Term, b: Array[Double], sd: Array[Double], e: SignalEngine): Effect.Described = {
     val ch = t match { case Term.Inl(c) => c; case _ => "both" }
-    (Map("inl2_lsb" -> b(0), "inl3_lsb" -> b(1)), Map("inl2_lsb" -> sd(0), "inl3_lsb" -> sd(1)),
+    // one ADC's: how much its channel's amplitude changes over the record (what tells it from a harmonic)
+    val range = if (ch == "both") Map.empty[String, Double] else Map("amplitude_range_rel" -> amplitudeRange(e, ch))
+    (Map("inl2_lsb" -> b(0), "inl3_lsb" -> b(1)) ++ range, Map("inl2_lsb" -> sd(0), "inl3_lsb" -> sd(1)) ++ range.map(_._1 -> 0.0),
       s"against signal level: ${if (ch == "both") "both ADCs" else s"the $ch ADC"}", ch)
   }
   private def amp(c: Cand, e: SignalEngine) = (math.abs(c.params.getOrElse("inl2_lsb", 0.0)) + math.abs(c.params.getOrElse("inl3_lsb", 0.0))) * e.lsb
@@ -54,16 +56,14 @@ object AdcNonlinearity extends Effect {
       amplitudeRange(e, c.channel) < ConstantAmplitude) ||
       // the same INL on both ADCs stands back for one ADC's that explains as much
       (c.channel == "both" && other.effect == name && other.channel != "both")
-  override def lookAlikes(f: Finding, e: SignalEngine): Seq[String] = {
-    val r = if (f.channel == "both") 0.0 else amplitudeRange(e, f.channel)
-    if (f.channel == "both") Nil
-    else if (r >= ConstantAmplitude)
-      Seq(f"not ${Harmonic.name} 2 or 3 on the ${f.channel} channel: its amplitude changes by ${100 * r}%.0f %% over the record, and " +
-        "the structure stays with the code (a harmonic would scale with the amplitude)")
+  override def lookAlikes(f: Finding, e: SignalEngine): Seq[String] =
+    if (f.channel == "both" || f.params.getOrElse("amplitude_range_rel", 0.0) >= ConstantAmplitude) Nil
     else Seq(s"${Harmonic.name} 2 and 3 on the ${f.channel} channel predict the same signal while its amplitude stays constant, as it " +
       s"does here; a record at another amplitude or offset of the ${f.channel} channel separates them (INL stays with the code)")
-  }
 
-  def summary(p: Map[String, Double], channel: String, fMin: Double, fMax: Double): String =
-    f"ADC integral nonlinearity${if (channel == "both") " (both ADCs)" else s" of the $channel ADC"}: bow ${Effect.g(p, "inl2_lsb")}%.2f LSB, S-shape ${Effect.g(p, "inl3_lsb")}%.2f LSB at full scale"
+  def summary(p: Map[String, Double], channel: String, fMin: Double, fMax: Double): String = {
+    val r = p.getOrElse("amplitude_range_rel", 0.0)
+    f"ADC integral nonlinearity${if (channel == "both") " (both ADCs)" else s" of the $channel ADC"}: bow ${Effect.g(p, "inl2_lsb")}%.2f LSB, S-shape ${Effect.g(p, "inl3_lsb")}%.2f LSB at full scale" +
+      (if (r >= ConstantAmplitude) f"; not a harmonic on that channel: its amplitude changes by ${100 * r}%.0f %% over the record while this stays with the code" else "")
+  }
 }
