@@ -104,12 +104,26 @@ object RefTrajectory {
   /** A reference whose steps are coarser than this (fringe periods) knows the phase less well than the signals do. */
   val MaxStepPeriods: Double = 1.0 / 64
 
-  /** The reference's resolution: its smallest non-zero step between samples (0 when it never moves). */
+  /** The reference's resolution: its smallest non-zero step between samples (0 when it never moves). When it changes
+    * at nearly every sample (a fine reference on a fast stage), that step is its motion, not its resolution: then the
+    * resolution of a uniform quantizer is taken from its scatter about a local quadratic (rms * sqrt 12), if smaller.
+    */
   def step(a: Array[Double]): Double = {
-    var m = Double.MaxValue; var i = 1
-    while (i < a.length) { val d = math.abs(a(i) - a(i - 1)); if (d > 0 && d < m) m = d; i += 1 }
-    if (m == Double.MaxValue) 0.0 else m
+    var m = Double.MaxValue; var still = 0; var i = 1
+    while (i < a.length) { val d = math.abs(a(i) - a(i - 1)); if (d > 0 && d < m) m = d; if (d == 0) still += 1; i += 1 }
+    if (m == Double.MaxValue) 0.0
+    else if (still > MovingFraction * a.length || a.length < 4 * HalfWidth) m
+    else {
+      val (s, _) = smooth(a, HalfWidth)
+      var q = 0.0; var k = 0; i = HalfWidth
+      while (i + HalfWidth < a.length) { val d = a(i) - s(i); q += d * d; k += 1; i += 1 }
+      // a quadratic fitted to 2 h + 1 samples leaves (1 - 3 / (2 h + 1)) of the variance at its centre
+      val rms = math.sqrt(q / math.max(1, k) / (1 - 3.0 / (2 * HalfWidth + 1)))
+      math.min(m, rms * math.sqrt(12))
+    }
   }
+  /** Fraction of samples without a change above which the smallest step between samples is the resolution. */
+  val MovingFraction = 0.01
 
   /** Local quadratic (Savitzky-Golay) value and first difference per sample; the windows are cut short at the ends. */
   def smooth(a: Array[Double], h: Int): (Array[Double], Array[Double]) = {

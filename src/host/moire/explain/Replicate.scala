@@ -30,10 +30,10 @@ object Replicate {
   def why(e: SignalEngine, prev: ModelSpec): Option[String] = {
     val sp = e.spec
     lazy val cands = new Candidates(e)
-    def parts(x: effects.Effect) = splits(e, x)
+    def parts(x: effects.Effect, d: Option[effects.Domain] = None) = splits(e, x, d)
     sp.terms.diff(prev.terms).headOption match {
       case Some(t: Term.Interference) => val (f, w) = parts(t.effect); interferenceWhy(e, t, f, w)
-      case Some(t) => val (f, w) = parts(t.effect); agree(linearFolds(e, t, f), w, t.name)
+      case Some(t) => val (f, w) = parts(t.effect, Some(t.effect.domainOf(t))); agree(linearFolds(e, t, f), w, t.name)
       case None =>
         if (sp.jitter && !prev.jitter) { val (f, w) = parts(effects.Jitter); jitterWhy(e, f, w, e.slopes(), "jitter variance") }
         else if (sp.phaseNoise && !prev.phaseNoise) {
@@ -59,13 +59,19 @@ object Replicate {
   /** The replication parts of an effect, covering its domain, and their name: contiguous halves for effects of time (and
     * periodic effects whose cycle each half covers `MinCycles` times); interleaved blocks, so that each part covers the
     * whole cycle, for periodic effects of a record of a few cycles (one turn of a magnet) and for effects of speed (each
-    * part spans the speed range).
+    * part spans the speed range); alternate fringe periods for local structure along the position (a band), so that
+    * each part covers the whole travel. `d`: the domain of the term being tested, when not the effect's own.
     */
-  def splits(e: SignalEngine, x: effects.Effect): (Seq[Array[Int]], String) = x.domain match {
+  def splits(e: SignalEngine, x: effects.Effect, d: Option[effects.Domain] = None): (Seq[Array[Int]], String) = d.getOrElse(x.domain) match {
     case effects.Domain.Periodic if x.cycles(e) >= 2 * MinCycles => (folds(e.n), "halves")
+    case effects.Domain.Position => (alternatePeriods(e), "alternate fringe periods")
     case effects.Domain.Periodic | effects.Domain.Speed => (interleaved(e.n), "interleaved halves")
     case _ => (folds(e.n), "halves")
   }
+
+  /** Two parts of the samples in even and odd fringe periods of the position: each covers the whole travel. */
+  def alternatePeriods(e: SignalEngine): Seq[Array[Int]] =
+    Seq(0, 1).map(p => (0 until e.n).filter(i => math.floorMod(math.floor(e.phase(i)).toLong, 2L) == p).toArray)
 
   /** Two parts of alternating blocks of n / `Blocks` samples. */
   def interleaved(n: Int): Seq[Array[Int]] = {

@@ -270,15 +270,7 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
     case Term.Crosstalk =>
       val w = Array.tabulate(n)(i => 2 * math.Pi * freq(i))
       IndexedSeq(Col(mul(vc(_), w), null), Col(null, mul(vs(_), w)))
-    case Term.ContrastSpline(k) =>
-      val x = travel; var lo = Double.MaxValue; var hi = -Double.MaxValue
-      x.foreach { v => lo = math.min(lo, v); hi = math.max(hi, v) }
-      val h = math.max(1e-12, (hi - lo) / (k - 1))
-      (1 until k).flatMap { j =>
-        // the amplitudes times the hat function of knot j (1 at its knot, 0 at the neighbours)
-        val w = Array.tabulate(n)(i => math.max(0.0, 1 - math.abs((x(i) - lo) / h - j)))
-        IndexedSeq(Col(mul(us(_), w), null), Col(null, mul(uc(_), w)))
-      }
+    case t: Term.ContrastSpline => effects.ContrastAlongTravel.splineCols(this, t.knots)
     case Term.Contrast =>
       val x = travel
       IndexedSeq(Col(x, null), Col(null, x), Col(mul(us(_), x), null), Col(null, mul(uc(_), x)))

@@ -118,7 +118,7 @@ object SignalExplain {
       val passing = ok.filter(c => dbic(c) > Threshold)
       // A pile-up at one code is direct evidence in the histogram that no smooth effect makes: such repairs go first. An effect that yields to a look-alike predicting the same signal (within the
       // threshold) stands back for it: it is tried after the look-alike (when that fails its tests); the finding names it.
-      def yields(c: Cand) = Effects(c.effect).exists(f => passing.exists(o => o != c && f.yieldsTo(c, o) && dbic(o) > dbic(c) - Threshold))
+      def yields(c: Cand) = Effects(c.effect).exists(f => passing.exists(o => o != c && f.yieldsTo(c, o, e) && dbic(o) > dbic(c) - Threshold))
       val ordered = passing.sortBy(c => (!Effects(c.effect).exists(_.direct), yields(c), -dbic(c))).iterator
       def reject(c: Cand, why: String): Unit =
         if (!rejected.exists(_.where.startsWith(c.effect + " ")))
@@ -250,7 +250,7 @@ object SignalExplain {
     case Term.Harm(k, ch) => f.params.get("order").contains(k.toDouble) && ch == f.channel
     case Term.Interference(hz) => f.params.get("frequency_hz").contains(hz)
     case Term.Inl(ch) => ch == f.channel
-    case Term.ContrastSpline(k) => f.params.get("knots").contains(k.toDouble)
+    case Term.ContrastSpline(k) => f.params.get("knots").contains(k.size.toDouble)
     case Term.Contrast => !f.params.contains("knots")
     case Term.AngleHarm(m) => m == 1 || f.params.get("order").contains(m.toDouble)
     case _ => true

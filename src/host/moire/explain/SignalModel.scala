@@ -14,10 +14,13 @@ object Term {
   final case class Interference(hz: Double) extends Term { def effect: Effect = effects.Interference; val params = 5 }
   /** Offsets and amplitudes changing along the travel (beam walk, scale contamination): linear in the fringe position. */
   case object Contrast extends Term { def effect: Effect = ContrastAlongTravel; val params = 4 }
-  /** Amplitudes as a smooth function of the position: piecewise linear between `knots` equally spaced knots over the
-    * travel (the first knot's value is the default part's), so a local band (contamination) is representable.
+  /** Amplitudes as a smooth function of the position: piecewise linear between `knots` (fractions 0..1 of the travel,
+    * increasing, from 0 to 1; the first knot's value is the default part's), so a local band (contamination) is
+    * representable. The knots are chosen from the data: their inner positions count as parameters (a free-knot spline).
     */
-  final case class ContrastSpline(knots: Int) extends Term { def effect: Effect = ContrastAlongTravel; val params: Int = 2 * (knots - 1) }
+  final case class ContrastSpline(knots: Vector[Double]) extends Term {
+    def effect: Effect = ContrastAlongTravel; val params: Int = 2 * (knots.size - 1) + math.max(0, knots.size - 2)
+  }
   /** Warm-up: offsets and amplitudes approaching their final values as 1 - exp(-t / tauS) (tauS fitted: 5 parameters). */
   final case class Warmup(tauS: Double) extends Term { def effect: Effect = effects.Warmup; val params = 5 }
   /** Fringe phase modulated at `order` times the mechanical angle (the read angle's error): order 1 is eccentricity. */

@@ -26,11 +26,11 @@ class ContaminationSpec extends AnyFlatSpec with Matchers {
     (b, explain(f"contamination ${100 * depth}%.0f %% at ${from / 1000}%.1f mm", text))
   }
 
-  "explain on a linear scale with ref_um" should "report a contamination band (contrast 5-12 % lower over 1 mm) as contrast along the travel, and nothing else" in pendingUntilFixed {
+  "explain on a linear scale with ref_um" should "report a contamination band (contrast 5-12 % lower over 1 mm) as contrast along the travel, and nothing else" in {
     for ((_, r) <- runs) withClue(line(r)) { effects(r) shouldBe Seq("contrast_along_travel") }
   }
 
-  it should "represent the band: residual at the noise floor, nothing unexplained (needs: smooth contrast along the travel)" in pendingUntilFixed {
+  it should "represent the band: residual at the noise floor, nothing unexplained (needs: smooth contrast along the travel)" in {
     for ((b, r) <- runs) withClue(f"${line(r)}; floor ${b.floorRms}%.4g") {
       effects(r) should contain("contrast_along_travel")
       r.finalRms should be <= 1.05 * b.floorRms

@@ -48,7 +48,7 @@ class TwoEffectsSpec extends AnyFlatSpec with Matchers {
     }
   }
 
-  it should "report a contamination band and a 3rd harmonic of a linear scale with ref_um together" in pendingUntilFixed {
+  it should "report a contamination band and a 3rd harmonic of a linear scale with ref_um together" in {
     val fs = 20e3
     val w = 2 * math.Pi * 2.3
     val tr = Motions.formula(20000, fs)(t => 500 * t + 5 * math.sin(w * t), t => 500 + 5 * w * math.cos(w * t))

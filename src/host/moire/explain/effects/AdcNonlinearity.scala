@@ -18,21 +18,52 @@ object AdcNonlinearity extends Effect {
     Seq("both", "sin", "cos").map(ch => () => c.linear(Term.Inl(ch)).map(_._1).toSeq)
   override def describe(t: Term, b: Array[Double], sd: Array[Double], e: SignalEngine): Effect.Described = {
     val ch = t match { case Term.Inl(c) => c; case _ => "both" }
-    (Map("inl2_lsb" -> b(0), "inl3_lsb" -> b(1)), Map("inl2_lsb" -> sd(0), "inl3_lsb" -> sd(1)),
+    // one ADC's: how much its channel's amplitude changes over the record (what tells it from a harmonic)
+    val range = if (ch == "both") Map.empty[String, Double] else Map("amplitude_range_rel" -> amplitudeRange(e, ch))
+    (Map("inl2_lsb" -> b(0), "inl3_lsb" -> b(1)) ++ range, Map("inl2_lsb" -> sd(0), "inl3_lsb" -> sd(1)) ++ range.map(_._1 -> 0.0),
       s"against signal level: ${if (ch == "both") "both ADCs" else s"the $ch ADC"}", ch)
   }
   private def amp(c: Cand, e: SignalEngine) = (math.abs(c.params.getOrElse("inl2_lsb", 0.0)) + math.abs(c.params.getOrElse("inl3_lsb", 0.0))) * e.lsb
   override def valueAmplitude(c: Cand, e: SignalEngine): Option[Double] = Some(amp(c, e))
-  /** One ADC's bow or S shape at constant amplitude is a 2nd or 3rd harmonic on that channel. */
-  override def yieldsTo(c: Cand, other: Cand): Boolean =
-    (c.channel != "both" && other.effect == Harmonic.name && other.channel == c.channel) ||
+  /** Relative change of a channel's amplitude over the record below which one ADC's bow or S shape and a 2nd or 3rd
+    * harmonic on that channel predict the same signal (a harmonic scales with the amplitude, INL stays with the code).
+    */
+  val ConstantAmplitude = 0.05
+  /** Parts of the record whose amplitudes are compared. */
+  val Parts = 8
+
+  /** The range of a channel's fitted amplitude over `Parts` contiguous parts of the record (the prediction's rms about
+    * its mean, times the root of 2), relative to its mean.
+    */
+  def amplitudeRange(e: SignalEngine, ch: String): Double = {
+    val p = if (ch == "sin") e.predS else e.predC
+    val m = e.n / Parts
+    if (m < 16) return 0.0
+    val a = (0 until Parts).map { k =>
+      var s = 0.0; var q = 0.0; var i = k * m
+      while (i < (k + 1) * m) { s += p(i); q += p(i) * p(i); i += 1 }
+      math.sqrt(2 * math.max(0.0, q / m - (s / m) * (s / m)))
+    }
+    val mean = a.sum / Parts
+    if (mean > 0) (a.max - a.min) / mean else 0.0
+  }
+
+  /** One ADC's bow or S shape at constant amplitude is a 2nd or 3rd harmonic on that channel: it stands back for it.
+    * Where the amplitude changes, the two are told apart by the data (the harmonic does not replicate, INL does).
+    */
+  override def yieldsTo(c: Cand, other: Cand, e: SignalEngine): Boolean =
+    (c.channel != "both" && other.effect == Harmonic.name && other.channel == c.channel &&
+      amplitudeRange(e, c.channel) < ConstantAmplitude) ||
       // the same INL on both ADCs stands back for one ADC's that explains as much
       (c.channel == "both" && other.effect == name && other.channel != "both")
   override def lookAlikes(f: Finding, e: SignalEngine): Seq[String] =
-    if (f.channel == "both") Nil
+    if (f.channel == "both" || f.params.getOrElse("amplitude_range_rel", 0.0) >= ConstantAmplitude) Nil
     else Seq(s"${Harmonic.name} 2 and 3 on the ${f.channel} channel predict the same signal while its amplitude stays constant, as it " +
       s"does here; a record at another amplitude or offset of the ${f.channel} channel separates them (INL stays with the code)")
 
-  def summary(p: Map[String, Double], channel: String, fMin: Double, fMax: Double): String =
-    f"ADC integral nonlinearity${if (channel == "both") " (both ADCs)" else s" of the $channel ADC"}: bow ${Effect.g(p, "inl2_lsb")}%.2f LSB, S-shape ${Effect.g(p, "inl3_lsb")}%.2f LSB at full scale"
+  def summary(p: Map[String, Double], channel: String, fMin: Double, fMax: Double): String = {
+    val r = p.getOrElse("amplitude_range_rel", 0.0)
+    f"ADC integral nonlinearity${if (channel == "both") " (both ADCs)" else s" of the $channel ADC"}: bow ${Effect.g(p, "inl2_lsb")}%.2f LSB, S-shape ${Effect.g(p, "inl3_lsb")}%.2f LSB at full scale" +
+      (if (r >= ConstantAmplitude) f"; not a harmonic on that channel: its amplitude changes by ${100 * r}%.0f %% over the record while this stays with the code" else "")
+  }
 }

@@ -3,26 +3,33 @@ package moire.explain.effects
 import moire.explain._
 
 /** Offsets and amplitudes changing with the position along the travel (beam walk, scale contamination): linear in the
-  * position, or a piecewise-linear function of it with the number of knots chosen by the criterion (a local band).
+  * position, or the amplitudes as a piecewise-linear function of it with knots placed and counted by the criterion
+  * (a local band).
   */
 object ContrastAlongTravel extends Effect {
   val name = "contrast_along_travel"
   val params = Seq(Param("offset_sin_per_period", "full scale/period", "any"), Param("offset_cos_per_period", "full scale/period", "any"),
     Param("gain_sin_per_period", "1/period", "any"), Param("gain_cos_per_period", "1/period", "any"))
-  val what = "offsets (full scale) and gains (relative) changing linearly with the position along the travel (beam walk, scale contamination), per fringe period from the start; explain also fits the amplitudes as a piecewise-linear function of the position (8..64 knots, by BIC) for a local band"
+  val what = "offsets (full scale) and gains (relative) changing linearly with the position along the travel (beam walk, scale contamination), per fringe period from the start; explain also fits the amplitudes as a piecewise-linear function of the position with knots placed where the residual needs them (up to 64, by BIC) for a local band"
   val shows = "against position"
   override def example: Example = Example(EffectSpec(name, Map("gain_sin_per_period" -> 2e-5, "offset_cos_per_period" -> 1e-5)), "oscillate:400:300")
   val domain: Domain = Domain.Time
   override val plot: PlotKind = PlotKind.Position
-  /** Knots of the smooth contrast candidates (equally spaced over the travel). */
-  val Knots: Seq[Int] = Seq(8, 16, 32, 64)
+  /** The most knots of the smooth candidate, and the most samples times its columns (its design is held in memory). */
+  val MaxKnots = 64
+  val MaxCells: Long = 1L << 25
   /** Position bins and the chi-square (in sd) of the residual's amplitude against the position above which the smooth
-    * candidates are fitted (they are large: 2 columns per knot).
+    * candidate is fitted (it is large: 3 parameters per knot).
     */
   val Bins = 64
   val Z = 6.0
-  /** Fringe periods between knots at least: closer knots would follow the fringe phase (a harmonic's shape). */
-  val MinKnotPeriods = 4.0
+  /** Fringe periods per bin of the knot search, and between knots at least: an amplitude averaged over whole periods
+    * does not see a harmonic of the fringe (a hat function whose knots are one period apart has no part at one cycle
+    * per period).
+    */
+  val MinKnotPeriods = 1.0
+  /** Most bins of the knot search (a long travel gets wider bins). */
+  val MaxSearchBins = 4096
 
   /** The residual's amplitude against the position in `Bins` bins (sum r u / sum u^2) less a quadratic in the position
     * (what a linear contrast change or a low-pass on a ramp makes), as a chi-square in sd: local structure only.
@@ -54,27 +61,128 @@ object ContrastAlongTravel extends Effect {
   }
 
   override def backward(sp: ModelSpec, e: EffectSpec): ModelSpec = sp.copy(terms = sp.terms :+ Term.Contrast)
+  override def domainOf(t: Term): Domain = t match { case _: Term.ContrastSpline => Domain.Position; case _ => domain }
   override def searches(c: Candidates): Seq[() => Seq[Cand]] =
     (() => c.linear(Term.Contrast).map(_._1).toSeq) +:
-      (if (c.engine.spec.terms.exists(_.effect == this) || amplitudeAlongTravel(c.engine) < Z) Nil
-       else Knots.filter(k => travelSpan(c.engine) / (k - 1) >= MinKnotPeriods).map(k => () => c.linear(Term.ContrastSpline(k)).map(_._1).toSeq))
+      (if (c.engine.spec.terms.exists(_.isInstanceOf[Term.ContrastSpline]) || amplitudeAlongTravel(c.engine) < Z) Nil
+       else Seq(() => knots(c.engine).toSeq.flatMap(k => c.linear(Term.ContrastSpline(k)).map(_._1))))
 
   /** The span of positions the record covers (fringe periods). */
   def travelSpan(e: SignalEngine): Double = { val x = e.travel; x.max - x.min }
+
+  /** The position along the travel as a fraction 0..1 of its range, and the range (fringe periods). */
+  private def unit(e: SignalEngine): (Array[Double], Double) = {
+    val x = e.travel; var lo = Double.MaxValue; var hi = -Double.MaxValue
+    x.foreach { v => lo = math.min(lo, v); hi = math.max(hi, v) }
+    val span = math.max(1e-12, hi - lo)
+    var i = 0
+    while (i < x.length) { x(i) = (x(i) - lo) / span; i += 1 }
+    (x, hi - lo)
+  }
+
+  /** The hat function of knot j of `k` at z (1 at its knot, 0 at its neighbours and beyond). */
+  @inline def hat(k: Vector[Double], j: Int, z: Double): Double =
+    if (j > 0 && z >= k(j - 1) && z <= k(j)) (z - k(j - 1)) / (k(j) - k(j - 1))
+    else if (j + 1 < k.size && z >= k(j) && z <= k(j + 1)) (k(j + 1) - z) / (k(j + 1) - k(j))
+    else 0.0
+
+  /** The spline's columns: each channel's fitted fundamental times the hat function of every knot but the first. */
+  def splineCols(e: SignalEngine, k: Vector[Double]): IndexedSeq[Col] = {
+    val (z, _) = unit(e)
+    (1 until k.size).flatMap { j =>
+      val s = new Array[Double](e.n); val c = new Array[Double](e.n); var i = 0
+      while (i < e.n) { val w = hat(k, j, z(i)); if (w != 0) { s(i) = e.us(i) * w; c(i) = e.uc(i) * w }; i += 1 }
+      IndexedSeq(Col(s, null), Col(null, c))
+    }
+  }
+
+  /** The knots of the smooth candidate, chosen by the criterion. The residual's amplitude is measured in bins of one
+    * fringe period along the position (sum r u / sum u^2 per channel, weight sum u^2 / floor^2, the noise floor from
+    * neighbouring samples); starting from a
+    * straight line (knots at both ends), a knot goes where the weighted misfit of the piecewise-linear fit to those bins
+    * (summed over three neighbouring bins) is largest, at least `MinKnotPeriods` from the others, up to `MaxKnots`. Of
+    * that sequence the set with the lowest chi-square + parameters * ln N wins (each knot: two gains and its position).
+    * None when no inner knot pays for itself.
+    */
+  def knots(e: SignalEngine): Option[Vector[Double]] = {
+    val (z, span) = unit(e)
+    val nb = math.max(8, math.min(MaxSearchBins, (span / MinKnotPeriods).toInt))
+    val num = Array.ofDim[Double](2, nb); val den = Array.ofDim[Double](2, nb)
+    // the noise floor from neighbouring samples (the model's residual still holds the change being looked for)
+    val vS = math.max(1e-30, math.pow(Adequacy.floor(e), 2)); val vC = vS; var i = 0
+    while (i < e.n) {
+      val b = math.min(nb - 1, (z(i) * nb).toInt)
+      num(0)(b) += e.resS(i) * e.us(i) / vS; den(0)(b) += e.us(i) * e.us(i) / vS
+      num(1)(b) += e.resC(i) * e.uc(i) / vC; den(1)(b) += e.uc(i) * e.uc(i) / vC
+      i += 1
+    }
+    val mid = Array.tabulate(nb)(b => (b + 0.5) / nb)
+    // per bin: the weighted misfit of both channels' piecewise-linear fits with knots k
+    def misfit(k: Vector[Double]): Array[Double] = {
+      val out = new Array[Double](nb)
+      for (ch <- 0 to 1) {
+        val m = k.size; val g = Array.ofDim[Double](m, m); val r = new Array[Double](m)
+        var seg = 0
+        for (b <- 0 until nb if den(ch)(b) > 0) {
+          while (seg + 2 < m && mid(b) > k(seg + 1)) seg += 1
+          val t = (mid(b) - k(seg)) / (k(seg + 1) - k(seg)); val w = den(ch)(b); val a = num(ch)(b) / w
+          val h = Array(1 - t, t)
+          for (p <- 0 to 1; q <- 0 to 1) g(seg + p)(seg + q) += w * h(p) * h(q)
+          r(seg) += w * h(0) * a; r(seg + 1) += w * h(1) * a
+        }
+        for (j <- 0 until m) g(j)(j) += 1e-9 * (g(j)(j) + 1)
+        val f = LinearFit.normal(g, r).beta
+        seg = 0
+        for (b <- 0 until nb if den(ch)(b) > 0) {
+          while (seg + 2 < m && mid(b) > k(seg + 1)) seg += 1
+          val t = (mid(b) - k(seg)) / (k(seg + 1) - k(seg)); val d = num(ch)(b) / den(ch)(b) - ((1 - t) * f(seg) + t * f(seg + 1))
+          out(b) += den(ch)(b) * d * d
+        }
+      }
+      out
+    }
+    val minGap = MinKnotPeriods / math.max(span, 1e-12)
+    var k = Vector(0.0, 1.0); var c = misfit(k)
+    var best = (k, c.sum); val maxK = math.min(MaxKnots.toLong, 1 + MaxCells / (2L * e.n)).toInt
+    def cost(k: Vector[Double], chi2: Double) = chi2 + (2 * (k.size - 1) + (k.size - 2)) * e.lnN
+    var open = true
+    while (open && k.size < maxK) {
+      val free = (0 until nb).filter(b => k.forall(x => math.abs(x - mid(b)) >= minGap * 0.999))
+      if (free.isEmpty) open = false
+      else {
+        val b = free.maxBy(b => c(b) + (if (b > 0) c(b - 1) else 0.0) + (if (b + 1 < nb) c(b + 1) else 0.0))
+        k = (k :+ mid(b)).sorted; c = misfit(k)
+        if (cost(k, c.sum) < cost(best._1, best._2)) best = (k, c.sum)
+      }
+    }
+    if (best._1.size > 2) Some(best._1) else None
+  }
+
   override def describe(t: Term, b: Array[Double], sd: Array[Double], e: SignalEngine): Effect.Described = t match {
     case Term.ContrastSpline(k) =>
-      // knot j's coefficients: gain sin, gain cos (relative to the first knot's values); c = 2, 3 (0, 1: offsets, not fitted)
-      def at(j: Int, c: Int) = if (j == 0 || c < 2) 0.0 else b(2 * (j - 1) + c - 2)
-      def sdAt(j: Int, c: Int) = if (j == 0 || c < 2) 0.0 else sd(2 * (j - 1) + c - 2)
-      val span = { val x = e.travel; x.max - x.min }
-      def worst(c: Int): Int = (0 until k).maxBy(j => math.abs(at(j, c) - (0 until k).map(at(_, c)).sum / k))
-      def range(c: Int) = { val v = (0 until k).map(at(_, c)); v.max - v.min }
-      val g = if (range(2) >= range(3)) 2 else 3; val j = worst(g)
-      (Map("knots" -> k.toDouble, "travel_periods" -> span, "gain_sin_range_rel" -> range(2), "gain_cos_range_rel" -> range(3),
-        "band_at_periods" -> j * span / (k - 1), "band_gain_rel" -> at(j, g)),
-        Map("knots" -> 0.0, "travel_periods" -> 0.0, "gain_sin_range_rel" -> sdAt(j, 2), "gain_cos_range_rel" -> sdAt(j, 3),
-          "band_at_periods" -> span / (k - 1), "band_gain_rel" -> sdAt(j, g)),
-        s"against position: offset and amplitude, $k knots", "both")
+      // knot j's relative gain changes (sin, cos) from the first knot's, which is the default part's
+      def at(j: Int, ch: Int) = if (j == 0) 0.0 else b(2 * (j - 1) + ch)
+      def sdAt(j: Int, ch: Int) = if (j == 0) 0.0 else sd(2 * (j - 1) + ch)
+      val span = travelSpan(e)
+      def range(ch: Int) = { val v = k.indices.map(at(_, ch)); v.max - v.min }
+      // the mean of both channels' gain along the travel, on a fine grid: its typical level (median) and the band, the
+      // largest departure from it: its depth, and its centre and width at half its depth
+      val grid = 2048
+      val g = Array.tabulate(grid + 1) { q =>
+        val z = q.toDouble / grid; k.indices.map(j => hat(k, j, z) * 0.5 * (at(j, 0) + at(j, 1))).sum
+      }
+      val level = g.sorted.apply(grid / 2)
+      val peak = g.indices.maxBy(q => math.abs(g(q) - level)); val depth = g(peak) - level
+      def inBand(q: Int) = math.abs(g(q) - level) >= 0.5 * math.abs(depth)
+      var a = peak; while (a > 0 && inBand(a - 1)) a -= 1
+      var z = peak; while (z < grid && inBand(z + 1)) z += 1
+      val near = k.indices.minBy(j => math.abs(k(j) - peak.toDouble / grid))
+      (Map("knots" -> k.size.toDouble, "travel_periods" -> span, "gain_sin_range_rel" -> range(0), "gain_cos_range_rel" -> range(1),
+        "band_at_periods" -> span * 0.5 * (a + z) / grid, "band_gain_rel" -> depth / (1 + level), "band_width_periods" -> span * (z - a) / grid),
+        Map("knots" -> 0.0, "travel_periods" -> 0.0, "gain_sin_range_rel" -> sdAt(near, 0), "gain_cos_range_rel" -> sdAt(near, 1),
+          "band_at_periods" -> span / grid, "band_gain_rel" -> 0.5 * math.hypot(sdAt(near, 0), sdAt(near, 1)),
+          "band_width_periods" -> span / grid),
+        s"against position: amplitude, ${k.size} knots", "both")
     case _ =>
       val names = params.map(_.name)
       val span = { val x = e.travel; x.max - x.min }
@@ -86,8 +194,9 @@ object ContrastAlongTravel extends Effect {
     def g(k: String) = Effect.g(p, k)
     val l = g("travel_periods")
     if (p.contains("knots"))
-      f"contrast changes along the travel: amplitudes vary by ${100 * g("gain_sin_range_rel")}%.3g / ${100 * g("gain_cos_range_rel")}%.3g %% (sin/cos), " +
-        f"most (${100 * g("band_gain_rel")}%.3g %%) near ${g("band_at_periods")}%.4g periods from the start of the ${l}%.0f travelled (${g("knots").toInt} knots)"
+      f"contrast changes along the travel: ${100 * g("band_gain_rel")}%+.3g %% over ${g("band_width_periods")}%.4g periods (at half that depth) " +
+        f"centred ${g("band_at_periods")}%.4g periods from the low end of the ${l}%.0f travelled (a band: contamination of the scale, or the beam " +
+        f"walking); amplitudes vary by ${100 * g("gain_sin_range_rel")}%.3g / ${100 * g("gain_cos_range_rel")}%.3g %% (sin/cos), ${g("knots").toInt} knots"
     else
       f"contrast changes along the travel: amplitudes ${100 * g("gain_sin_per_period") * l}%.3g / ${100 * g("gain_cos_per_period") * l}%.3g %%, offsets ${g("offset_sin_per_period") * l}%.3g / ${g("offset_cos_per_period") * l}%.3g full scale over the ${l}%.0f periods travelled (sin/cos)"
   }

@@ -19,6 +19,8 @@ object Domain {
   case object Time extends Domain
   /** Speed: interleaved blocks, each spanning the speed range. */
   case object Speed extends Domain
+  /** Position along the travel, with local structure (a band): alternate fringe periods, each part covering the travel. */
+  case object Position extends Domain
   /** The code histogram: a repair of the data, not refitted on parts. */
   case object Codes extends Domain
 }
@@ -54,6 +56,8 @@ trait Effect {
   /** Calibration data (moire-calibration v1) rather than signals. */
   def calibration: Boolean = false
   def domain: Domain
+  /** The domain of one of its linear terms (an effect may have a smooth and a local form). */
+  def domainOf(t: Term): Domain = domain
   /** Cycles of its domain the record covers (periodic effects: fringe periods travelled; mechanical ones: turns). */
   def cycles(e: SignalEngine): Double = e.travelPeriods
   def plot: PlotKind = PlotKind.FringePhase
@@ -94,6 +98,8 @@ trait Effect {
     * evidence is within the threshold (the simpler, more common explanation goes first; the finding names this one).
     */
   def yieldsTo(c: Cand, other: Cand): Boolean = false
+  /** `yieldsTo` where the record decides (whether it can tell the two apart). */
+  def yieldsTo(c: Cand, other: Cand, e: SignalEngine): Boolean = yieldsTo(c, other)
   /** One plain sentence for a finding. */
   def summary(p: Map[String, Double], channel: String, fMin: Double, fMax: Double): String
 
