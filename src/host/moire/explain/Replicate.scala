@@ -236,10 +236,25 @@ object Replicate {
     val pv = 1 - new ChiSquaredDistribution(dof).cumulativeProbability(chi2)
     if (pv >= PValue) None
     else {
-      val z = if (pv <= 0) Double.PositiveInfinity else -new NormalDistribution().inverseCumulativeProbability(pv / 2)
-      val vals = ok.map(x => x.theta.indices.map(a => f"${x.theta(a)}%.3g +- ${math.sqrt(x.cov(a)(a))}%.2g").mkString("(", ", ", ")")).mkString(" vs ")
-      Some(f"it does not replicate on the $what: $name $vals (chi-square $chi2%.1f for $dof, $z%.1f sd)")
+      val z = if (pv > 0) -new NormalDistribution().inverseCumulativeProbability(pv / 2) else wilsonHilferty(chi2, dof)
+      // a long parameter vector (a spline's knots) is shown by the parameter whose folds disagree most
+      val shown = if (p <= MaxShown) 0 until p else {
+        val worst = (0 until p).maxBy(a => ok.map(x => (x.theta(a) - mean(a)) / math.sqrt(x.cov(a)(a))).map(math.abs).max)
+        Seq(worst)
+      }
+      val vals = ok.map(x => shown.map(a => f"${x.theta(a)}%.3g +- ${math.sqrt(x.cov(a)(a))}%.2g").mkString("(", ", ", ")")).mkString(" vs ")
+      val which = if (p <= MaxShown) "" else s" (parameter ${shown.head + 1} of $p, the one whose parts disagree most)"
+      Some(f"it does not replicate on the $what: $name$which $vals (chi-square $chi2%.1f for $dof, $z%.1f sd)")
     }
+  }
+
+  /** Parameters shown one by one in a disagreement; a longer vector shows its worst. */
+  val MaxShown = 6
+
+  /** The sd equivalent of a chi-square far in its tail, where the p-value underflows (Wilson-Hilferty's cube root). */
+  def wilsonHilferty(chi2: Double, dof: Int): Double = {
+    val k = 2.0 / (9 * dof)
+    (math.cbrt(chi2 / dof) - (1 - k)) / math.sqrt(k)
   }
 
   private def inv(m: Array[Array[Double]]): Option[Array[Array[Double]]] = {
