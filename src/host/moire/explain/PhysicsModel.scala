@@ -41,7 +41,7 @@ final case class PhysicsModel(
     validate()
     val p = signalParams
     val fw = Effects.all.flatMap { x => val s = all(x); if (s.isEmpty) None else Some(x.forward(s, this, p)) }.filter(_ ne Forward.none)
-    val fa = fw.toArray // per sample, in the registry's order
+    val fa = fw.toArray; val fan = fw.filter(_.analog).toArray // per sample, in the registry's order
     val rnd = new Random(p.seed)
     val n = samples; val fs = sampleRateHz
     val sin = new Array[Int](n); val cos = new Array[Int](n); val truth = new Array[Double](n)
@@ -74,8 +74,8 @@ final case class PhysicsModel(
       val q = motion.periods(t); val x = q - x0; val w = if (warm) 1 - math.exp(-t / tau) else 0.0
       v *= (1 + sl.gainX * x) * (1 + sl.gainW * w)
       val at = At(isSin, t, f, q, x, ph)
-      var k = 0; while (k < fa.length) { v = fa(k).gain(v, at); k += 1 }
-      k = 0; while (k < fa.length) { v = fa(k).add(v, at); k += 1 }
+      var k = 0; while (k < fan.length) { v = fan(k).gain(v, at); k += 1 }
+      k = 0; while (k < fan.length) { v = fan(k).add(v, at); k += 1 }
       v + o + sl.offsetT * t + sl.offsetX * x + sl.offsetW * w
     }
     def finish(v0: Double, isSin: Boolean): Int = {
@@ -94,7 +94,7 @@ final case class PhysicsModel(
       if (plain) { val a = SignalSim.analog(p, truth(i)); s = a._1; c = a._2 }
       else {
         var dt = 0.0; dph = 0.0
-        var k = 0; while (k < fa.length) { dt += fa(k).timeShift(); dph += fa(k).phaseShift(); k += 1 }
+        var k = 0; while (k < fan.length) { dt += fan(k).timeShift(); dph += fan(k).phaseShift(); k += 1 }
         val tj = t + dt
         s = channel(isSin = true, tj); c = channel(isSin = false, tj + skew)
       }

@@ -18,7 +18,9 @@ final case class Slow(gainT: Double = 0, gainX: Double = 0, gainW: Double = 0, o
   * quantizer -> pins. Every hook leaves the signal as it is unless the effect overrides it.
   */
 trait Forward {
-  /** It changes the analog chain (false: the model keeps its plain path, the fringe as SignalSim makes it). */
+  /** It changes the analog chain (false: its hooks up to `add` are not called, and without any such effect the model
+    * keeps its plain path, the fringe as SignalSim makes it).
+    */
   def analog: Boolean = true
   /** This sample's shift of both sampling instants (s); it draws its own noise, once per sample. */
   def timeShift(): Double = 0.0
