@@ -23,6 +23,26 @@ object AdcBitFault extends Effect {
       if (e.p("stuck_at").isNaN) -1 else e.p("stuck_at").toInt, if (e.p("bridged_to").isNaN) -1 else e.p("bridged_to").toInt))
   override def searches(c: Candidates): Seq[() => Seq[Cand]] = Seq(() => c.faults())
 
+  override def forward(specs: Seq[EffectSpec], m: PhysicsModel, p: moire.signal.SignalParams): Forward = new Forward {
+    override val analog = false
+    private val sin = specs.filter(_.channel == "sin"); private val cos = specs.filter(_.channel != "sin")
+    override def pins(code0: Int, isSin: Boolean): Int = {
+      var code = code0
+      (if (isSin) sin else cos).foreach(e => code = fault(code, e))
+      code
+    }
+  }
+
+  /** A bit fault applied to a pin code: stuck_at 0/1, or wired-AND with bit `bridged_to`. */
+  def fault(code: Int, e: EffectSpec): Int = {
+    val b = e.p("bit").toInt; val m = 1 << b
+    if (!e.p("stuck_at").isNaN) { if (e.p("stuck_at") >= 0.5) code | m else code & ~m }
+    else if (!e.p("bridged_to").isNaN) {
+      val o = e.p("bridged_to").toInt; val both = ((code >> b) & (code >> o) & 1) != 0
+      if (both) code | m | (1 << o) else code & ~m & ~(1 << o)
+    } else code
+  }
+
   def summary(p: Map[String, Double], channel: String, fMin: Double, fMax: Double): String =
     if (p.contains("stuck_at")) f"$channel ADC data line ${Effect.g(p, "bit").toInt} stuck at ${Effect.g(p, "stuck_at").toInt}"
     else f"$channel ADC data lines ${Effect.g(p, "bit").toInt} and ${Effect.g(p, "bridged_to").toInt} bridged (wired AND)"

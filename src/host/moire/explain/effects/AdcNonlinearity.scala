@@ -61,6 +61,17 @@ object AdcNonlinearity extends Effect {
     else Seq(s"${Harmonic.name} 2 and 3 on the ${f.channel} channel predict the same signal while its amplitude stays constant, as it " +
       s"does here; a record at another amplitude or offset of the ${f.channel} channel separates them (INL stays with the code)")
 
+  override def forward(specs: Seq[EffectSpec], m: PhysicsModel, p: moire.signal.SignalParams): Forward = new Forward {
+    override val analog = false
+    private def on(isSin: Boolean, k: String) = Forward.on(specs, isSin).map(_.p(k, 0.0)).sum
+    private val (inl2S, inl3S, inl2C, inl3C) = (on(true, "inl2_lsb"), on(true, "inl3_lsb"), on(false, "inl2_lsb"), on(false, "inl3_lsb"))
+    private val lsb = m.adc.lsb
+    override def transfer(v: Double, isSin: Boolean): Double = {
+      val inl2 = if (isSin) inl2S else inl2C; val inl3 = if (isSin) inl3S else inl3C
+      if (inl2 != 0 || inl3 != 0) v + (inl2 * (2 * v * v - 1) + inl3 * (4 * v * v * v - 3 * v)) * lsb else v
+    }
+  }
+
   def summary(p: Map[String, Double], channel: String, fMin: Double, fMax: Double): String = {
     val r = p.getOrElse("amplitude_range_rel", 0.0)
     f"ADC integral nonlinearity${if (channel == "both") " (both ADCs)" else s" of the $channel ADC"}: bow ${Effect.g(p, "inl2_lsb")}%.2f LSB, S-shape ${Effect.g(p, "inl3_lsb")}%.2f LSB at full scale" +

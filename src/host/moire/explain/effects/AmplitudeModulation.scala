@@ -23,6 +23,16 @@ object AmplitudeModulation extends Effect {
     (Map("depth" -> a, "phase_deg" -> ph), Map("depth" -> sa, "phase_deg" -> sph), "against mechanical angle: amplitude", "both")
   }
 
+  override def forward(specs: Seq[EffectSpec], m: PhysicsModel, p: moire.signal.SignalParams): Forward = new Forward {
+    private val depth = specs.map(_.p("depth", 0.0)).toArray; private val phase = specs.map(_.p("phase_deg", 0.0)).toArray
+    private val l = m.linesPerRev.get
+    override def gain(v0: Double, a: At): Double = {
+      var v = v0; var i = 0
+      while (i < depth.length) { v *= 1 + depth(i) * math.cos(2 * math.Pi * a.ph / l + math.toRadians(phase(i))); i += 1 }
+      v
+    }
+  }
+
   def summary(p: Map[String, Double], channel: String, fMin: Double, fMax: Double): String =
     f"amplitude follows the mechanical angle: ${100 * Effect.g(p, "depth")}%.2f %% modulation once per revolution"
 }

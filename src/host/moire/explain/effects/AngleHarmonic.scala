@@ -13,6 +13,10 @@ object AngleHarmonic extends AngleHarmonics(2) {
   override def backward(sp: ModelSpec, e: EffectSpec): ModelSpec = sp.copy(terms = sp.terms :+ Term.AngleHarm(e.p("order", 2).toInt))
   def own(common: Map[String, Double], cu: Map[String, Double], a: Double, sa: Double, p: Double): Effect.Described =
     (common + ("order" -> 2.0), cu + ("order" -> 0.0), "against mechanical angle (reference): fringe phase, 2 times per turn", "both")
+  override def forward(specs: Seq[EffectSpec], m: PhysicsModel, p: moire.signal.SignalParams): Forward = new Forward {
+    override val angleErrors: Seq[(Int, Double, Double)] = specs.map(e => (e.p("order", 2).toInt, e.p("amplitude_arcsec", 0.0) / 1296000, e.p("phase_deg", 0.0)))
+  }
+
   def summary(p: Map[String, Double], channel: String, fMin: Double, fMax: Double): String = {
     def g(k: String) = Effect.g(p, k)
     f"harmonic ${g("order").toInt} of the mechanical angle in the read angle: ${g("angle_error_arcsec")}%.3g arcsec (${g("phase_error_deg")}%.3g degree of fringe phase)"

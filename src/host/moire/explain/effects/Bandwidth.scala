@@ -20,6 +20,11 @@ object Bandwidth extends Effect {
   override def refresh(f: Finding, e: SignalEngine): Finding =
     f.copy(params = f.params + ("cutoff_hz" -> e.spec.bw.getOrElse(f.channel, f.params("cutoff_hz"))))
 
+  override def forward(specs: Seq[EffectSpec], m: PhysicsModel, p: moire.signal.SignalParams): Forward = new Forward {
+    private val sin = Forward.on(specs, isSin = true).map(_.p("cutoff_hz")); private val cos = Forward.on(specs, isSin = false).map(_.p("cutoff_hz"))
+    override def cutoffs(isSin: Boolean): Seq[Double] = if (isSin) sin else cos
+  }
+
   def summary(p: Map[String, Double], channel: String, fMin: Double, fMax: Double): String = {
     val fc = Effect.g(p, "cutoff_hz"); val u = fMax / fc
     val who = if (channel == "both") "read-head amplifiers (both channels)" else s"$channel channel amplifier"

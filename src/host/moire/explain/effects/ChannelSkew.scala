@@ -17,6 +17,11 @@ object ChannelSkew extends Effect {
   override def searches(c: Candidates): Seq[() => Seq[Cand]] = Seq(() => c.skew().toSeq)
   override def refresh(f: Finding, e: SignalEngine): Finding = f.copy(params = f.params + ("skew_s" -> e.spec.skewS))
 
+  override def forward(specs: Seq[EffectSpec], m: PhysicsModel, p: moire.signal.SignalParams): Forward = new Forward {
+    override val cosDelay: Double = specs.map(_.p("skew_s", 0.0)).sum
+    override val analog: Boolean = cosDelay != 0
+  }
+
   def summary(p: Map[String, Double], channel: String, fMin: Double, fMax: Double): String = {
     val tau = Effect.g(p, "skew_s"); val who = if (tau >= 0) "cos channel sampled %.1f ns after sin" else "cos channel sampled %.1f ns before sin"
     val d0 = 360 * fMin * tau; val d1 = 360 * fMax * tau

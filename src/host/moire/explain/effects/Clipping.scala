@@ -19,6 +19,16 @@ object Clipping extends Effect {
     sp.copy(clips = sp.clips :+ Clip(if (e.channel == "cos") 1 else 0, e.p("low_fs", Double.NegativeInfinity), e.p("high_fs", Double.PositiveInfinity)))
   override def searches(c: Candidates): Seq[() => Seq[Cand]] = Seq(() => c.clips())
 
+  override def forward(specs: Seq[EffectSpec], m: PhysicsModel, p: moire.signal.SignalParams): Forward = new Forward {
+    override val analog = false
+    private val sin = Forward.on(specs, isSin = true); private val cos = Forward.on(specs, isSin = false)
+    override def frontEnd(v0: Double, isSin: Boolean): Double = {
+      var v = v0
+      (if (isSin) sin else cos).foreach { e => v = math.min(e.p("high_fs", 2.0), math.max(e.p("low_fs", -2.0), v)) }
+      v
+    }
+  }
+
   def summary(p: Map[String, Double], channel: String, fMin: Double, fMax: Double): String =
     s"$channel channel saturates" + p.map { case (k, v) => f" ${k.stripSuffix("_fs")} at $v%.4f FS" }.mkString(",")
 }

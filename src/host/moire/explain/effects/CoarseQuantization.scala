@@ -25,6 +25,16 @@ object CoarseQuantization extends Effect {
       s"code histogram: the low ${e.coarseBits} bits never change on either channel"))
   }
 
+  override def forward(specs: Seq[EffectSpec], m: PhysicsModel, p: moire.signal.SignalParams): Forward = new Forward {
+    override val analog = false
+    private val adc = m.adc
+    override val quantizer: Option[Double => Int] =
+      specs.map(_.p("effective_bits", adc.bits.toDouble).toInt).headOption.filter(_ < adc.bits).map { eb =>
+        val coarse = moire.signal.Adc(eb)
+        (v: Double) => adc.pins(math.max(-adc.half, coarse.signedCode(v).code << (adc.bits - eb)))
+      }
+  }
+
   def summary(p: Map[String, Double], channel: String, fMin: Double, fMax: Double): String =
     f"the codes use only ${Effect.g(p, "effective_bits").toInt} of the ${Effect.g(p, "format_bits").toInt} bits: quantization steps of ${Effect.g(p, "step_lsb").toInt} LSB, whose error is not white noise"
 }

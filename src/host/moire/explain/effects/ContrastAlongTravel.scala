@@ -190,6 +190,13 @@ object ContrastAlongTravel extends Effect {
   }
   override def lookAlikes(f: Finding, e: SignalEngine): Seq[String] = TimeOrTravel.lookAlikes(e, Warmup.name + " or " + Drift.name)
 
+  override def forward(specs: Seq[EffectSpec], m: PhysicsModel, p: moire.signal.SignalParams): Forward = new Forward {
+    private def d(k: String) = specs.map(_.p(k, 0.0)).sum
+    private val sin = Slow(gainX = d("gain_sin_per_period"), offsetX = d("offset_sin_per_period"))
+    private val cos = Slow(gainX = d("gain_cos_per_period"), offsetX = d("offset_cos_per_period"))
+    override def slow(isSin: Boolean): Slow = if (isSin) sin else cos
+  }
+
   def summary(p: Map[String, Double], channel: String, fMin: Double, fMax: Double): String = {
     def g(k: String) = Effect.g(p, k)
     val l = g("travel_periods")

@@ -22,6 +22,13 @@ object Drift extends Effect {
   }
   override def lookAlikes(f: Finding, e: SignalEngine): Seq[String] = TimeOrTravel.lookAlikes(e, ContrastAlongTravel.name)
 
+  override def forward(specs: Seq[EffectSpec], m: PhysicsModel, p: moire.signal.SignalParams): Forward = new Forward {
+    private def d(k: String) = specs.map(_.p(k, 0.0)).sum
+    private val sin = Slow(gainT = d("gain_sin_per_s"), offsetT = d("offset_sin_per_s"))
+    private val cos = Slow(gainT = d("gain_cos_per_s"), offsetT = d("offset_cos_per_s"))
+    override def slow(isSin: Boolean): Slow = if (isSin) sin else cos
+  }
+
   def summary(p: Map[String, Double], channel: String, fMin: Double, fMax: Double): String = {
     def g(k: String) = Effect.g(p, k)
     f"offsets drift ${g("offset_sin_per_s")}%.3g / ${g("offset_cos_per_s")}%.3g full scale per second (sin/cos), amplitudes ${100 * g("gain_sin_per_s")}%.3g / ${100 * g("gain_cos_per_s")}%.3g %% per second"

@@ -14,6 +14,10 @@ object Eccentricity extends AngleHarmonics(1) {
   def own(common: Map[String, Double], cu: Map[String, Double], a: Double, sa: Double, p: Double): Effect.Described =
     (common + ("eccentricity_rel" -> 2 * math.Pi * a / p), cu + ("eccentricity_rel" -> 2 * math.Pi * sa / p),
       "against mechanical angle (reference): fringe phase, once per turn", "both")
+  override def forward(specs: Seq[EffectSpec], m: PhysicsModel, p: moire.signal.SignalParams): Forward = new Forward {
+    override val angleErrors: Seq[(Int, Double, Double)] = specs.map(e => (1, e.p("eccentricity_rel", 0.0) / (2 * math.Pi), e.p("phase_deg", 0.0)))
+  }
+
   def summary(p: Map[String, Double], channel: String, fMin: Double, fMax: Double): String = {
     def g(k: String) = Effect.g(p, k)
     f"eccentricity of the disk or magnet: the read angle is off by ${g("angle_error_arcsec")}%.3g arcsec once per turn " +

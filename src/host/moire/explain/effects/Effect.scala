@@ -101,6 +101,11 @@ trait Effect {
   /** `yieldsTo` where the record decides (whether it can tell the two apart). */
   def yieldsTo(c: Cand, other: Cand, e: SignalEngine): Boolean = yieldsTo(c, other)
   /** One plain sentence for a finding. */
+  /** Harmonics it adds to the simulated fringe (the model's SignalParams), from its specs in the model. */
+  def harmonics(specs: Seq[EffectSpec]): Seq[moire.signal.Harmonic] = Nil
+  /** Its forward step (`simulate`) in model `m` with fringe `p`, from its specs there (never empty). */
+  def forward(specs: Seq[EffectSpec], m: PhysicsModel, p: moire.signal.SignalParams): Forward = Forward.none
+
   def summary(p: Map[String, Double], channel: String, fMin: Double, fMax: Double): String
 
   def sinCos(ch: String): String = if (ch == "both") "both channels" else s"the $ch channel"

@@ -44,6 +44,11 @@ object Harmonic extends Effect {
       s"the ${f.channel} channel separates them (a harmonic scales with the amplitude, INL stays with the code)")
   }
 
+  override def harmonics(specs: Seq[EffectSpec]): Seq[moire.signal.Harmonic] = specs.map { e =>
+    val ch = e.channel match { case "sin" => moire.signal.Channel.Sin; case "cos" => moire.signal.Channel.Cos; case _ => moire.signal.Channel.Both }
+    moire.signal.Harmonic(e.p("order", 2).toInt, e.p("amplitude_rel", 0.0), e.p("phase_deg", 0.0), ch)
+  }
+
   def summary(p: Map[String, Double], channel: String, fMin: Double, fMax: Double): String =
     f"harmonic ${Effect.g(p, "order").toInt} of the fringe on ${sinCos(channel)}: ${100 * Effect.g(p, "amplitude_rel")}%.3f %% of the fundamental"
 }

@@ -49,6 +49,16 @@ object Interference extends Effect {
     else Some(f"a line at $hz%.4g Hz completes ${cycles}%.3g +- ${sd}%.2g cycles in the ${seconds}%.3g s record (at least ${MinCycles}%.0f needed)")
   }
 
+  override def forward(specs: Seq[EffectSpec], m: PhysicsModel, p: moire.signal.SignalParams): Forward = new Forward {
+    private val amp = specs.map(_.p("amplitude_fs", 0.0)).toArray; private val hz = specs.map(_.p("frequency_hz", 0.0)).toArray
+    private val phase = specs.map(_.p("phase_deg", 0.0)).toArray
+    override def add(v0: Double, a: At): Double = {
+      var v = v0; var i = 0
+      while (i < amp.length) { v += amp(i) * math.sin(2 * math.Pi * hz(i) * a.t + math.toRadians(phase(i))); i += 1 }
+      v
+    }
+  }
+
   def summary(p: Map[String, Double], channel: String, fMin: Double, fMax: Double): String =
     f"pickup at ${hz(Effect.g(p, "frequency_hz"))}, ${Effect.g(p, "amplitude_fs")}%.3g full scale amplitude"
 

@@ -30,6 +30,13 @@ object Jitter extends Effect {
         "separates them (jitter's noise grows with speed, vibration's does not)")
     }
 
+  override def forward(specs: Seq[EffectSpec], m: PhysicsModel, p: moire.signal.SignalParams): Forward = new Forward {
+    private val jitter = specs.map(_.p("jitter_s", 0.0)).headOption.getOrElse(0.0)
+    private val rnd = new scala.util.Random(p.seed * 31 + 7)
+    override val analog: Boolean = jitter != 0
+    override def timeShift(): Double = if (jitter > 0) jitter * rnd.nextGaussian() else 0.0
+  }
+
   def summary(p: Map[String, Double], channel: String, fMin: Double, fMax: Double): String =
     f"sampling clock jitter ${Effect.g(p, "jitter_s") * 1e12}%.1f ps rms: noise grows with the signal slope, beside ${Effect.g(p, "white_noise_fs")}%.3g full scale white noise"
 }

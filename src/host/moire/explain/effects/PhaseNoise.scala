@@ -29,6 +29,13 @@ object PhaseNoise extends Effect {
       f"predicts the same noise here: the fringe frequency spans only ${e.fMin}%.4g .. ${e.fMax}%.4g Hz; a record over a speed range of " +
       f"${Identifiable.JitterSpeedRange}%.0f or more separates them")
 
+  override def forward(specs: Seq[EffectSpec], m: PhysicsModel, p: moire.signal.SignalParams): Forward = new Forward {
+    private val periods = specs.map(_.p("phase_noise_rad", 0.0)).headOption.getOrElse(0.0) / (2 * math.Pi)
+    private val rnd = new scala.util.Random(p.seed * 17 + 5)
+    override val analog: Boolean = periods != 0
+    override def phaseShift(): Double = if (periods > 0) periods * rnd.nextGaussian() else 0.0
+  }
+
   def summary(p: Map[String, Double], channel: String, fMin: Double, fMax: Double): String =
     f"phase noise of the motion ${Effect.g(p, "phase_noise_rad") * 1e3}%.3g mrad rms of fringe phase: noise grows with the signal's slope, not with speed, beside ${Effect.g(p, "white_noise_fs")}%.3g full scale white noise"
 }

@@ -31,6 +31,14 @@ object Warmup extends Effect {
   }
   override def lookAlikes(f: Finding, e: SignalEngine): Seq[String] = TimeOrTravel.lookAlikes(e, ContrastAlongTravel.name)
 
+  override def forward(specs: Seq[EffectSpec], m: PhysicsModel, p: moire.signal.SignalParams): Forward = new Forward {
+    private def d(k: String) = specs.map(_.p(k, 0.0)).sum
+    private val sin = Slow(gainW = d("gain_sin_step_rel"), offsetW = d("offset_sin_step_fs"))
+    private val cos = Slow(gainW = d("gain_cos_step_rel"), offsetW = d("offset_cos_step_fs"))
+    override def slow(isSin: Boolean): Slow = if (isSin) sin else cos
+    override val warmupTau: Option[Double] = Some(specs.map(_.p("time_constant_s", 1.0)).headOption.getOrElse(1.0))
+  }
+
   def summary(p: Map[String, Double], channel: String, fMin: Double, fMax: Double): String = {
     def g(k: String) = Effect.g(p, k)
     f"warm-up: offsets settle by ${g("offset_sin_step_fs")}%.3g / ${g("offset_cos_step_fs")}%.3g full scale, amplitudes by ${100 * g("gain_sin_step_rel")}%.3g / ${100 * g("gain_cos_step_rel")}%.3g %% (sin/cos) with a time constant of ${g("time_constant_s")}%.3g s"
