@@ -68,7 +68,7 @@ class BoardCore(val p: BoardParams) extends Module {
     case BoardDesign.Corrected =>
       val m = Module(new CorrectedSubdivider(p.correctedParams, withReadBack = true))
       m.io.in := dpIn; m.io.clearStatus := clear
-      (m.io.out, m.io.a, m.io.b, m.io.z, m.io.status, m.latency, m.readBack)
+      (m.io.out, m.io.a, m.io.b, m.io.z, m.io.status, m.latency, m.readBack.zip(m.preset))
     case BoardDesign.Compensated =>
       val m = Module(new SubdivAdc(p.subdiv, p.adcFormat))
       m.io.in := dpIn; m.io.clearStatus := clear
@@ -268,12 +268,28 @@ class BoardCore(val p: BoardParams) extends Module {
   // command's address in the clock it arrives and registered (a value one clock older than the others'), which is one
   // entry of the register file's mux; the index register, written by commands, among the others (a write answers with it)
   private val none = (Seq.empty[(Int, UInt)], Seq.empty[(Bool, UInt)])
-  private val (adaptIndex, adaptWord): (Seq[(Int, UInt)], Seq[(Bool, UInt)]) = adapt.fold(none) { rb =>
+  private val (adaptIndex, adaptWord): (Seq[(Int, UInt)], Seq[(Bool, UInt)]) = adapt.fold(none) { case (rb, pr) =>
     import moire.protocol.AdaptRegisters._
     val ap = p.correctedParams.adapt
     val index = RegInit(0.U(rb.tableIndex.getWidth.W))
     when(written(TableIndex)) { index := cmd.bits.value(rb.tableIndex.getWidth - 1, 0) }
     rb.tableIndex := index
+    // the preset port: hold kept, the strobes a clock long, the presets kept in their widths (read back sign-extended)
+    val hold = RegInit(false.B)
+    when(written(Control)) { hold := cmd.bits.value(AdaptBit.Hold) }
+    pr.hold := hold
+    pr.load := RegNext(written(Control) && cmd.bits.value(AdaptBit.Load), false.B)
+    pr.tableWrite := RegNext(written(Control) && cmd.bits.value(AdaptBit.TableWrite), false.B)
+    pr.pair := (index >> 1).pad(pr.pair.getWidth)
+    def kept(r: moire.protocol.Reg, port: SInt): UInt = {
+      val v = RegInit(0.S(port.getWidth.W))
+      when(written(r)) { v := cmd.bits.value(port.getWidth - 1, 0).asSInt }
+      port := v
+      v.pad(32).asUInt
+    }
+    val presetWords = Seq(PresetOffsetSin -> pr.offsetSin, PresetOffsetCos -> pr.offsetCos, PresetGainSin -> pr.gainSin,
+      PresetGainCos -> pr.gainCos, PresetPhase -> pr.phase, PresetTableSum -> pr.tableSum, PresetEven -> pr.even, PresetOdd -> pr.odd)
+      .map { case (r, port) => r.addr -> kept(r, port) }
     val l = rb.learned
     def word(v: SInt): UInt = v.pad(32).asUInt
     val values = Seq(OffsetSin -> word(l.offsetSin), OffsetCos -> word(l.offsetCos),
@@ -286,7 +302,7 @@ class BoardCore(val p: BoardParams) extends Module {
       Format -> moire.adapt.AdaptLearned.format(ap).U(32.W),
       Size -> moire.adapt.AdaptLearned.size(ap).U(32.W))
     val hits = values.map { case (r, _) => cmd.bits.addr === r.addr.U }
-    (Seq(TableIndex.addr -> index.pad(32)), Seq((VecInit(hits).asUInt.orR, RegNext(Mux1H(hits, values.map(_._2))))))
+    (Seq(TableIndex.addr -> index.pad(32), Control.addr -> Cat(0.U(31.W), hold)) ++ presetWords, Seq((VecInit(hits).asUInt.orR, RegNext(Mux1H(hits, values.map(_._2))))))
   }
   // The reply reads the register one clock later, so a write answers with the new value. The address is decoded
   // to one select per register beside the command and the selected value registered: a reply takes 2 clocks.

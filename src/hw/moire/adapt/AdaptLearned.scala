@@ -43,3 +43,23 @@ class AdaptReadBackIO(p: AdaptParams) extends Bundle {
   })
   val tableIndex = Input(UInt(math.max(p.tableIndexBits, 1).W))
 }
+
+/** The corrector's preset port (AdaptiveCorrector with `withReadBack`), every input from a register of the register file:
+  * `hold` stops its loops (estimates, statistics, PLL, table: the correction goes on with the values held); with hold,
+  * the strobe `load` puts the preset offsets, gains, phase term and table sum into the loops' registers, and the strobe
+  * `tableWrite` writes entries 2 `pair` and 2 `pair` + 1 (`even`, `odd`) through the table's write port.
+  */
+class AdaptPresetIO(p: AdaptParams) extends Bundle {
+  val hold = Input(Bool())
+  val load = Input(Bool())
+  val offsetSin = Input(SInt(p.offsetWidth.W))
+  val offsetCos = Input(SInt(p.offsetWidth.W))
+  val gainSin = Input(SInt(p.gainBits.W))
+  val gainCos = Input(SInt(p.gainBits.W))
+  val phase = Input(SInt(p.phaseBits.W))
+  val tableSum = Input(SInt((p.tableBits + p.tableIndexBits).W))
+  val tableWrite = Input(Bool())
+  val pair = Input(UInt(math.max(p.tableIndexBits - 1, 1).W))
+  val even = Input(SInt(p.tableBits.W))
+  val odd = Input(SInt(p.tableBits.W))
+}

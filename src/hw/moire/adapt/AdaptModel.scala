@@ -63,6 +63,15 @@ class AdaptModel(val p: AdaptParams) {
   private val updates = line[Snapshot](p.updateDelay)
   private final class Snapshot(val aS: Long, val aC: Long, val bS: Long, val bC: Long, val cX: Long, val l: Int)
 
+  /** The corrector's registered hold (preset port): while set, the estimates, statistics, PLL and table stand still.
+    * Set it before the clocks it is high in.
+    */
+  var held = false
+  /** The load strobe, called after the clock it is high in: offsets, gains, phase term and table sum from `l`. */
+  def load(l: AdaptLearned): Unit = { os = l.offsetSin; oc = l.offsetCos; ks = l.gainSin; kc = l.gainCos; t = l.phase; tableSum = l.tableSum }
+  /** The table-write strobe, called after the clock it is high in: entries 2 k and 2 k + 1 (the sum unchanged). */
+  def writePair(k: Int, even: Long, odd: Long): Unit = { table(2 * k) = even; table(2 * k + 1) = odd }
+
   /** What the corrector has learned now, as the read-back registers of the board show it once it stops moving. */
   def learned: AdaptLearned = AdaptLearned(os, oc, ks, kc, t, math.min(periods, AdaptLearned.MaxUpdates), lockCnt == lockMax,
     tableSum, table.toSeq.take(entries))
@@ -90,7 +99,7 @@ class AdaptModel(val p: AdaptParams) {
 
     // ---- statistics one clock later; an update reaches the estimates updateDelay clocks after ----
     val apply = updates.last
-    shift(updates, stat(0).flatMap(x => stats(x.sp, x.cp, x.s1, x.c1)))
+    shift(updates, stat(0).filter(_ => !held).flatMap(x => stats(x.sp, x.cp, x.s1, x.c1)))
 
     // ---- harmonic table: read, PLL, leak, read-modify-write ----
     val read = cq.last
@@ -102,12 +111,12 @@ class AdaptModel(val p: AdaptParams) {
       if (entries > 0) x.delta = AdaptModel.interpolate(p, table(x.idx), table((x.idx + 1) & mask), x.frac) - x.mean
       x.phic = wrap((x.phi << p.fineGuard) - x.delta, F)
     }
-    post(p.pllStage - 1).foreach(pll)
+    post(p.pllStage - 1).filter(_ => !held).foreach(pll)
     post(p.leakStage - 1).foreach(x => x.leak = shR(tableSum, p.tableIndexBits + p.meanShift))
     tableSum += sumPending; sumPending = 0
     atRmw.foreach(x => if (x.enable) update(x))
 
-    apply.foreach(estimate)
+    apply.filter(_ => !held).foreach(estimate)
     shift(post, read)
     shift(cq, corrected)
     shift(stat, corrected)

@@ -34,6 +34,8 @@ class AdaptiveCorrector(val p: AdaptParams, withReadBack: Boolean = false) exten
     val out = Valid(new AdaptSample(p.outputBits))
   })
   val readBack: Option[AdaptReadBackIO] = if (withReadBack) Some(IO(new AdaptReadBackIO(p))) else None
+  /** With `withReadBack`: the preset port ([[AdaptPresetIO]]), to hold the loops and load learned values. */
+  val preset: Option[AdaptPresetIO] = if (withReadBack) Some(IO(new AdaptPresetIO(p))) else None
   val latency: Int = p.latency
 
   private val F = p.fineBits
@@ -47,6 +49,13 @@ class AdaptiveCorrector(val p: AdaptParams, withReadBack: Boolean = false) exten
   /** v delayed by k clocks in registers of its exact type. */
   private def delay[T <: Data](v: T, k: Int): T = (0 until k).foldLeft(v)((x, _) => reg(x))
   private def valid(v: Bool): Bool = RegNext(v, false.B)
+
+  // ---- preset port (with read-back): hold, and the load and table-write strobes, registered here ----
+  private val hold: Option[Bool] = preset.map(x => valid(x.hold))
+  private val load: Option[Bool] = preset.map(x => valid(x.load && x.hold))
+  private val presetWrite: Option[Bool] = preset.map(x => valid(x.tableWrite && x.hold))
+  /** v, and not held (v alone without the preset port). */
+  private def running(v: Bool): Bool = hold.fold(v)(h => v && !h)
 
   // ---- input register ----
   private val inV = valid(io.in.valid)
@@ -97,7 +106,7 @@ class AdaptiveCorrector(val p: AdaptParams, withReadBack: Boolean = false) exten
   private val start = gQ === 0.U && prevQ =/= 0.U
   private val whole = (seen & 0xE.U) === 0xE.U && n < p.countMax.U
   private val restart = start && !(whole && n < (1L << p.windowBits).U)
-  when(gV) {
+  when(running(gV)) {
     when(restart) {
       aS := fit(gS1, p.sumOffsetWidth); aC := fit(gC1, p.sumOffsetWidth)
       bS := fit(gDs, p.sumSquareWidth); bC := fit(gDc, p.sumSquareWidth); cX := fit(gXc, p.sumSquareWidth)
@@ -111,7 +120,7 @@ class AdaptiveCorrector(val p: AdaptParams, withReadBack: Boolean = false) exten
     prevQ := gQ
   }
   // a closed window: snapshot of its sums, then the shifted steps, then the estimates move
-  private val uV = valid(gV && restart && whole)
+  private val uV = valid(running(gV) && restart && whole)
   private val uL = reg(Log2(n) +& 1.U)
   private val uS = reg(aS); private val uC = reg(aC); private val uBs = reg(bS); private val uBc = reg(bC); private val uX = reg(cX)
   // w: the sums with half a step added (the rounding); v: shifted by the window's length and the rate
@@ -125,7 +134,7 @@ class AdaptiveCorrector(val p: AdaptParams, withReadBack: Boolean = false) exten
   private val vKs = reg((wBs >> (wL + (p.gainRate + p.gainShift).U)).asSInt)
   private val vKc = reg((wBc >> (wL + (p.gainRate + p.gainShift).U)).asSInt)
   private val vT = reg((wX >> (wL + (p.phaseRate + p.phaseShift).U)).asSInt)
-  when(vV) {
+  when(running(vV)) {
     val gMax = lit((1L << (p.gainBits - 1)) - 1, p.gainBits)
     def gain(k: SInt, step: SInt): SInt = {
       val v = k +& step
@@ -137,6 +146,7 @@ class AdaptiveCorrector(val p: AdaptParams, withReadBack: Boolean = false) exten
     kc := gain(kc, vKc)
     t := sat(t -& vT, p.phaseBits)
   }
+  for (x <- preset; ld <- load) when(ld) { os := x.offsetSin; oc := x.offsetCos; ks := x.gainSin; kc := x.gainCos; t := x.phase }
 
   // ---- vectoring CORDIC (reused), data delayed beside it ----
   private val cordic = Module(new Cordic(p.cordic))
@@ -194,7 +204,7 @@ class AdaptiveCorrector(val p: AdaptParams, withReadBack: Boolean = false) exten
   private val dvLast = RegInit(0.S(F.W))
   private val lockMax = (1L << p.lockBits) - 1
   private val lockCnt = RegInit(0.U(p.lockBits.W))
-  when(q4V) {
+  when(running(q4V)) {
     eLast := PllMath.sub2(q4Phic, theta, vel, F)
     dvLast := PllMath.sub2(q4Phic, prevPhic, vel, F)
     theta := PllMath.add2ShR(theta, vel, eLast, p.pllKp, F)
@@ -203,15 +213,16 @@ class AdaptiveCorrector(val p: AdaptParams, withReadBack: Boolean = false) exten
     lockCnt := Mux(PllMath.absBelow(eLast, F - p.lockShift), Mux(lockCnt === lockMax.U, lockCnt, lockCnt + 1.U), 0.U)
   }
   private val q5E = eLast
-  private val q5En = valid(q4V && lockCnt === lockMax.U && !PllMath.absBelow(vel, F - p.minSpeedShift))
+  private val q5En = valid(running(q4V) && lockCnt === lockMax.U && !PllMath.absBelow(vel, F - p.minSpeedShift))
   tbl.foreach(_.update())
+  for (x <- preset; ld <- load) when(ld) { tableSum := x.tableSum }
 
   // ---- read-back: registered copies (one more load on each register, no path back into the loops) ----
   readBack.foreach { rb =>
     val l = rb.learned
     l.offsetSin := reg(os); l.offsetCos := reg(oc); l.gainSin := reg(ks); l.gainCos := reg(kc); l.phase := reg(t)
     val updates = RegInit(0.U(32.W))
-    when(vV && updates =/= AdaptLearned.MaxUpdates.U) { updates := updates + 1.U }
+    when(running(vV) && updates =/= AdaptLearned.MaxUpdates.U) { updates := updates + 1.U }
     l.updates := updates
     l.locked := valid(lockCnt === lockMax.U)
     l.tableSum := reg(tableSum)
@@ -299,6 +310,13 @@ class AdaptiveCorrector(val p: AdaptParams, withReadBack: Boolean = false) exten
         for (bk <- banks.indices) { wAddr(bk) := q7R(bk); wOld(bk) := old(bk); wData(bk) := t(bk) }
       }
       when(wV) { tableSum := fit(tableSum +& (wData(0) -& wOld(0)) +& (wData(1) -& wOld(1)), tableSum.getWidth) }
+      // the preset pair: one more registered source of the write port (its sum unchanged: the load sets the sum)
+      for (x <- preset; pw <- presetWrite) {
+        wV := q7V || pw
+        when(pw) {
+          for ((bk, v) <- banks.indices.zip(Seq(x.even, x.odd))) { wAddr(bk) := x.pair(bw - 1, 0); wOld(bk) := v; wData(bk) := v }
+        }
+      }
     }
   }
 }

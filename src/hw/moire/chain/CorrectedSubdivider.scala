@@ -67,6 +67,11 @@ class CorrectedSubdivider(val p: CorrectedSubdivParams, withReadBack: Boolean = 
     x <> rb
     x
   }
+  val preset: Option[moire.adapt.AdaptPresetIO] = ac.preset.map { pr =>
+    val x = IO(new moire.adapt.AdaptPresetIO(p.adapt))
+    pr <> x
+    x
+  }
 }
 
 /** Codes on the ADC pins in one clock. */

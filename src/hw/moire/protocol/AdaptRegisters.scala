@@ -2,7 +2,7 @@ package moire.protocol
 
 /** The adaptive corrector's read-back registers (board design `corrected` only; other designs read 0 there): what it
   * has learned, in its own fixed-point formats, which `adapt_format` and `adapt_size` describe, and the harmonic table
-  * through an index register and a data register. Read-only except `adapt_table_index`. Formats: docs/board-de2-115.md.
+  * through an index register and a data register. Read-only except `adapt_table_index`, `adapt_control` and the presets (0xf5-0xfc), which restore learned values. Formats: docs/board-de2-115.md.
   */
 object AdaptRegisters {
   val OffsetSin: Reg = Reg(0xE8, "adapt_offset_sin", false, "sin offset, ADC codes with adapt_format.offset_frac fractional bits, two's complement")
@@ -17,9 +17,23 @@ object AdaptRegisters {
   val TableData: Reg = Reg(0xF1, "adapt_table_data", false, "table entry at adapt_table_index, 2^-fine_bits signal period, two's complement")
   val Format: Reg = Reg(0xF2, "adapt_format", false, "bits 0-7 offset_frac, 8-15 gain_frac, 16-23 phase_frac, 24-31 fine_bits; 0: no corrector")
   val Size: Reg = Reg(0xF3, "adapt_size", false, "bits 0-7 ADC bits, 8-15 output bits, 16-31 table entries; 0: no corrector")
+  val Control: Reg = Reg(0xF4, "adapt_control", true, "bit0 hold (estimates, statistics, PLL and table stand still; the correction goes on); with hold, write bit1 = load the presets into the corrector, bit2 = write the preset pair; reads bit0")
+  val PresetOffsetSin: Reg = Reg(0xF5, "adapt_preset_offset_sin", true, "preset of adapt_offset_sin (its format), loaded by adapt_control bit1")
+  val PresetOffsetCos: Reg = Reg(0xF6, "adapt_preset_offset_cos", true, "preset of adapt_offset_cos")
+  val PresetGainSin: Reg = Reg(0xF7, "adapt_preset_gain_sin", true, "preset of adapt_gain_sin")
+  val PresetGainCos: Reg = Reg(0xF8, "adapt_preset_gain_cos", true, "preset of adapt_gain_cos")
+  val PresetPhase: Reg = Reg(0xF9, "adapt_preset_phase", true, "preset of adapt_phase")
+  val PresetTableSum: Reg = Reg(0xFA, "adapt_preset_table_sum", true, "preset of adapt_table_sum")
+  val PresetEven: Reg = Reg(0xFB, "adapt_preset_even", true, "table entry 2k, k = adapt_table_index / 2, written by adapt_control bit2")
+  val PresetOdd: Reg = Reg(0xFC, "adapt_preset_odd", true, "table entry 2k + 1, written with adapt_preset_even")
+  /** Bits of adapt_control. */
+  object AdaptBit { val Hold = 0; val Load = 1; val TableWrite = 2 }
+  /** The presets of the learned values, by the register each restores. */
+  val presets: Seq[(Reg, Reg)] = Seq(OffsetSin -> PresetOffsetSin, OffsetCos -> PresetOffsetCos, GainSin -> PresetGainSin,
+    GainCos -> PresetGainCos, Phase -> PresetPhase, TableSum -> PresetTableSum)
   /** The learned values besides the table (saved by `board-reg --save`). */
   val learned: Seq[Reg] = Seq(OffsetSin, OffsetCos, GainSin, GainCos, Phase, Updates, Locked, TableSum)
-  val all: Seq[Reg] = learned ++ Seq(TableIndex, TableData, Format, Size)
+  val all: Seq[Reg] = learned ++ Seq(TableIndex, TableData, Format, Size, Control) ++ presets.map(_._2) ++ Seq(PresetEven, PresetOdd)
 
   def u32(v: Long): Long = v & StreamV1.MaxU32
   def signed(v: Long): Long = if (v >= (1L << 31)) v - (1L << 32) else v
