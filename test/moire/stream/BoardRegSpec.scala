@@ -113,7 +113,7 @@ class BoardRegSpec extends AnyFlatSpec with Matchers {
     } finally os.remove.all(dir)
   }
 
-  "board-reg --save / --load with the adaptive corrector" should "keep its learned values, compare them on load and write none" in PtyPair { pty =>
+  "board-reg --save / --load with the adaptive corrector" should "keep its learned values and restore them on load, read back" in PtyPair { pty =>
     import moire.protocol.AdaptRegisters
     val ap = moire.adapt.AdaptParams(harmonicEntries = 8)
     val layout = Map(AdaptRegisters.Format.addr -> moire.adapt.AdaptLearned.format(ap), AdaptRegisters.Size.addr -> moire.adapt.AdaptLearned.size(ap))
@@ -147,14 +147,30 @@ class BoardRegSpec extends AnyFlatSpec with Matchers {
       all.init.map(_.split("\\s+")(1)) shouldBe Registers.all.map(_.name) ++ AdaptRegisters.learned.map(_.name)
       all.find(_.contains("adapt_phase")).get should endWith(s"signed ${learned.phase}")
       all.last shouldBe "corrector: offsets 61.50 / -20.00 codes, amplitudes 1741.0 / 1650.0 codes (sin/cos 1.0552), phase error -4.000 deg; table: --save"
-      // the same corrector, learned a little differently: compared, named, not written
+      // the same corrector, learned a little differently (or reset): held, restored from the file, read back, released
       val moved = learned.copy(offsetSin = learned.offsetSin + 4096, table = table.updated(2, 3100L))
       val b = new FakeBoard(pty, corrector(moved), adaptTable = moved.tableWords.toIndexedSeq)
       val loaded = try run(pty, _.copy(load = Some(file.toString))) finally b.close()
-      loaded(1) should startWith("learned values are read-only on the board (kept in the file for the record, not written): the board's differ: " +
-        "offset_sin 61.5000 codes in the file, 62.5000 codes on the board; table: 1 of 8 entries differ, by up to")
-      b.commands.filter(_.write).map(_.addr).toSet shouldBe (Set(Registers.Decimation.addr, AdaptRegisters.TableIndex.addr) ++ BoardRegFile.Harmonic)
-      b.registers(AdaptRegisters.OffsetSin.addr) shouldBe moved.offsetSin
+      loaded(1) shouldBe "restored the corrector's learned values (offsets, gains, phase, 8 table entries and their sum), each read back; " +
+        "learning goes on from them"
+      for ((r, _) <- AdaptRegisters.presets) b.registers(r.addr) shouldBe learned.words.toMap.apply(r)
+      b.adaptTableNow shouldBe learned.tableWords
+      val adaptWrites = b.commands.filter(c => c.write && c.addr >= AdaptRegisters.Control.addr).map(c => c.addr -> c.value)
+      adaptWrites.head shouldBe (AdaptRegisters.Control.addr -> 1L) // held before the first preset
+      adaptWrites.last shouldBe (AdaptRegisters.Control.addr -> 0L) // and released after the read-back
+      adaptWrites.count(_ == (AdaptRegisters.Control.addr -> 5L)) shouldBe 4 // a table pair each
+      adaptWrites.count(_ == (AdaptRegisters.Control.addr -> 3L)) shouldBe 1 // one load
+      b.registers(AdaptRegisters.TableIndex.addr) shouldBe 0 // put back as it was
+      // a held corrector stays held
+      val held = new FakeBoard(pty, corrector(moved) + (AdaptRegisters.Control.addr -> 1L), adaptTable = moved.tableWords.toIndexedSeq)
+      try run(pty, _.copy(load = Some(file.toString)))(1) should endWith("the corrector stays held, as it was") finally held.close()
+      held.registers(AdaptRegisters.Control.addr) shouldBe 1
+      // a bitstream from before the preset registers: one line, nothing learned changed
+      val old = new FakeBoard(pty, corrector(moved), adaptTable = moved.tableWords.toIndexedSeq, presets = false)
+      val e0 = try intercept[MoireError](run(pty, _.copy(load = Some(file.toString)))) finally old.close()
+      e0.getMessage shouldBe s"${pty.host}: wrote 0x00000001 to adapt_control, the board kept 0x00000000: " +
+        "does the board's bitstream have adapt_control and the preset registers (0xf4-0xfc)?"
+      old.adaptTableNow shouldBe moved.tableWords
       // a corrector of another size, or none: another kind of board, nothing written
       val other = Map(AdaptRegisters.Size.addr -> moire.adapt.AdaptLearned.size(ap.copy(harmonicEntries = 16)))
       for ((regs, what) <- Seq(corrector(learned) ++ other -> "adapt_size 0x0008100c in the file, 0x0010100c on the board",

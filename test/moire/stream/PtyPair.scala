@@ -99,13 +99,19 @@ final case class Sent(frame: RecordFrame, wire: Array[Byte], damaged: Boolean)
   * registers ([[Registers.writable]], the harmonic window only up to `harmonicSlots`), others reply unchanged;
   * bad commands count in cmd_errors. `stream` sends record frames; seq is shared with the replies.
   * Several boards may follow one another on a pair (close one before making the next).
-  * `adaptTable`: the adaptive corrector's table (adapt_table_data shows the entry at adapt_table_index); empty: none.
+  * `adaptTable`: the adaptive corrector's table (adapt_table_data shows the entry at adapt_table_index; adapt_control
+  * and the presets restore it and the learned values as the board does, unless `presets` is false: a bitstream from
+  * before them); empty: none.
   * `streamWhen`: the stream starts (if `stream` was called) after the reply to the first command it
   * accepts; None: at once.
   */
 final class FakeBoard(pty: PtyPair, initial: Map[Int, Long], harmonicSlots: Int = 0,
-                      streamWhen: Option[Command => Boolean] = None, adaptTable: IndexedSeq[Long] = IndexedSeq.empty) extends AutoCloseable {
+                      streamWhen: Option[Command => Boolean] = None, adaptTable: IndexedSeq[Long] = IndexedSeq.empty,
+                      presets: Boolean = true) extends AutoCloseable {
   private val regs = mutable.Map(initial.toSeq: _*)
+  private val table = mutable.ArrayBuffer.from(adaptTable)
+  /** The corrector's table now (changed by preset pair writes). */
+  def adaptTableNow: Seq[Long] = synchronized(table.toSeq)
   private var seq = 0
   private val cmdDecoder = new CommandDecoder
   private val cmds = new ConcurrentLinkedQueue[Command]
@@ -120,7 +126,20 @@ final class FakeBoard(pty: PtyPair, initial: Map[Int, Long], harmonicSlots: Int 
 
   private def writable(a: Int): Boolean =
     if (a == AdaptRegisters.TableIndex.addr) adaptTable.nonEmpty
+    else if (a >= AdaptRegisters.Control.addr && a <= AdaptRegisters.PresetOdd.addr) adaptTable.nonEmpty && presets
     else if (a >= Registers.HarmonicBase) a < Registers.HarmonicBase + 4 * harmonicSlots && (a & 3) != 3 else Registers.writable(a)
+
+  /** adapt_control as the corrected board does it: hold kept, with hold the load and table-pair strobes. */
+  private def preset(v: Long): Unit = {
+    import AdaptRegisters._
+    def on(b: Int) = ((v >> b) & 1) == 1
+    regs(Control.addr) = v & 1
+    if (on(AdaptBit.Hold) && on(AdaptBit.TableWrite)) {
+      val k = (regs.getOrElse(TableIndex.addr, 0L) / 2).toInt
+      table(2 * k) = regs.getOrElse(PresetEven.addr, 0L); table(2 * k + 1) = regs.getOrElse(PresetOdd.addr, 0L)
+    }
+    if (on(AdaptBit.Hold) && on(AdaptBit.Load)) for ((r, pr) <- AdaptRegisters.presets) regs(r.addr) = regs.getOrElse(pr.addr, 0L)
+  }
 
   private def send(bytes: Array[Byte]): Unit = synchronized { pty.boardOut.write(bytes); pty.boardOut.flush() }
 
@@ -135,7 +154,8 @@ final class FakeBoard(pty: PtyPair, initial: Map[Int, Long], harmonicSlots: Int 
         synchronized {
           regs(Registers.CmdErrors.addr) = cmdDecoder.errors
           if (c.write && writable(c.addr)) regs(c.addr) = if (c.addr == AdaptRegisters.TableIndex.addr) c.value % adaptTable.size else c.value
-          if (adaptTable.nonEmpty) regs(AdaptRegisters.TableData.addr) = adaptTable(regs.getOrElse(AdaptRegisters.TableIndex.addr, 0L).toInt)
+          if (c.write && c.addr == AdaptRegisters.Control.addr && writable(c.addr)) preset(c.value)
+          if (adaptTable.nonEmpty) regs(AdaptRegisters.TableData.addr) = table(regs.getOrElse(AdaptRegisters.TableIndex.addr, 0L).toInt)
           send(Encoder.frame(RegisterReply(seq, c.addr, regs.getOrElse(c.addr, 0L))))
           seq = (seq + 1) & 0xFFFF
         }

@@ -6,7 +6,7 @@ import moire.protocol.{Registers, StreamV1}
   * turntable compensator's harmonic slots, `h<slot>_<order|c|phi>`) in one JSON file (docs/recording.md), with the
   * board's model (id, stream version, ADC clock and format, counts per period, records per frame) to check on load.
   * A harmonic register the file does not list is 0 (slot off): load writes every slot, so the board ends as saved.
-  * A board with the adaptive corrector adds what it has learned ([[BoardRegLearned]]): kept and compared, not written.
+  * A board with the adaptive corrector adds what it has learned ([[BoardRegLearned]]), restored on load.
   */
 object BoardRegFile {
   val Format = "moire-board-registers v1"
@@ -81,9 +81,7 @@ object BoardRegFile {
     }
     val note = (learned, onBoard) match {
       case (Some(l), Some(_)) =>
-        val d = l.differences(BoardRegLearned.read(c, ask, port).get)
-        Some("learned values are read-only on the board (kept in the file for the record, not written): " +
-          (if (d.isEmpty) "the board's are the same" else "the board's differ: " + d.mkString("; ")))
+        Some(BoardRegLearned.restore(c, ask, port, l))
       case (None, Some(_)) => Some("the file holds no learned values (saved from a board without the corrector's read-back)")
       case _ => None
     }

@@ -5,9 +5,8 @@ import moire.protocol.AdaptRegisters.{Layout, Readout}
 
 /** The adaptive corrector's learned values in a `board-reg --save` file (section `learned`, docs/recording.md): the
   * u32 words of its read-back registers, the harmonic table entry by entry, and a `readout` in codes and degrees for
-  * the reader (derived from the words; not read back). They are read-only on the board: `--load` checks that the
-  * board has the same corrector (adapt_format, adapt_size), compares the board's values with the file's and writes
-  * none of them.
+  * the reader (derived from the words; not read back). `--load` checks that the board has the same corrector
+  * (adapt_format, adapt_size), then restores them through the preset registers ([[BoardRegLearned.restore]]).
   */
 final case class BoardRegLearned(format: Long, size: Long, layout: Layout, words: Map[Reg, Long], table: Seq[Long]) {
   def readout: Readout = AdaptRegisters.readout(layout, words, table)
@@ -61,6 +60,45 @@ object BoardRegLearned {
     }
     if (l.entries > 0) ask(c.write(AdaptRegisters.TableIndex.addr, index))
     BoardRegLearned(f, s, l, words, table)
+  }
+
+  /** Writes `l` back: holds the corrector (adapt_control bit 0), writes the presets and the table pair by pair, loads
+    * them, reads everything back and compares, then puts adapt_control back as it was (learning goes on unless it was
+    * held). The update count and the lock are the board's own (not restored). A line on what was done.
+    */
+  def restore(c: BoardClient, ask: (=> Long) => Long, port: String, l: BoardRegLearned): String = {
+    import AdaptRegisters._
+    // adapt_control answers with its hold bit only
+    def put(r: Reg, v: Long): Unit = {
+      val got = ask(c.write(r.addr, v))
+      if (got != (if (r == Control) v & 1 else v)) throw new StreamError(f"$port: wrote 0x$v%08x to ${r.name}, the board kept 0x$got%08x: " +
+        "does the board's bitstream have adapt_control and the preset registers (0xf4-0xfc)?")
+    }
+    val before = ask(c.read(Control))
+    val index = ask(c.read(TableIndex))
+    val hold = 1L << AdaptBit.Hold
+    put(Control, hold)
+    var done = false
+    try {
+      for ((r, pr) <- presets) put(pr, l.words(r))
+      for (k <- 0 until l.table.size / 2) {
+        put(TableIndex, 2L * k); put(PresetEven, l.table(2 * k)); put(PresetOdd, l.table(2 * k + 1))
+        put(Control, hold | (1L << AdaptBit.TableWrite))
+      }
+      put(Control, hold | (1L << AdaptBit.Load))
+      if (l.table.nonEmpty) put(TableIndex, index)
+      val back = read(c, ask, port).getOrElse(throw new StreamError(s"$port: the corrector's read-back vanished during the load"))
+      val sum = if (back.words(TableSum) != l.words(TableSum)) Seq(s"adapt_table_sum ${signed(l.words(TableSum))} in the file, " +
+        s"${signed(back.words(TableSum))} on the board") else Nil
+      val d = l.differences(back) ++ sum
+      if (d.nonEmpty) throw new StreamError(s"$port: the learned values read back differ from the file's after the load: ${d.mkString("; ")}")
+      done = true
+    } finally {
+      // adapt_control as it was; after a failure, the failure is what is reported
+      if (done) put(Control, before & hold) else try put(Control, before & hold) catch { case _: Exception => }
+    }
+    s"restored the corrector's learned values (offsets, gains, phase, ${l.table.size} table entries and their sum), each read back; " +
+      (if ((before & hold) != 0) "the corrector stays held, as it was" else "learning goes on from them")
   }
 
   /** The `learned` section of a file, every word checked. */
