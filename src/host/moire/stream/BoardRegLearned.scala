@@ -72,7 +72,7 @@ object BoardRegLearned {
     def put(r: Reg, v: Long): Unit = {
       val got = ask(c.write(r.addr, v))
       if (got != (if (r == Control) v & 1 else v)) throw new StreamError(f"$port: wrote 0x$v%08x to ${r.name}, the board kept 0x$got%08x: " +
-        "does the board's bitstream have adapt_control and the preset registers (0xf4-0xfc)?")
+        "a value wider than the register, or a bitstream without adapt_control and the preset registers (0xf4-0xfc)")
     }
     val before = ask(c.read(Control))
     val index = ask(c.read(TableIndex))
