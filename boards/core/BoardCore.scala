@@ -274,22 +274,22 @@ class BoardCore(val p: BoardParams) extends Module {
     val index = RegInit(0.U(rb.tableIndex.getWidth.W))
     when(written(TableIndex)) { index := cmd.bits.value(rb.tableIndex.getWidth - 1, 0) }
     rb.tableIndex := index
-    // the preset port: hold kept, the strobes a clock long, the presets kept in their widths (read back sign-extended)
+    // the preset port: hold kept, the strobes a clock long, the presets kept in their widths; the presets are write-only
+    // (read 0: no entry in any read mux; board-reg --load checks what they loaded through the read-back)
     val hold = RegInit(false.B)
     when(written(Control)) { hold := cmd.bits.value(AdaptBit.Hold) }
     pr.hold := hold
     pr.load := RegNext(written(Control) && cmd.bits.value(AdaptBit.Load), false.B)
     pr.tableWrite := RegNext(written(Control) && cmd.bits.value(AdaptBit.TableWrite), false.B)
     pr.pair := (index >> 1).pad(pr.pair.getWidth)
-    def kept(r: moire.protocol.Reg, port: SInt): UInt = {
+    def kept(r: moire.protocol.Reg, port: SInt): Unit = {
       val v = RegInit(0.S(port.getWidth.W))
       when(written(r)) { v := cmd.bits.value(port.getWidth - 1, 0).asSInt }
       port := v
-      v.pad(32).asUInt
     }
-    val presetWords = Seq(PresetOffsetSin -> pr.offsetSin, PresetOffsetCos -> pr.offsetCos, PresetGainSin -> pr.gainSin,
+    Seq(PresetOffsetSin -> pr.offsetSin, PresetOffsetCos -> pr.offsetCos, PresetGainSin -> pr.gainSin,
       PresetGainCos -> pr.gainCos, PresetPhase -> pr.phase, PresetTableSum -> pr.tableSum, PresetEven -> pr.even, PresetOdd -> pr.odd)
-      .map { case (r, port) => r.addr -> kept(r, port) }
+      .foreach { case (r, port) => kept(r, port) }
     val l = rb.learned
     def word(v: SInt): UInt = v.pad(32).asUInt
     val values = Seq(OffsetSin -> word(l.offsetSin), OffsetCos -> word(l.offsetCos),
@@ -302,7 +302,7 @@ class BoardCore(val p: BoardParams) extends Module {
       Format -> moire.adapt.AdaptLearned.format(ap).U(32.W),
       Size -> moire.adapt.AdaptLearned.size(ap).U(32.W))
     val hits = values.map { case (r, _) => cmd.bits.addr === r.addr.U }
-    (Seq(TableIndex.addr -> index.pad(32), Control.addr -> Cat(0.U(31.W), hold)) ++ presetWords, Seq((VecInit(hits).asUInt.orR, RegNext(Mux1H(hits, values.map(_._2))))))
+    (Seq(TableIndex.addr -> index.pad(32), Control.addr -> Cat(0.U(31.W), hold)), Seq((VecInit(hits).asUInt.orR, RegNext(Mux1H(hits, values.map(_._2))))))
   }
   // The reply reads the register one clock later, so a write answers with the new value. The address is decoded
   // to one select per register beside the command and the selected value registered: a reply takes 2 clocks.

@@ -156,7 +156,8 @@ final class FakeBoard(pty: PtyPair, initial: Map[Int, Long], harmonicSlots: Int 
           if (c.write && writable(c.addr)) regs(c.addr) = if (c.addr == AdaptRegisters.TableIndex.addr) c.value % adaptTable.size else c.value
           if (c.write && c.addr == AdaptRegisters.Control.addr && writable(c.addr)) preset(c.value)
           if (adaptTable.nonEmpty) regs(AdaptRegisters.TableData.addr) = table(regs.getOrElse(AdaptRegisters.TableIndex.addr, 0L).toInt)
-          send(Encoder.frame(RegisterReply(seq, c.addr, regs.getOrElse(c.addr, 0L))))
+          val shown = if (AdaptRegisters.writeOnly.exists(_.addr == c.addr)) 0L else regs.getOrElse(c.addr, 0L)
+          send(Encoder.frame(RegisterReply(seq, c.addr, shown)))
           seq = (seq + 1) & 0xFFFF
         }
         if (!go && streamWhen.exists(_(c))) go = true

@@ -2,7 +2,7 @@ package moire.protocol
 
 /** The adaptive corrector's read-back registers (board design `corrected` only; other designs read 0 there): what it
   * has learned, in its own fixed-point formats, which `adapt_format` and `adapt_size` describe, and the harmonic table
-  * through an index register and a data register. Read-only except `adapt_table_index`, `adapt_control` and the presets (0xf5-0xfc), which restore learned values. Formats: docs/board-de2-115.md.
+  * through an index register and a data register. Read-only except `adapt_table_index`, `adapt_control` and the presets (0xf5-0xfc, write-only), which restore learned values. Formats: docs/board-de2-115.md.
   */
 object AdaptRegisters {
   val OffsetSin: Reg = Reg(0xE8, "adapt_offset_sin", false, "sin offset, ADC codes with adapt_format.offset_frac fractional bits, two's complement")
@@ -28,6 +28,8 @@ object AdaptRegisters {
   val PresetOdd: Reg = Reg(0xFC, "adapt_preset_odd", true, "table entry 2k + 1, written with adapt_preset_even")
   /** Bits of adapt_control. */
   object AdaptBit { val Hold = 0; val Load = 1; val TableWrite = 2 }
+  /** The presets (write-only: they read 0, and a write answers 0; what they loaded reads back at 0xe8-0xf1). */
+  val writeOnly: Set[Reg] = Set(PresetOffsetSin, PresetOffsetCos, PresetGainSin, PresetGainCos, PresetPhase, PresetTableSum, PresetEven, PresetOdd)
   /** The presets of the learned values, by the register each restores. */
   val presets: Seq[(Reg, Reg)] = Seq(OffsetSin -> PresetOffsetSin, OffsetCos -> PresetOffsetCos, GainSin -> PresetGainSin,
     GainCos -> PresetGainCos, Phase -> PresetPhase, TableSum -> PresetTableSum)
