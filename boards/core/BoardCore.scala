@@ -282,9 +282,13 @@ class BoardCore(val p: BoardParams) extends Module {
     pr.load := RegNext(written(Control) && cmd.bits.value(AdaptBit.Load), false.B)
     pr.tableWrite := RegNext(written(Control) && cmd.bits.value(AdaptBit.TableWrite), false.B)
     pr.pair := (index >> 1).pad(pr.pair.getWidth)
+    // the presets take a registered copy of the command (a clock later): the command's registers get one load each
+    val late = RegNext(isWrite, false.B)
+    val lateAddr = RegNext(cmd.bits.addr)
+    val lateValue = RegNext(cmd.bits.value)
     def kept(r: moire.protocol.Reg, port: SInt): Unit = {
       val v = RegInit(0.S(port.getWidth.W))
-      when(written(r)) { v := cmd.bits.value(port.getWidth - 1, 0).asSInt }
+      when(late && lateAddr === r.addr.U) { v := lateValue(port.getWidth - 1, 0).asSInt }
       port := v
     }
     Seq(PresetOffsetSin -> pr.offsetSin, PresetOffsetCos -> pr.offsetCos, PresetGainSin -> pr.gainSin,
