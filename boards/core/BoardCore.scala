@@ -285,15 +285,15 @@ class BoardCore(val p: BoardParams) extends Module {
     // the presets take a registered copy of the command (a clock later): the command's registers get one load each
     val late = RegNext(isWrite, false.B)
     val lateAddr = RegNext(cmd.bits.addr)
-    val lateValue = RegNext(cmd.bits.value)
+    val presets = Seq(PresetOffsetSin -> pr.offsetSin, PresetOffsetCos -> pr.offsetCos, PresetGainSin -> pr.gainSin,
+      PresetGainCos -> pr.gainCos, PresetPhase -> pr.phase, PresetTableSum -> pr.tableSum, PresetEven -> pr.even, PresetOdd -> pr.odd)
+    val lateValue = RegNext(cmd.bits.value(presets.map(_._2.getWidth).max - 1, 0)) // only the bits a preset keeps
     def kept(r: moire.protocol.Reg, port: SInt): Unit = {
       val v = RegInit(0.S(port.getWidth.W))
       when(late && lateAddr === r.addr.U) { v := lateValue(port.getWidth - 1, 0).asSInt }
       port := v
     }
-    Seq(PresetOffsetSin -> pr.offsetSin, PresetOffsetCos -> pr.offsetCos, PresetGainSin -> pr.gainSin,
-      PresetGainCos -> pr.gainCos, PresetPhase -> pr.phase, PresetTableSum -> pr.tableSum, PresetEven -> pr.even, PresetOdd -> pr.odd)
-      .foreach { case (r, port) => kept(r, port) }
+    presets.foreach { case (r, port) => kept(r, port) }
     val l = rb.learned
     def word(v: SInt): UInt = v.pad(32).asUInt
     val values = Seq(OffsetSin -> word(l.offsetSin), OffsetCos -> word(l.offsetCos),
