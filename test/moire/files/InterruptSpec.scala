@@ -16,7 +16,10 @@ class InterruptSpec extends AnyFlatSpec with Matchers {
 
   /** Starts the CLI in a child JVM, waits until a temporary appears under `watch`, sends SIGINT; the exit code. */
   private def interrupt(watch: os.Path, args: String*): Int = {
-    val pb = new ProcessBuilder((Seq(javaBin, "-Xmx2g", "-cp", System.getProperty("java.class.path"), "moire.cli.Main") ++ args): _*)
+    // a job started in the background by a non-interactive shell inherits SIGINT ignored, and so would the child:
+    // perl (essential on Debian) puts the default action back and execs the JVM (same pid)
+    val restore = Seq("perl", "-e", "$SIG{INT} = 'DEFAULT'; exec @ARGV or die \"exec: $!\"")
+    val pb = new ProcessBuilder((restore ++ Seq(javaBin, "-Xmx2g", "-cp", System.getProperty("java.class.path"), "moire.cli.Main") ++ args): _*)
       .redirectOutput(ProcessBuilder.Redirect.DISCARD).redirectError(ProcessBuilder.Redirect.DISCARD)
     val p = pb.start()
     val deadline = System.nanoTime() + 120e9.toLong
