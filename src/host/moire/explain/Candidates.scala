@@ -62,21 +62,26 @@ final class Candidates(val engine: SignalEngine) {
     * (of `idx` when given: a fold), scaled to n.
     */
   def profile(sp: ModelSpec, stride: Int, idx: Array[Int] = null): Double = {
-    val resp = new ChannelResponse(sp); val o = new Array[Double](4)
-    val ms = new Array[Double](10); val mc = new Array[Double](10)
-    def acc(m: Array[Double], x1: Double, x2: Double, y: Double): Unit = {
-      m(0) += 1; m(1) += x1; m(2) += x2; m(3) += x1 * x1; m(4) += x1 * x2; m(5) += x2 * x2
-      m(6) += y; m(7) += y * x1; m(8) += y * x2; m(9) += y * y
+    val resp = new ChannelResponse(sp)
+    def acc(m: Array[Double], at: Int, x1: Double, x2: Double, y: Double): Unit = {
+      m(at) += 1; m(at + 1) += x1; m(at + 2) += x2; m(at + 3) += x1 * x1; m(at + 4) += x1 * x2; m(at + 5) += x2 * x2
+      m(at + 6) += y; m(at + 7) += y * x1; m(at + 8) += y * x2; m(at + 9) += y * y
     }
-    var k = 0; var cnt = 0; val end = if (idx == null) n else idx.length
-    while (k < end) {
-      val i = if (idx == null) k else idx(k)
-      val a = angle(i)
-      resp(freq(i), math.sin(a), math.cos(a), o)
-      acc(ms, o(0), o(1), repS(i) - termS(i))
-      acc(mc, o(2), o(3), repC(i) - termC(i))
-      cnt += 1; k += stride
+    val end = if (idx == null) n else idx.length
+    val cnt = (end + stride - 1) / stride
+    // the points q = 0, 1, ... at k = q * stride, in blocks on all cores
+    val sums = Par.sums(cnt, 20) { (lo, hi, m) =>
+      val o = new Array[Double](4); var q = lo
+      while (q < hi) {
+        val k = q * stride; val i = if (idx == null) k else idx(k)
+        val a = angle(i)
+        resp(freq(i), math.sin(a), math.cos(a), o)
+        acc(m, 0, o(0), o(1), repS(i) - termS(i))
+        acc(m, 10, o(2), o(3), repC(i) - termC(i))
+        q += 1
+      }
     }
+    val ms = sums.slice(0, 10); val mc = sums.slice(10, 20)
     def rss(m: Array[Double]): Double = {
       val a = Array(Array(m(0), m(1), m(2), 0, m(6)), Array(m(1), m(3), m(4), 0, m(7)), Array(m(2), m(4), m(5), 0, m(8)), Array(0.0, 0, 0, 1, 0))
       val x = Trajectory.solve4(a)
@@ -116,7 +121,7 @@ final class Candidates(val engine: SignalEngine) {
     val a1 = new Array[Double](n); val a2 = new Array[Double](n); val b1 = new Array[Double](n); val b2 = new Array[Double](n)
     fundamentals(sp, a1, a2, b1, b2)
     val cols = baseCols(a1, a2, b1, b2)
-    val ts = Array.tabulate(n)(i => repS(i) - termS(i)); val tcc = Array.tabulate(n)(i => repC(i) - termC(i))
+    val ts = Doubles.tabulate(n)(i => repS(i) - termS(i)); val tcc = Doubles.tabulate(n)(i => repC(i) - termC(i))
     val s = LinearFit.solve(cols, ts, tcc)
     LinearFit.addTo(ts, cols, s.beta, sinCh = true, -1.0); LinearFit.addTo(tcc, cols, s.beta, sinCh = false, -1.0) // now the residual
     Noise.fit(ts, tcc, noiseSlopes(sp), cens).m2ll
@@ -127,7 +132,7 @@ final class Candidates(val engine: SignalEngine) {
   /** Skew between the channels: needs several speeds, else it is a phase error. */
   def skew(): Option[Cand] = {
     if (spec.hasSkew) return None
-    val cols = baseCols(s1, s2, c1, c2) :+ Col(Array.tabulate(n)(i => -math.Pi * freq(i) * vs(i)), Array.tabulate(n)(i => math.Pi * freq(i) * vc(i)))
+    val cols = baseCols(s1, s2, c1, c2) :+ Col(Doubles.tabulate(n)(i => -math.Pi * freq(i) * vs(i)), Doubles.tabulate(n)(i => math.Pi * freq(i) * vc(i)))
     val s = LinearFit.solve(cols, resS, resC)
     if (!s.ok) return None
     val sd0 = math.sqrt(s.inv(6)(6) * (sumSq(resS) + sumSq(resC)) / (2.0 * n))

@@ -13,14 +13,17 @@ private[explain] final class ChannelResponse(sp: ModelSpec) {
   private val w = 2 * math.Pi * sp.skewS
 
   def apply(f: Double, sn: Double, cs: Double, out: Array[Double]): Unit = {
-    var gs = 1.0; var gc = 1.0; var ls = -0.5 * w * f; var lc = 0.5 * w * f
+    var gs = 1.0; var gc = 1.0
     if (!fcB.isInfinite) { val u = f / fcB; val g = 1 / math.sqrt(1 + u * u); gs *= g; gc *= g }
-    var lagS = 0.0; var lagC = 0.0
-    if (!fcS.isInfinite) { val u = f / fcS; gs /= math.sqrt(1 + u * u); lagS = math.atan(u) }
-    if (!fcC.isInfinite) { val u = f / fcC; gc /= math.sqrt(1 + u * u); lagC = math.atan(u) }
-    val m = 0.5 * (lagS + lagC); ls += m - lagS; lc += m - lagC
-    val cls = math.cos(ls); val sls = math.sin(ls); val clc = math.cos(lc); val slc = math.sin(lc)
-    out(0) = gs * (sn * cls + cs * sls); out(1) = gs * (cs * cls - sn * sls)
-    out(2) = gc * (sn * clc + cs * slc); out(3) = gc * (cs * clc - sn * slc)
+    val uS = if (fcS.isInfinite) 0.0 else f / fcS; val uC = if (fcC.isInfinite) 0.0 else f / fcC
+    val nS = math.sqrt(1 + uS * uS); val nC = math.sqrt(1 + uC * uC)
+    gs /= nS; gc /= nC
+    // the sin channel turns by l = (lagC - lagS) / 2 - w f / 2 and the cos channel by -l; l's half of the lag difference
+    // from exp(i (lagC - lagS)) = (1 + uC uS + i (uC - uS)) / (nS nC) by the half-angle formulas (no atan)
+    val cd = (1 + uC * uS) / (nS * nC); val ch = math.sqrt(0.5 * (1 + cd)); val sh = (uC - uS) / (nS * nC) / (2 * ch)
+    var cl = ch; var sl = sh
+    if (w != 0) { val cw = math.cos(0.5 * w * f); val sw = math.sin(0.5 * w * f); cl = ch * cw + sh * sw; sl = sh * cw - ch * sw }
+    out(0) = gs * (sn * cl + cs * sl); out(1) = gs * (cs * cl - sn * sl)
+    out(2) = gc * (sn * cl - cs * sl); out(3) = gc * (cs * cl + sn * sl)
   }
 }

@@ -36,7 +36,7 @@ object Identify {
     var m = 0.0; var i = 0
     while (i < e.n) { m = math.max(m, math.abs(e.freq(i))); i += 1 }
     def u(i: Int) = if (m > 0) (e.freq(i) / m) * (e.freq(i) / m) else 0.0
-    IndexedSeq(Col(Array.tabulate(e.n)(i => e.us(i) * u(i)), null), Col(null, Array.tabulate(e.n)(i => e.uc(i) * u(i))))
+    IndexedSeq(Col(Doubles.tabulate(e.n)(i => e.us(i) * u(i)), null), Col(null, Doubles.tabulate(e.n)(i => e.uc(i) * u(i))))
   }
 
   private def m2ll(e: SignalEngine, cols: IndexedSeq[Col]): Option[Double] = {

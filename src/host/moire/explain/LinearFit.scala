@@ -11,27 +11,11 @@ final case class Col(s: Array[Double], c: Array[Double])
 final case class LinSol(beta: Array[Double], inv: Array[Array[Double]], ok: Boolean)
 
 object LinearFit {
-  /** a . b over all samples, or over the samples `idx` (a fold) when it is not null. */
-  private def dot(a: Array[Double], b: Array[Double], idx: Array[Int]): Double = {
-    if (a == null || b == null) return 0.0
-    var s = 0.0; var i = 0
-    if (idx == null) { val n = a.length; while (i < n) { s += a(i) * b(i); i += 1 } }
-    else { val n = idx.length; while (i < n) { val j = idx(i); s += a(j) * b(j); i += 1 } }
-    s
-  }
-
   /** The fit on all samples, or on the samples `idx` (a fold, without copying the columns). */
   def solve(cols: IndexedSeq[Col], ys: Array[Double], yc: Array[Double], idx: Array[Int] = null): LinSol = {
-    val k = cols.length
-    val g = Array.ofDim[Double](k, k); val r = new Array[Double](k)
-    for (i <- 0 until k) {
-      r(i) = dot(cols(i).s, ys, idx) + dot(cols(i).c, yc, idx)
-      for (j <- 0 to i) { val v = cross(cols(i), cols(j), idx); g(i)(j) = v; g(j)(i) = v }
-    }
+    val (g, r) = Gram.of(cols, ys, yc, idx)
     normal(g, r)
   }
-
-  private[explain] def cross(a: Col, b: Col, idx: Array[Int]): Double = dot(a.s, b.s, idx) + dot(a.c, b.c, idx)
 
   /** Solves the normal equations g beta = r with column scaling. */
   private[explain] def normal(g: Array[Array[Double]], r: Array[Double]): LinSol = {
@@ -66,13 +50,15 @@ object LinearFit {
   def rss(cols: IndexedSeq[Col], beta: Array[Double], y: Array[Double], sinCh: Boolean): Double = {
     val use = cols.indices.filter(k => (if (sinCh) cols(k).s else cols(k).c) != null && beta(k) != 0).toArray
     val a = use.map(k => if (sinCh) cols(k).s else cols(k).c); val b = use.map(beta(_))
-    var sum = 0.0; var i = 0
-    while (i < y.length) {
-      var r = y(i); var k = 0
-      while (k < a.length) { r -= b(k) * a(k)(i); k += 1 }
-      sum += r * r; i += 1
+    Par.sum(y.length) { (lo, hi) =>
+      var sum = 0.0; var i = lo
+      while (i < hi) {
+        var r = y(i); var k = 0
+        while (k < a.length) { r -= b(k) * a(k)(i); k += 1 }
+        sum += r * r; i += 1
+      }
+      sum
     }
-    sum
   }
 
   /** out = sum beta_i * column_i on one channel (sin when `sinCh`). */
@@ -97,12 +83,14 @@ object LinearFit {
 
   /** out += sign * sum beta_i * column_i on one channel. */
   def addTo(out: Array[Double], cols: IndexedSeq[Col], beta: Array[Double], sinCh: Boolean, sign: Double): Unit = {
-    val n = out.length
-    var k = 0
-    while (k < cols.length) {
-      val a = if (sinCh) cols(k).s else cols(k).c; val b = sign * beta(k)
-      if (a != null && b != 0) { var i = 0; while (i < n) { out(i) += b * a(i); i += 1 } }
-      k += 1
+    // each sample gets the columns' parts in column order, as one thread would add them
+    Par.blocks(out.length) { (lo, hi) =>
+      var k = 0
+      while (k < cols.length) {
+        val a = if (sinCh) cols(k).s else cols(k).c; val b = sign * beta(k)
+        if (a != null && b != 0) { var i = lo; while (i < hi) { out(i) += b * a(i); i += 1 } }
+        k += 1
+      }
     }
   }
 }
@@ -124,13 +112,22 @@ final class ColGroups(make: IndexedSeq[() => IndexedSeq[Col]], keep: Boolean, he
   /** The least-squares fit over all groups' columns (the same numbers as `LinearFit.solve` on them all). */
   def solve(ys: Array[Double], yc: Array[Double]): LinSol = {
     val n = make.size
+    // held groups: all their products in one pass over the samples; groups made again: a pass per pair of groups
+    if (keep) {
+      val all = (0 until n).map(apply)
+      at = all.map(_.size).scanLeft(0)(_ + _).toArray
+      val (g, r) = Gram.of(all.flatten, ys, yc)
+      return LinearFit.normal(g, r)
+    }
     val blocks = Array.ofDim[Array[Array[Double]]](n, n); val rs = new Array[Array[Double]](n)
     for (i <- 0 until n) {
       val ci = apply(i)
-      rs(i) = ci.map(c => LinearFit.cross(c, Col(ys, yc), null)).toArray
       for (j <- 0 to i) {
         val cj = if (j == i) ci else apply(j)
-        blocks(i)(j) = Array.tabulate(ci.size, cj.size)((a, b) => LinearFit.cross(ci(a), cj(b), null))
+        // the products of the pair (i, j): the Gram of ci ++ cj, its off-diagonal block
+        val (g, r) = Gram.of(ci ++ (if (j == i) IndexedSeq() else cj), ys, yc)
+        if (j == i) rs(i) = r
+        blocks(i)(j) = Array.tabulate(ci.size, cj.size)((a, b) => if (j == i) g(a)(b) else g(a)(ci.size + b))
       }
     }
     at = rs.map(_.length).scanLeft(0)(_ + _)

@@ -143,7 +143,7 @@ object Replicate {
         val b = e.sol.beta.slice(at, at + tcols.size); val h = 0.05
         val up = tau * (1 + h); val dn = tau * (1 - h)
         // the warm-up's fitted shape at tau (1 + h) less at tau (1 - h), sample by sample (its columns w, w, u w, u w)
-        def d(sinCh: Boolean) = Array.tabulate(e.n) { i =>
+        def d(sinCh: Boolean) = Doubles.tabulate(e.n) { i =>
           val wu = math.exp(-i / e.fs / up); val wd = math.exp(-i / e.fs / dn)
           val p = if (sinCh) b(0) * wu + b(2) * (e.us(i) * wu) else b(1) * wu + b(3) * (e.uc(i) * wu)
           val q = if (sinCh) b(0) * wd + b(2) * (e.us(i) * wd) else b(1) * wd + b(3) * (e.uc(i) * wd)

@@ -27,7 +27,7 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
   val railLo: Double = -1.0
   val railHi: Double = (rec.adc.half - (1 << coarseBits)) * lsb
   /** Time from the record's middle (s), made when a term needs it. */
-  def tc: Array[Double] = Array.tabulate(n)(i => (i - 0.5 * (n - 1)) / fs)
+  def tc: Array[Double] = Doubles.tabulate(n)(i => (i - 0.5 * (n - 1)) / fs)
   val ones: Array[Double] = Array.fill(n)(1.0)
   val lnN: Double = math.log(2.0 * n)
 
@@ -84,8 +84,8 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
   def termS(i: Int): Double = repS(i) - resS(i) - base(0) - us(i)
   def termC(i: Int): Double = repC(i) - resC(i) - base(3) - uc(i)
   /** The model's prediction (not stored: the repaired data less the residual), as new arrays. */
-  def predS: Array[Double] = Array.tabulate(n)(i => repS(i) - resS(i))
-  def predC: Array[Double] = Array.tabulate(n)(i => repC(i) - resC(i))
+  def predS: Array[Double] = Doubles.tabulate(n)(i => repS(i) - resS(i))
+  def predC: Array[Double] = Doubles.tabulate(n)(i => repC(i) - resC(i))
   def params: Int = 6 + traj.params + 2 + spec.extraParams
   def bic: Double = noise.m2ll + params * lnN
   /** The rms of the residual over the samples in the fit. */
@@ -209,8 +209,10 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
   private def setFundamentals(): Unit = {
     if (!spec.hasSkew && spec.bw.isEmpty) {
       _s1 = plainSin; _s2 = plainCos; _c1 = plainSin; _c2 = plainCos
-      var i = 0
-      while (i < n) { val a = angle(i); plainSin(i) = math.sin(a); plainCos(i) = math.cos(a); i += 1 }
+      Par.blocks(n) { (lo, hi) =>
+        var i = lo
+        while (i < hi) { val a = angle(i); plainSin(i) = math.sin(a); plainCos(i) = math.cos(a); i += 1 }
+      }
     } else {
       if (s1 eq plainSin) { _s1 = new Array[Double](n); _s2 = new Array[Double](n); _c1 = plainSin; _c2 = plainCos }
       fundamentals(spec, s1, s2, c1, c2)
@@ -220,13 +222,15 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
   /** Fundamental columns of both channels under the skew and bandwidth of `sp`. */
   def fundamentals(sp: ModelSpec, a1: Array[Double], a2: Array[Double], b1: Array[Double], b2: Array[Double]): Unit = {
     val plain = !sp.hasSkew && sp.bw.isEmpty
-    val resp = new ChannelResponse(sp); val o = new Array[Double](4)
-    var i = 0
-    while (i < n) {
-      val a = angle(i); val sn = math.sin(a); val cs = math.cos(a)
-      if (plain) { a1(i) = sn; a2(i) = cs; b1(i) = sn; b2(i) = cs }
-      else { resp(freq(i), sn, cs, o); a1(i) = o(0); a2(i) = o(1); b1(i) = o(2); b2(i) = o(3) }
-      i += 1
+    val resp = new ChannelResponse(sp)
+    Par.blocks(n) { (lo, hi) =>
+      val o = new Array[Double](4); var i = lo
+      while (i < hi) {
+        val a = angle(i); val sn = math.sin(a); val cs = math.cos(a)
+        if (plain) { a1(i) = sn; a2(i) = cs; b1(i) = sn; b2(i) = cs }
+        else { resp(freq(i), sn, cs, o); a1(i) = o(0); a2(i) = o(1); b1(i) = o(2); b2(i) = o(3) }
+        i += 1
+      }
     }
   }
 
@@ -237,15 +241,18 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
   def termCols(t: Term): IndexedSeq[Col] = t match {
     case Term.Harm(k, ch) =>
       def harm(u: Int => Double, v: Int => Double): (Array[Double], Array[Double]) = {
-        val hs = new Array[Double](n); val hc = new Array[Double](n); var i = 0
-        while (i < n) {
-          val a = math.hypot(u(i), v(i))
-          if (a > 0) {
-            val s = u(i) / a; val c = v(i) / a; var re = 1.0; var im = 0.0; var j = 0
-            while (j < k) { val r2 = re * c - im * s; im = re * s + im * c; re = r2; j += 1 }
-            hs(i) = a * im; hc(i) = a * re
+        val hs = new Array[Double](n); val hc = new Array[Double](n)
+        Par.blocks(n) { (lo, hi) =>
+          var i = lo
+          while (i < hi) {
+            val ui = u(i); val vi = v(i); val a = math.sqrt(ui * ui + vi * vi)
+            if (a > 0) {
+              val s = ui / a; val c = vi / a; var re = 1.0; var im = 0.0; var j = 0
+              while (j < k) { val r2 = re * c - im * s; im = re * s + im * c; re = r2; j += 1 }
+              hs(i) = a * im; hc(i) = a * re
+            }
+            i += 1
           }
-          i += 1
         }
         (hs, hc)
       }
@@ -259,16 +266,16 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
       val l = rec.linesPerRev.getOrElse(1.0)
       val m = mechAngle.orNull
       def th(i: Int) = if (m != null) m(i) else 2 * math.Pi * phase(i) / l
-      def col(u: Int => Double, f: Double => Double) = Array.tabulate(n)(i => u(i) * f(th(i)))
+      def col(u: Int => Double, f: Double => Double) = Doubles.tabulate(n)(i => u(i) * f(th(i)))
       IndexedSeq(Col(col(us(_), math.cos), col(uc(_), math.cos)), Col(col(us(_), math.sin), col(uc(_), math.sin)))
     case Term.Inl(ch) =>
-      def t2(p: Array[Double]) = Array.tabulate(n)(i => (2 * p(i) * p(i) - 1) * lsb)
-      def t3(p: Array[Double]) = Array.tabulate(n)(i => (4 * p(i) * p(i) * p(i) - 3 * p(i)) * lsb)
+      def t2(p: Array[Double]) = Doubles.tabulate(n)(i => (2 * p(i) * p(i) - 1) * lsb)
+      def t3(p: Array[Double]) = Doubles.tabulate(n)(i => (4 * p(i) * p(i) * p(i) - 3 * p(i)) * lsb)
       val ps = if (ch != "cos") predS else null; val pc = if (ch != "sin") predC else null
       def on(p: Array[Double], f: Array[Double] => Array[Double]) = if (p == null) null else f(p)
       IndexedSeq(Col(on(ps, t2), on(pc, t2)), Col(on(ps, t3), on(pc, t3)))
     case Term.Crosstalk =>
-      val w = Array.tabulate(n)(i => 2 * math.Pi * freq(i))
+      val w = Doubles.tabulate(n)(i => 2 * math.Pi * freq(i))
       IndexedSeq(Col(mul(vc(_), w), null), Col(null, mul(vs(_), w)))
     case t: Term.ContrastSpline => effects.ContrastAlongTravel.splineCols(this, t.knots)
     case Term.Contrast =>
@@ -277,10 +284,10 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
     case Term.Warmup(tau) => warmupCols(warmupBasis(tau), us(_), uc(_))
     case Term.AngleHarm(m) =>
       val th = mechAngle.get
-      def col(g: Int => Double, f: Double => Double) = Array.tabulate(n)(i => g(i) * (2 * math.Pi * f(m * th(i))))
+      def col(g: Int => Double, f: Double => Double) = Doubles.tabulate(n)(i => g(i) * (2 * math.Pi * f(m * th(i))))
       IndexedSeq(Col(col(gS(_), math.cos), col(gC(_), math.cos)), Col(col(gS(_), math.sin), col(gC(_), math.sin)))
     case Term.Interference(hz) =>
-      val a = Array.tabulate(n)(i => math.sin(2 * math.Pi * hz * i / fs)); val b = Array.tabulate(n)(i => math.cos(2 * math.Pi * hz * i / fs))
+      val a = Doubles.tabulate(n)(i => math.sin(2 * math.Pi * hz * i / fs)); val b = Doubles.tabulate(n)(i => math.cos(2 * math.Pi * hz * i / fs))
       IndexedSeq(Col(a, null), Col(b, null), Col(null, a), Col(null, b))
   }
 
@@ -289,14 +296,14 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
     var m = 0.0; var i = 0
     while (i < n) { m += phase(i); i += 1 }
     m /= n
-    Array.tabulate(n)(i => phase(i) - m)
+    Doubles.tabulate(n)(i => phase(i) - m)
   }
 
   /** exp(-t / tau) from the first sample: the part of a warm-up still to come. */
-  def warmupBasis(tau: Double): Array[Double] = Array.tabulate(n)(i => math.exp(-i / fs / tau))
+  def warmupBasis(tau: Double): Array[Double] = Doubles.tabulate(n)(i => math.exp(-i / fs / tau))
   /** A warm-up's columns from its basis w and the fundamentals u, v (all samples, or a subsample's). */
   def warmupCols(w: Array[Double], u: Int => Double, v: Int => Double): IndexedSeq[Col] =
-    IndexedSeq(Col(w, null), Col(null, w), Col(Array.tabulate(w.length)(i => u(i) * w(i)), null), Col(null, Array.tabulate(w.length)(i => v(i) * w(i))))
+    IndexedSeq(Col(w, null), Col(null, w), Col(Doubles.tabulate(w.length)(i => u(i) * w(i)), null), Col(null, Doubles.tabulate(w.length)(i => v(i) * w(i))))
 
   private def mul(a: Int => Double, b: Array[Double]): Array[Double] = {
     val o = new Array[Double](n); var i = 0
@@ -316,13 +323,19 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
       // copies made on the first change: an unchanged channel is `y` itself, no censored sample gives a null `cen`
       var out = y; var cen: Array[Double] = null; var i = 0
       def own(): Unit = if (out eq y) out = y.clone()
+      // each code's preimages under the faults (codes as the ADC's pins), made once per code seen
+      val pre = new Array[Array[Int]](1 << adc.bits)
+      def preimages(code: Int): Array[Int] = {
+        def make = fl.foldLeft(Seq(code))((cs, f) => cs.flatMap(f.preimages)).distinct.toArray
+        if (code < 0 || code >= pre.length) make else { if (pre(code) == null) pre(code) = make; pre(code) }
+      }
       while (i < n) {
         if (_excluded != null && _excluded(i)) { own(); out(i) = p(i) }
         else {
         if (fl.nonEmpty) {
           var best = codes(i); var bestD = Double.MaxValue
-          val cands = fl.foldLeft(Seq(codes(i)))((cs, f) => cs.flatMap(f.preimages)).distinct
-          cands.foreach { c => val v = adc.fromPins(c) * lsb; val d = math.abs(v - p(i)); if (d < bestD) { bestD = d; best = c } }
+          val cands = preimages(codes(i)); var q = 0
+          while (q < cands.length) { val c = cands(q); val v = adc.fromPins(c) * lsb; val d = math.abs(v - p(i)); if (d < bestD) { bestD = d; best = c }; q += 1 }
           if (best != codes(i)) { own(); out(i) = adc.fromPins(best) * lsb }
         }
         val v = out(i)
@@ -416,7 +429,7 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
     slopeS = null; slopeC = null
     if (!traj.isInstanceOf[RefTrajectory]) return
     // v of the new default part b (the engine's `base` is still the one the columns were made from)
-    val gS = Array.tabulate(n)(i => b(1) * s2(i) - b(2) * s1(i)); val gC = Array.tabulate(n)(i => b(4) * c2(i) - b(5) * c1(i))
+    val gS = Doubles.tabulate(n)(i => b(1) * s2(i) - b(2) * s1(i)); val gC = Doubles.tabulate(n)(i => b(4) * c2(i) - b(5) * c1(i))
     for ((t, g) <- spec.terms.zipWithIndex) t match {
       case Term.Harm(k, _) =>
         val cols = design(g + 1)
@@ -437,10 +450,10 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
   def noiseSlopes(sp: ModelSpec): (Array[Double], Array[Double]) =
     if (sp.jitter) slopes() else if (sp.phaseNoise) phaseSlopes() else null
   /** Slope of each channel against the fringe phase (full scale per radian), for the phase-noise model. */
-  def phaseSlopes(): (Array[Double], Array[Double]) = (Array.tabulate(n)(i => vs(i)), Array.tabulate(n)(i => vc(i)))
+  def phaseSlopes(): (Array[Double], Array[Double]) = (Doubles.tabulate(n)(i => vs(i)), Doubles.tabulate(n)(i => vc(i)))
   /** Slope of each channel against time (full scale per second), for the jitter noise model. */
   def slopes(): (Array[Double], Array[Double]) =
-    (Array.tabulate(n)(i => vs(i) * 2 * math.Pi * freq(i)), Array.tabulate(n)(i => vc(i) * 2 * math.Pi * freq(i)))
+    (Doubles.tabulate(n)(i => vs(i) * 2 * math.Pi * freq(i)), Doubles.tabulate(n)(i => vc(i) * 2 * math.Pi * freq(i)))
 
   def sumSq(a: Array[Double]): Double = { var s = 0.0; var i = 0; while (i < a.length) { s += a(i) * a(i); i += 1 }; s }
 }
@@ -487,12 +500,15 @@ object Noise {
       // weighted least squares of r^2 on (1_sin, 1_cos, d^2) with weights 1 / var_i^2 (Gaussian ML scoring)
       val m = Array.ofDim[Double](3, 4)
       def acc(r: Array[Double], d: Array[Double], v0: Double, ch: Int): Unit = {
-        var i = 0
-        while (i < n) {
-          val d2 = d(i) * d(i); val v = math.max(floor, v0 + j2 * d2); val w = 1 / (v * v); val y = r(i) * r(i)
-          m(ch)(ch) += w; m(ch)(2) += w * d2; m(2)(2) += w * d2 * d2; m(ch)(3) += w * y; m(2)(3) += w * d2 * y
-          i += 1
+        val q = Par.sums(n, 5) { (lo, hi, a) =>
+          var i = lo
+          while (i < hi) {
+            val d2 = d(i) * d(i); val v = math.max(floor, v0 + j2 * d2); val w = 1 / (v * v); val y = r(i) * r(i)
+            a(0) += w; a(1) += w * d2; a(2) += w * d2 * d2; a(3) += w * y; a(4) += w * d2 * y
+            i += 1
+          }
         }
+        m(ch)(ch) += q(0); m(ch)(2) += q(1); m(2)(2) += q(2); m(ch)(3) += q(3); m(2)(3) += q(4)
       }
       acc(rs, ds, vs, 0); acc(rc, dc, vc, 1)
       m(2)(0) = m(0)(2); m(2)(1) = m(1)(2)

@@ -1,0 +1,61 @@
+package moire.explain
+
+import java.util.stream.IntStream
+
+/** The normal equations' sums of a design (X'X and X'y over both channels) in one pass over the samples: blocks of
+  * rows, each block's products of every column pair while the block is in cache, blocks on all cores. The blocks are
+  * fixed by the sample count and their sums added in order, so the numbers do not depend on the cores.
+  */
+object Gram {
+  /** Rows per block (a block of 30 columns on both channels stays in a core's cache). */
+  val Block = 2048
+  /** Rows below which one thread does it all (a task costs more than the sums it would split). */
+  val Parallel = 1 << 15
+
+  /** g(i)(j) = sum x_i x_j and r(i) = sum x_i y over the rows (all, or the rows `idx` when it is not null). */
+  def of(cols: IndexedSeq[Col], ys: Array[Double], yc: Array[Double], idx: Array[Int] = null): (Array[Array[Double]], Array[Double]) = {
+    val k = cols.length
+    val rows = if (idx != null) idx.length else if (ys != null) ys.length else cols.find(_.s != null).map(_.s.length).getOrElse(cols.head.c.length)
+    val as = cols.map(_.s).toArray; val ac = cols.map(_.c).toArray
+    val m = k * (k + 1) / 2 + k
+    val blocks = (rows + Block - 1) / Block
+    val part = new Array[Array[Double]](blocks)
+    val body: java.util.function.IntConsumer = b => part(b) = block(as, ac, ys, yc, idx, b * Block, math.min(rows, (b + 1) * Block), m)
+    if (rows >= Parallel) IntStream.range(0, blocks).parallel().forEach(body) else (0 until blocks).foreach(body.accept)
+    val sum = new Array[Double](m)
+    part.foreach { p => var q = 0; while (q < m) { sum(q) += p(q); q += 1 } }
+    val g = Array.ofDim[Double](k, k); val r = new Array[Double](k)
+    var q = 0
+    for (i <- 0 until k) { for (j <- 0 to i) { g(i)(j) = sum(q); g(j)(i) = sum(q); q += 1 }; r(i) = sum(q); q += 1 }
+    (g, r)
+  }
+
+  /** One block's sums, in the order (0,0), y0, (1,0), (1,1), y1, ... : pair (i, j <= i), then column i against y. */
+  private def block(as: Array[Array[Double]], ac: Array[Array[Double]], ys: Array[Double], yc: Array[Double], idx: Array[Int],
+                    lo: Int, hi: Int, m: Int): Array[Double] = {
+    val out = new Array[Double](m)
+    val k = as.length
+    // a block's rows gathered when they are a fold (`idx`): the products then run over contiguous copies
+    def rows(a: Array[Double]): Array[Double] =
+      if (a == null) null
+      else if (idx == null) a
+      else { val o = new Array[Double](hi - lo); var t = lo; while (t < hi) { o(t - lo) = a(idx(t)); t += 1 }; o }
+    val s = as.map(rows); val c = ac.map(rows); val y1 = rows(ys); val y2 = rows(yc)
+    val (from, to) = if (idx == null) (lo, hi) else (0, hi - lo)
+    var q = 0; var i = 0
+    while (i < k) {
+      var j = 0
+      while (j <= i) { out(q) = dot(s(i), s(j), from, to) + dot(c(i), c(j), from, to); q += 1; j += 1 }
+      out(q) = dot(s(i), y1, from, to) + dot(c(i), y2, from, to); q += 1
+      i += 1
+    }
+    out
+  }
+
+  private def dot(a: Array[Double], b: Array[Double], from: Int, to: Int): Double = {
+    if (a == null || b == null) return 0.0
+    var s = 0.0; var t = from
+    while (t < to) { s += a(t) * b(t); t += 1 }
+    s
+  }
+}

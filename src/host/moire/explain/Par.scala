@@ -1,0 +1,34 @@
+package moire.explain
+
+import java.util.stream.IntStream
+
+/** Loops over the samples on all cores, in fixed blocks: an element-wise loop gives the same arrays as one thread, a
+  * sum adds its blocks' partial sums in block order (the same numbers whatever the number of cores).
+  */
+object Par {
+  /** Samples per block. */
+  val Block = 8192
+  /** Samples below which one thread does the loop. */
+  val Min = 1 << 15
+
+  /** body(lo, hi) over consecutive blocks covering [0, n), on all cores when n is large. */
+  def blocks(n: Int)(body: (Int, Int) => Unit): Unit = {
+    val k = (n + Block - 1) / Block
+    val f: java.util.function.IntConsumer = b => body(b * Block, math.min(n, (b + 1) * Block))
+    if (n >= Min) IntStream.range(0, k).parallel().forEach(f) else { var b = 0; while (b < k) { f.accept(b); b += 1 } }
+  }
+
+  /** The sums of m accumulators over [0, n): part(lo, hi, acc) adds block [lo, hi) into acc (zeroed); blocks added in order. */
+  def sums(n: Int, m: Int)(part: (Int, Int, Array[Double]) => Unit): Array[Double] = {
+    val k = (n + Block - 1) / Block
+    val parts = Array.ofDim[Double](k, m)
+    blocks(n)((lo, hi) => part(lo, hi, parts(lo / Block)))
+    val out = new Array[Double](m)
+    var b = 0
+    while (b < k) { var j = 0; while (j < m) { out(j) += parts(b)(j); j += 1 }; b += 1 }
+    out
+  }
+
+  /** One sum over [0, n) (see `sums`). */
+  def sum(n: Int)(part: (Int, Int) => Double): Double = sums(n, 1)((lo, hi, a) => a(0) += part(lo, hi))(0)
+}
