@@ -12,7 +12,9 @@ private[explain] final class ChannelResponse(sp: ModelSpec) {
   private val fcC = sp.bw.getOrElse("cos", Double.PositiveInfinity)
   private val w = 2 * math.Pi * sp.skewS
 
-  def apply(f: Double, sn: Double, cs: Double, out: Array[Double]): Unit = {
+  private val reference = FitPath.isReference
+
+  def apply(f: Double, sn: Double, cs: Double, out: Array[Double]): Unit = if (reference) direct(f, sn, cs, out) else {
     var gs = 1.0; var gc = 1.0
     if (!fcB.isInfinite) { val u = f / fcB; val g = 1 / math.sqrt(1 + u * u); gs *= g; gc *= g }
     val uS = if (fcS.isInfinite) 0.0 else f / fcS; val uC = if (fcC.isInfinite) 0.0 else f / fcC
@@ -25,5 +27,18 @@ private[explain] final class ChannelResponse(sp: ModelSpec) {
     if (w != 0) { val cw = math.cos(0.5 * w * f); val sw = math.sin(0.5 * w * f); cl = ch * cw + sh * sw; sl = sh * cw - ch * sw }
     out(0) = gs * (sn * cl + cs * sl); out(1) = gs * (cs * cl - sn * sl)
     out(2) = gc * (sn * cl - cs * sl); out(3) = gc * (cs * cl + sn * sl)
+  }
+
+  /** The reference path: the lags by atan, each channel's turn on its own. */
+  private def direct(f: Double, sn: Double, cs: Double, out: Array[Double]): Unit = {
+    var gs = 1.0; var gc = 1.0; var ls = -0.5 * w * f; var lc = 0.5 * w * f
+    if (!fcB.isInfinite) { val u = f / fcB; val g = 1 / math.sqrt(1 + u * u); gs *= g; gc *= g }
+    var lagS = 0.0; var lagC = 0.0
+    if (!fcS.isInfinite) { val u = f / fcS; gs /= math.sqrt(1 + u * u); lagS = math.atan(u) }
+    if (!fcC.isInfinite) { val u = f / fcC; gc /= math.sqrt(1 + u * u); lagC = math.atan(u) }
+    val m = 0.5 * (lagS + lagC); ls += m - lagS; lc += m - lagC
+    val cls = math.cos(ls); val sls = math.sin(ls); val clc = math.cos(lc); val slc = math.sin(lc)
+    out(0) = gs * (sn * cls + cs * sls); out(1) = gs * (cs * cls - sn * sls)
+    out(2) = gc * (sn * clc + cs * slc); out(3) = gc * (cs * clc - sn * slc)
   }
 }

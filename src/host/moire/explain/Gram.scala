@@ -14,6 +14,7 @@ object Gram {
 
   /** g(i)(j) = sum x_i x_j and r(i) = sum x_i y over the rows (all, or the rows `idx` when it is not null). */
   def of(cols: IndexedSeq[Col], ys: Array[Double], yc: Array[Double], idx: Array[Int] = null): (Array[Array[Double]], Array[Double]) = {
+    if (FitPath.isReference) return plain(cols, ys, yc, idx)
     val k = cols.length
     val rows = if (idx != null) idx.length else if (ys != null) ys.length else cols.find(_.s != null).map(_.s.length).getOrElse(cols.head.c.length)
     val as = cols.map(_.s).toArray; val ac = cols.map(_.c).toArray
@@ -50,6 +51,21 @@ object Gram {
       i += 1
     }
     out
+  }
+
+  /** The reference path: each pair's products over all rows in turn, on one thread. */
+  private def plain(cols: IndexedSeq[Col], ys: Array[Double], yc: Array[Double], idx: Array[Int]): (Array[Array[Double]], Array[Double]) = {
+    def dot(a: Array[Double], b: Array[Double]): Double =
+      if (a == null || b == null) 0.0
+      else if (idx == null) { var s = 0.0; var i = 0; while (i < a.length) { s += a(i) * b(i); i += 1 }; s }
+      else { var s = 0.0; var i = 0; while (i < idx.length) { val j = idx(i); s += a(j) * b(j); i += 1 }; s }
+    val k = cols.length
+    val g = Array.ofDim[Double](k, k); val r = new Array[Double](k)
+    for (i <- 0 until k) {
+      r(i) = dot(cols(i).s, ys) + dot(cols(i).c, yc)
+      for (j <- 0 to i) { val v = dot(cols(i).s, cols(j).s) + dot(cols(i).c, cols(j).c); g(i)(j) = v; g(j)(i) = v }
+    }
+    (g, r)
   }
 
   private def dot(a: Array[Double], b: Array[Double], from: Int, to: Int): Double = {

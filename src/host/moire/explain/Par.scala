@@ -13,6 +13,7 @@ object Par {
 
   /** body(lo, hi) over consecutive blocks covering [0, n), on all cores when n is large. */
   def blocks(n: Int)(body: (Int, Int) => Unit): Unit = {
+    if (FitPath.isReference) { body(0, n); return }
     val k = (n + Block - 1) / Block
     val f: java.util.function.IntConsumer = b => body(b * Block, math.min(n, (b + 1) * Block))
     if (n >= Min) IntStream.range(0, k).parallel().forEach(f) else { var b = 0; while (b < k) { f.accept(b); b += 1 } }
@@ -20,6 +21,7 @@ object Par {
 
   /** The sums of m accumulators over [0, n): part(lo, hi, acc) adds block [lo, hi) into acc (zeroed); blocks added in order. */
   def sums(n: Int, m: Int)(part: (Int, Int, Array[Double]) => Unit): Array[Double] = {
+    if (FitPath.isReference) { val a = new Array[Double](m); part(0, n, a); return a }
     val k = (n + Block - 1) / Block
     val parts = Array.ofDim[Double](k, m)
     blocks(n)((lo, hi) => part(lo, hi, parts(lo / Block)))

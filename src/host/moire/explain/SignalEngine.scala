@@ -133,14 +133,15 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
       def free(len: Int): Unit = start(new Trajectory(n, len, fs), raw)
       val lens = Seq(16.0, 6.0, 2.5).map(p => Trajectory.segmentLength(n, fs, typicalHz, p)).distinct
       val best = if (lens.size == 1) lens.head else lens.minBy { l => free(l); bic }
-      free(best)
+      if (lens.size == 1 || best != lens.last || FitPath.isReference) free(best) // the last one tried is the engine's state already
     }
     refColumn.foreach { r =>
       // the smoothing of the reference: the window with the lowest BIC (a noisy reference wants a wide one)
       def fit(h: Int): RefTrajectory = { val rt = new RefTrajectory(r, fs, r.periodsPerUnit, h); rt.start(raw); start(rt, new Array[Double](n)); rt }
       val hs = RefTrajectory.HalfWidths.filter(h => h == RefTrajectory.HalfWidths.head || 8 * h <= n)
-      val best = if (hs.size == 1) hs.head else hs.minBy { h => fit(h); if (SignalEngine.debug) System.err.println(f"reference smoothing $h: BIC $bic%.1f"); bic }
-      val rt = fit(best)
+      var last: RefTrajectory = null
+      val best = if (hs.size == 1) hs.head else hs.minBy { h => last = fit(h); if (SignalEngine.debug) System.err.println(f"reference smoothing $h: BIC $bic%.1f"); bic }
+      val rt = if (hs.size > 1 && best == hs.last && !FitPath.isReference) last else fit(best) // the last one tried is the engine's state already
       val rms = phaseRms
       val stepPeriods = math.abs(rt.k) * RefTrajectory.step(r.values)
       if (rms > RefTrajectory.MaxPhaseRms)
@@ -353,8 +354,8 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
   }
 
   /** Refits the default part and all linear terms (and the trajectory) for the current spec. */
-  def refit(iters: Int, refineTraj: Boolean): Unit = {
-    var it = 0
+  def refit(iters: Int, refineTraj: Boolean, from: Int = 0): Unit = {
+    var it = from
     while (it < iters) {
       if (it > 0 && refineTraj && traj.isInstanceOf[RefTrajectory]) jointStep(traj.asInstanceOf[RefTrajectory])
       else if (it > 0 && refineTraj) {
@@ -398,8 +399,10 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
   /** Refits until BIC stops falling (fault repairs and the trajectory settle over a few iterations). */
   def converge(maxIters: Int = 12): Unit = {
     refit(3, refineTraj = true)
+    // then one refining step at a time (a plain solve first would repeat the last one's fit)
     var prev = Double.PositiveInfinity; var k = 3
-    while (k < maxIters && prev - bic > 0.5) { prev = bic; refit(2, refineTraj = true); k += 2 }
+    val from = if (FitPath.isReference) 0 else 1; val step = 2 - from
+    while (k < maxIters && prev - bic > 0.5) { prev = bic; refit(2, refineTraj = true, from = from); k += step }
   }
 
   /** The design of the current spec: the default part, each term's columns, then `extra` groups (held). The terms'
