@@ -35,7 +35,7 @@ class ExplainCliSpec extends AnyFlatSpec with Matchers {
     ExplainCmd.bench(40000, Some(os.temp.dir().toString), None, lines += _)
     val Seq(read, all) = lines.result()
     read should fullyMatch regex """explain-bench: read and checked 40000 rows \([0-9]+ MB file\) in [0-9.]+ s; peak heap in use [0-9]+ MB of [0-9]+ MB \([0-9.]+ MB per million samples\)"""
-    all should fullyMatch regex """explain-bench: 40000 samples explained in [0-9.]+ s .* = [0-9]+ samples/s; peak heap in use [0-9]+ MB of [0-9]+ MB \([0-9.]+ MB per million samples\); .*findings: .*"""
+    all should fullyMatch regex """explain-bench: 40000 samples explained in [0-9.]+ s .* = [0-9]+ samples/s, [0-9.]+ us per sample; CPU [0-9.]+ s \([0-9.]+ cores busy\); peak heap in use [0-9]+ MB of [0-9]+ MB \([0-9.]+ MB per million samples\); .*findings: .*"""
     // the peak is what the heap held at one time: never more than the heap itself, never nothing
     for (l <- Seq(read, all)) {
       val Seq(peak, max) = """heap in use ([0-9]+) MB of ([0-9]+) MB""".r.findFirstMatchIn(l).get.subgroups.map(_.toDouble)

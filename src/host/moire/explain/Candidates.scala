@@ -41,15 +41,15 @@ final class Candidates(val engine: SignalEngine) {
     val out = Seq.newBuilder[Cand]
     val timing = sys.props.contains("moire.timing")
     var last = System.nanoTime()
-    def add(c: => Seq[Cand]): Unit = {
+    def add(name: String, c: => Seq[Cand]): Unit = {
       try out ++= c finally onStep()
-      if (timing) { val now = System.nanoTime(); System.err.println(f"candidate ${(now - last) / 1e6}%.0f ms"); last = now }
+      if (timing) { val now = System.nanoTime(); System.err.println(f"candidate $name ${(now - last) / 1e6}%.0f ms"); last = now }
     }
-    searches.foreach(f => add(f()))
+    searches.foreach { case (name, f) => add(name, f()) }
     out.result()
   }
   /** The registry's searches for this record: one progress step each. */
-  lazy val searches: Seq[() => Seq[Cand]] = Effects.all.filter(_.searched).flatMap(_.searches(this))
+  lazy val searches: Seq[(String, () => Seq[Cand])] = Effects.all.filter(_.searched).flatMap(f => f.searches(this).map(f.name -> _))
   def steps: Int = searches.size
   /** The reference names the mechanical angle and a turn holds enough fringe periods to tell its modulation from
     * harmonics of the fringe (with one period per turn they are the same thing).

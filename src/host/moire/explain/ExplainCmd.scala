@@ -220,10 +220,19 @@ object ExplainCmd {
     def perM(peak: Double) = peak / (n / 1e6)
     say(f"explain-bench: read and checked $n rows ($mb%.0f MB file) in $readS%.1f s; peak heap in use $readPeak%.0f MB of $maxMb%.0f MB " +
       f"(${perM(readPeak)}%.1f MB per million samples)")
+    val cpu0 = cpuSeconds
     val (rep, s, peak) = peakHeap(explain(Seq(file.toString), Some((dir / "json").toString), Some((dir / "plots").toString), None, quiet = false).head)
-    say(f"explain-bench: $n samples explained in $s%.1f s (read, fit, JSON, plots) = ${n / s}%.0f samples/s; " +
+    val cpu = cpuSeconds - cpu0
+    say(f"explain-bench: $n samples explained in $s%.1f s (read, fit, JSON, plots) = ${n / s}%.0f samples/s, ${1e6 * s / n}%.1f us per sample; " +
+      f"CPU $cpu%.1f s (${cpu / s}%.2f cores busy); " +
       f"peak heap in use $peak%.0f MB of $maxMb%.0f MB (${perM(peak)}%.1f MB per million samples); ${Runtime.getRuntime.availableProcessors} cores; " +
       s"findings: ${rep.findings.map(_.effect).mkString(", ")}")
+  }
+
+  /** CPU seconds this process has used (all threads), NaN where the JVM does not say. */
+  private def cpuSeconds: Double = java.lang.management.ManagementFactory.getOperatingSystemMXBean match {
+    case o: com.sun.management.OperatingSystemMXBean => o.getProcessCpuTime / 1e9
+    case _ => Double.NaN
   }
 
   /** Writes the bench's simulated recording; its arrays are garbage once this returns. */
