@@ -3,7 +3,8 @@ package moire.explain
 import me.tongfei.progressbar.ConsoleProgressBarConsumer
 
 /** Progress of a batch on stderr. On a terminal: one line, redrawn in place, with the files done and each running
-  * file's stage and how far it is (`explain: 1 of 4 done; a.csv: effects, round 2 40 %; b.csv: default fit 0 %; 12 s`).
+  * file's stage and how far it is (`explain: 1 of 4 done; a.csv: effects, round 2 40 %; b.csv: default fit 0 %; 12 s`;
+  * `finishing` after the fit: the RTL check, plots, JSON).
   * Elsewhere (a log, a pipe): each file's own plain lines, which name it. Messages and the text reports pass
   * through here, so that none lands inside the redrawn line.
   */
@@ -23,7 +24,7 @@ final class BatchProgress(total: Int, terminal: Boolean = moire.progress.Bar.ter
       new Progress {
         def phase(name: String, steps: Int): Unit = update(i, force = true) { r => r.stage = name; r.steps = steps; r.at = 0 }
         def step(k: Int): Unit = update(i, force = false)(r => r.at += k)
-        override def close(): Unit = update(i, force = true) { r => r.stage = "plots and report"; r.steps = 0 }
+        override def close(): Unit = update(i, force = true) { r => r.stage = "finishing"; r.steps = 0 }
       }
     }
 
