@@ -69,6 +69,18 @@ class BoardCheckSpec extends AnyFlatSpec {
     assert(h.map(_.effect).contains("board_position_drift") && h.get.params("first_mismatch_sample") == 300, h)
   }
 
+  it should "compare each file of an explain batch with the RTL, the files side by side" in {
+    SimSupport.requireTool(this, "verilator")
+    val dir = os.temp.dir()
+    moire.recording.Recording.write(dir / "same.csv", boardRecording(identity))
+    moire.recording.Recording.write(dir / "offset.csv", boardRecording(_.map(_ + 8)))
+    moire.explain.ExplainCmd.explain(Seq("same.csv", "offset.csv").map(f => (dir / f).toString), Some((dir / "json").toString), None, None,
+      quiet = true, rtl = Some(firstOpts))
+    def json(stem: String) = ujson.read(os.read(dir / "json" / s"$stem.json"))
+    assert(json("same")("notes").arr.exists(_.str.contains("equals the RTL on all 6000 samples")), json("same")("notes"))
+    assert(json("offset")("findings").arr.exists(_("effect").str == "board_position_constant_offset"), json("offset")("findings"))
+  }
+
   it should "say why a decimated recording is not compared" in {
     val r = boardRecording(identity)
     val (f, notes) = BoardCheck.run("dec.csv", r.copy(meta = r.meta + ("decimation" -> "8")), firstOpts, _ => ())

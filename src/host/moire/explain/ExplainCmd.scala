@@ -67,10 +67,14 @@ object ExplainCmd {
       throw new ExplainError(s"${ps.distinct.mkString(" and ")} share the name $stem: their reports would overwrite each other; rename one")
     }
     // Every file gets its report or its one-line error; the command fails after all were tried.
-    val results = paths.map { p =>
-      val htmlFile = html.map(os.Path(_, os.pwd)).orElse(htmlDir.map(d => os.Path(d, os.pwd) / s"${p.last.stripSuffix(".csv")}.html"))
-      try Right(explainOne(p, givenEffects, jsonDir, plotDir, quiet, rtl, htmlFile, materiality))
-      catch { case e: moire.MoireError => if (paths.size > 1) System.err.println(s"moire: ${e.getMessage}"); Left(e) }
+    def htmlOf(p: os.Path) = html.map(os.Path(_, os.pwd)).orElse(htmlDir.map(d => os.Path(d, os.pwd) / s"${p.last.stripSuffix(".csv")}.html"))
+    def one(p: os.Path, progress: Progress, say: String => Unit) =
+      explainOne(p, givenEffects, jsonDir, plotDir, progress, say, rtl, htmlOf(p), materiality)
+    val results = if (paths.size > 1) batch(paths, quiet, one) else {
+      val p = paths.head
+      val r = one(p, if (quiet) Progress.none else Progress.bar(p.last.stripSuffix(".csv")), s => if (!quiet) System.err.println(s"explain: $s"))
+      if (!quiet) print(r.text)
+      Seq(Right(r))
     }
     val failed = results.collect { case Left(e) => e }
     if (failed.nonEmpty) {
@@ -80,11 +84,29 @@ object ExplainCmd {
     results.collect { case Right(r) => r }
   }
 
+  /** Called with each file of a batch when it starts (true) and ends (false); tests watch the overlap here. */
+  @volatile var batchWatch: (os.Path, Boolean) => Unit = (_, _) => ()
+
+  /** The files side by side ([[Batch]]); each error is said when found, the text reports in the files' order. */
+  private def batch(paths: Seq[os.Path], quiet: Boolean, one: (os.Path, Progress, String => Unit) => Report): Seq[Either[moire.MoireError, Report]] = {
+    val shown = new BatchProgress(paths.size, terminal = !quiet && moire.progress.Bar.terminal)
+    val results = Array.fill[Either[moire.MoireError, Report]](paths.size)(null)
+    try Batch.run(paths.size, Batch.threads(paths.size), Batch.budget, i => Batch.heapOf(paths(i))) { i =>
+      val p = paths(i)
+      batchWatch(p, true)
+      try Right(one(p, if (quiet) Progress.none else shown.start(i, p), s => if (!quiet) shown.say(s"explain: $s")))
+      catch { case e: moire.MoireError => shown.say(s"moire: ${e.getMessage}"); Left(e) }
+      finally { batchWatch(p, false); shown.finish(i) }
+    } { (i, r) => results(i) = r; if (!quiet) r.foreach(rep => shown.report(rep.text)) }
+    finally shown.close()
+    results.toSeq
+  }
+
   private def explainOne(p: os.Path, givenEffects: Seq[EffectSpec], jsonDir: Option[String], plotDir: Option[String],
-                         quiet: Boolean, rtl: Option[Seq[String]], html: Option[os.Path], materiality: Materiality): Report = {
+                         progress: Progress, say: String => Unit, rtl: Option[Seq[String]], html: Option[os.Path],
+                         materiality: Materiality): Report = {
     val kind = kindOf(p)
     val stem = p.last.stripSuffix(".csv")
-    val progress = if (quiet) Progress.none else Progress.bar(stem)
     // plots go to --plots, or (for the HTML alone) to a temporary folder
     val plotFolder = plotDir.map(os.Path(_, os.pwd)).orElse(html.map(_ => os.temp.dir(prefix = "moire-explain-plots")))
     var plotFiles = Seq.empty[os.Path]
@@ -103,7 +125,7 @@ object ExplainCmd {
         extra :+= "interpolation_error" -> InterpolationError.of(rec, r.engine).json
         // Board outputs (a `position` column) against the RTL run on the recorded codes.
         rtl.filter(_ => rec.extra.contains("position")).map { opts =>
-          val (f, notes) = BoardCheck.run(p.toString, rec, opts, s => if (!quiet) System.err.println(s"explain: $s"))
+          val (f, notes) = BoardCheck.run(p.toString, rec, opts, say)
           r.report.copy(findings = r.report.findings ++ f, notes = r.report.notes ++ notes)
         }.getOrElse(r.report)
       }
@@ -118,7 +140,6 @@ object ExplainCmd {
       if (plotDir.isEmpty) plotFolder.foreach(os.remove.all)
     }
     jsonDir.foreach(d => moire.files.SafeWrite.text(os.Path(d, os.pwd) / s"$stem.json", ujson.write(json, indent = 2)))
-    if (!quiet) print(report.text)
     report
   }
 
