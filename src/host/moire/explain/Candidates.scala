@@ -67,17 +67,14 @@ final class Candidates(val engine: SignalEngine) {
       m(at) += 1; m(at + 1) += x1; m(at + 2) += x2; m(at + 3) += x1 * x1; m(at + 4) += x1 * x2; m(at + 5) += x2 * x2
       m(at + 6) += y; m(at + 7) += y * x1; m(at + 8) += y * x2; m(at + 9) += y * y
     }
-    val end = if (idx == null) n else idx.length
-    val cnt = (end + stride - 1) / stride
-    // the points q = 0, 1, ... at k = q * stride, in blocks on all cores
+    val pts = points(stride, idx); val cnt = pts.sn.length
+    // the points in blocks on all cores
     val sums = Par.sums(cnt, 20) { (lo, hi, m) =>
       val o = new Array[Double](4); var q = lo
       while (q < hi) {
-        val k = q * stride; val i = if (idx == null) k else idx(k)
-        val a = angle(i)
-        resp(freq(i), math.sin(a), math.cos(a), o)
-        acc(m, 0, o(0), o(1), repS(i) - termS(i))
-        acc(m, 10, o(2), o(3), repC(i) - termC(i))
+        resp(pts.f(q), pts.sn(q), pts.cs(q), o)
+        acc(m, 0, o(0), o(1), pts.ys(q))
+        acc(m, 10, o(2), o(3), pts.yc(q))
         q += 1
       }
     }
@@ -88,6 +85,34 @@ final class Candidates(val engine: SignalEngine) {
       math.max(1e-300, m(9) - x(0) * m(6) - x(1) * m(7) - x(2) * m(8))
     }
     n * (math.log(2 * math.Pi * rss(ms) / cnt) + 1) + n * (math.log(2 * math.Pi * rss(mc) / cnt) + 1)
+  }
+
+  /** What `profile` reads at its points (every stride-th sample, of `idx` when given): the fringe frequency, the sin and
+    * cos of the fringe phase, each channel less its terms. Made once for the engine's state (its `version`) while the
+    * points fit in 2^21 samples: a search calls the profile some thirty times with the same points.
+    */
+  private final class Points(val version: Long, val stride: Int, val idx: Array[Int], val f: Array[Double], val sn: Array[Double],
+                             val cs: Array[Double], val ys: Array[Double], val yc: Array[Double])
+  private var cached: Points = null
+  private def points(stride: Int, idx: Array[Int]): Points = {
+    val c = cached
+    if (c != null && c.version == e.version && c.stride == stride && (c.idx eq idx)) return c
+    val end = if (idx == null) n else idx.length
+    val cnt = (end + stride - 1) / stride
+    def at(q: Int) = { val k = q * stride; if (idx == null) k else idx(k) }
+    val f = new Array[Double](cnt); val sn = new Array[Double](cnt); val cs = new Array[Double](cnt)
+    val ys = new Array[Double](cnt); val yc = new Array[Double](cnt)
+    Par.blocks(cnt) { (lo, hi) =>
+      var q = lo
+      while (q < hi) {
+        val i = at(q); val a = angle(i)
+        f(q) = freq(i); sn(q) = math.sin(a); cs(q) = math.cos(a); ys(q) = repS(i) - termS(i); yc(q) = repC(i) - termC(i)
+        q += 1
+      }
+    }
+    val p = new Points(e.version, stride, idx, f, sn, cs, ys, yc)
+    if (cnt <= (1 << 21)) cached = p
+    p
   }
 
   /** Minimum of f on [lo, hi]: a grid, then golden section around the best grid point. */

@@ -182,7 +182,14 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
     (0.5 * (lo + hi), math.max(0.5 * (hi - lo), lsb))
   }
 
+  /** Counts the changes of the fit's state (phase, fundamentals, default part, residual): a cache made at one count
+    * holds while the count stays.
+    */
+  def version: Long = _version
+  private var _version = 0L
+
   def evalTraj(): Unit = {
+    _version += 1
     traj.eval(phase, freq)
     range = null
     setFundamentals()
@@ -378,6 +385,7 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
       _base = sol.beta.take(6)
       it += 1
       _noise = Noise.fit(resS, resC, noiseSlopes(spec), cens)
+      _version += 1
       if (SignalEngine.debug) System.err.println(f"refit $it: rms $rms%.4g bic $bic%.8g")
     }
   }
