@@ -124,10 +124,9 @@ final class ColGroups(make: IndexedSeq[() => IndexedSeq[Col]], keep: Boolean, he
       val ci = apply(i)
       for (j <- 0 to i) {
         val cj = if (j == i) ci else apply(j)
-        // the products of the pair (i, j): the Gram of ci ++ cj, its off-diagonal block
-        val (g, r) = Gram.of(ci ++ (if (j == i) IndexedSeq() else cj), ys, yc)
-        if (j == i) rs(i) = r
-        blocks(i)(j) = Array.tabulate(ci.size, cj.size)((a, b) => if (j == i) g(a)(b) else g(a)(ci.size + b))
+        // the products of the pair (i, j): ci's own Gram (with y), or the block between ci and cj
+        if (j == i) { val (g, r) = Gram.of(ci, ys, yc); rs(i) = r; blocks(i)(j) = g }
+        else blocks(i)(j) = Gram.cross(ci, cj)
       }
     }
     at = rs.map(_.length).scanLeft(0)(_ + _)
