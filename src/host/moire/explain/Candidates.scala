@@ -38,15 +38,23 @@ final class Candidates(val engine: SignalEngine) {
   private def sub(a: Array[Double], b: Array[Double]) = { val o = new Array[Double](n); var i = 0; while (i < n) { o(i) = a(i) - b(i); i += 1 }; o }
 
   def all(onStep: () => Unit): Seq[Cand] = {
-    val out = Seq.newBuilder[Cand]
     val timing = sys.props.contains("moire.timing")
-    var last = System.nanoTime()
-    def add(name: String, c: => Seq[Cand]): Unit = {
-      try out ++= c finally onStep()
-      if (timing) { val now = System.nanoTime(); System.err.println(f"candidate $name ${(now - last) / 1e6}%.0f ms"); last = now }
+    val found = new Array[Seq[Cand]](searches.size)
+    def run(k: Int): Unit = {
+      val (name, search) = searches(k); val t0 = System.nanoTime()
+      try found(k) = search() finally onStep.synchronized(onStep())
+      if (timing) System.err.println(f"candidate $name ${(System.nanoTime() - t0) / 1e6}%.0f ms")
     }
-    searches.foreach { case (name, f) => add(name, f()) }
-    out.result()
+    // the searches read the engine and write nothing of it: side by side on all cores, each into its own slot (the
+    // same candidates in the same order as one after the other); a long record's one at a time (each holds columns)
+    if (FitPath.isReference || n > Candidates.SideBySide) searches.indices.foreach(run)
+    else {
+      // a search's failure is kept and thrown after all ran (the first in the searches' order, as one after the other)
+      val failed = new Array[Throwable](searches.size)
+      java.util.stream.IntStream.range(0, searches.size).parallel().forEach(k => try run(k) catch { case x: Throwable => failed(k) = x })
+      failed.find(_ != null).foreach(x => throw x)
+    }
+    found.toSeq.flatten
   }
   /** The registry's searches for this record: one progress step each. */
   lazy val searches: Seq[(String, () => Seq[Cand])] = Effects.all.filter(_.searched).flatMap(f => f.searches(this).map(f.name -> _))
@@ -336,6 +344,9 @@ final class Candidates(val engine: SignalEngine) {
 }
 
 object Candidates {
+  /** Samples up to which the searches run side by side (beyond, their columns would hold too much of the heap at once). */
+  val SideBySide: Int = 1 << 22
+
   /** About n / st sample indices, one at a random place in each block of st; all of them when st is 1. A regular
     * stride would alias a line at a multiple of fs / st to DC (50 kHz at 10 MS/s with a stride of 400: 20,000,000 rows).
     */

@@ -278,22 +278,37 @@ object SignalExplain {
   def settle(e: SignalEngine): Unit = {
     if (!e.spec.hasSkew && e.spec.bw.isEmpty) return
     var prev = Double.PositiveInfinity; var k = 0
-    while (k < 4 && prev - e.bic > 0.5) { prev = e.bic; polish(e); e.converge(); k += 1 }
+    while (k < 4 && prev - e.bic > 0.5) {
+      prev = e.bic
+      val before = e.spec
+      // a polish that lowers the profile's -2 ln L by less than the loop's step leaves the fit as it stands (its refit
+      // would not move the criterion by more either); the reference path refits after every polish
+      if (polish(e) < 0.5 && !FitPath.isReference) { e.spec = before; return }
+      e.converge(); k += 1
+    }
   }
 
-  /** Re-optimises the nonlinear parameters (skew, cut-offs) of the current spec. */
-  def polish(e: SignalEngine): Unit = {
+  /** Re-optimises the nonlinear parameters (skew, cut-offs) of the current spec; returns how much they lowered the
+    * profile's -2 ln L (scaled to all samples).
+    */
+  def polish(e: SignalEngine): Double = {
     val c = new Candidates(e); val st = math.max(1, e.n / 50000)
+    var gain = 0.0
     if (e.spec.hasSkew) {
       val t = e.spec.skewS; val span = math.max(math.abs(t) * 0.3, 1e-10)
-      val best = c.minimize(x => c.profile(e.spec.copy(skewS = x), st), t - span, t + span)
+      def f(x: Double) = c.profile(e.spec.copy(skewS = x), st)
+      val best = c.minimize(f, t - span, t + span)
+      gain += f(t) - f(best)
       e.spec = e.spec.copy(skewS = best)
     }
     for ((ch, fc) <- e.spec.bw) {
       val x0 = 1 / fc
-      val best = c.minimize(x => c.profile(e.spec.copy(bw = e.spec.bw + (ch -> 1 / x)), st), x0 * 0.6, x0 * 1.6)
+      def f(x: Double) = c.profile(e.spec.copy(bw = e.spec.bw + (ch -> 1 / x)), st)
+      val best = c.minimize(f, x0 * 0.6, x0 * 1.6)
+      gain += f(x0) - f(best)
       e.spec = e.spec.copy(bw = e.spec.bw + (ch -> 1 / best))
     }
+    gain
   }
 
   /** Warnings about the recording itself. */
