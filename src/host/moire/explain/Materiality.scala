@@ -18,11 +18,16 @@ object Materiality {
   /** The quantile of |change of the prediction| that is the effect's size (robust to a few samples). */
   val Quantile = 0.99
 
-  /** The size of the change from prediction `a` to `b` (sampled at every stride-th sample): the `Quantile` point of |b - a|. */
+  /** The size of the change from prediction `a` to `b` (from one sample at a random place in each block of `stride`: a
+    * regular stride would sample a line at a multiple of fs / stride at the same phase, e.g. at its zeros): the
+    * `Quantile` point of |b - a|.
+    */
   def size(aS: Array[Double], aC: Array[Double], bS: Array[Double], bC: Array[Double], stride: Int): Double = {
     val n = aS.length
-    val d = new Array[Double](2 * ((n + stride - 1) / stride)); var k = 0; var i = 0
-    while (i < n) { d(k) = math.abs(bS(i) - aS(i)); d(k + 1) = math.abs(bC(i) - aC(i)); k += 2; i += stride }
+    val at = if (stride <= 1) null else Candidates.spread(n, stride)
+    val m = if (at == null) n else at.length
+    val d = new Array[Double](2 * m); var k = 0; var q = 0
+    while (q < m) { val i = if (at == null) q else at(q); d(k) = math.abs(bS(i) - aS(i)); d(k + 1) = math.abs(bC(i) - aC(i)); k += 2; q += 1 }
     java.util.Arrays.sort(d, 0, k)
     if (k == 0) 0.0 else d(math.min(k - 1, (Quantile * k).toInt))
   }
