@@ -128,7 +128,8 @@ lazy val root = (project in file("."))
       // -h is moire's, not the launcher script's (whose usage text would exit 1)
       """_moire_args=(); for a in "$@"; do [[ "$a" == "-h" ]] && a=--help; _moire_args+=("$a"); done; set -- "${_moire_args[@]}"""",
       "no_version_check=1",
-      """[[ -f "$lib_dir/moire.jsa" ]] && addJava "-XX:SharedArchiveFile=$lib_dir/moire.jsa"""",
+      // a stage copied elsewhere (its jars at other paths) starts without the archive, and says nothing of it
+      """[[ -f "$lib_dir/moire.jsa" ]] && { addJava "-XX:SharedArchiveFile=$lib_dir/moire.jsa"; addJava "-Xlog:cds*=off"; }""",
       """case " $* " in *" --help "*) addJava "-XX:TieredStopAtLevel=1"; addJava "-XX:+UseSerialGC";; esac"""),
     stage := {
       val dir = stage.value
