@@ -1,7 +1,5 @@
 package moire.explain
 
-import java.util.stream.IntStream
-
 /** The normal equations' sums of a design (X'X and X'y over both channels) in one pass over the samples: blocks of
   * rows, each block's products of every column pair while the block is in cache, blocks on all cores. The blocks are
   * fixed by the sample count and their sums added in order, so the numbers do not depend on the cores.
@@ -9,8 +7,6 @@ import java.util.stream.IntStream
 object Gram {
   /** Rows per block (a block of 30 columns on both channels stays in a core's cache). */
   val Block = 2048
-  /** Rows below which one thread does it all (a task costs more than the sums it would split). */
-  val Parallel = 1 << 15
 
   /** g(i)(j) = sum x_i x_j and r(i) = sum x_i y over the rows (all, or the rows `idx` when it is not null). */
   def of(cols: IndexedSeq[Col], ys: Array[Double], yc: Array[Double], idx: Array[Int] = null): (Array[Array[Double]], Array[Double]) = {
@@ -18,13 +14,7 @@ object Gram {
     val k = cols.length
     val rows = if (idx != null) idx.length else if (ys != null) ys.length else cols.find(_.s != null).map(_.s.length).getOrElse(cols.head.c.length)
     val as = cols.map(_.s).toArray; val ac = cols.map(_.c).toArray
-    val m = k * (k + 1) / 2 + k
-    val blocks = (rows + Block - 1) / Block
-    val part = new Array[Array[Double]](blocks)
-    val body: java.util.function.IntConsumer = b => part(b) = block(as, ac, ys, yc, idx, b * Block, math.min(rows, (b + 1) * Block), m)
-    if (rows >= Parallel) IntStream.range(0, blocks).parallel().forEach(body) else (0 until blocks).foreach(body.accept)
-    val sum = new Array[Double](m)
-    part.foreach { p => var q = 0; while (q < m) { sum(q) += p(q); q += 1 } }
+    val sum = Par.sums(rows, k * (k + 1) / 2 + k, Block)((lo, hi, out) => block(as, ac, ys, yc, idx, lo, hi, out))
     val g = Array.ofDim[Double](k, k); val r = new Array[Double](k)
     var q = 0
     for (i <- 0 until k) { for (j <- 0 to i) { g(i)(j) = sum(q); g(j)(i) = sum(q); q += 1 }; r(i) = sum(q); q += 1 }
@@ -36,28 +26,20 @@ object Gram {
     val k = left.size; val l = right.size
     if (FitPath.isReference) { val (g, _) = plain(left ++ right, null, null, null); return Array.tabulate(k, l)((a, b) => g(a)(k + b)) }
     val rows = (left ++ right).find(_.s != null).map(_.s.length).getOrElse((left ++ right).head.c.length)
-    val blocks = (rows + Block - 1) / Block
-    val part = new Array[Array[Double]](blocks)
-    val body: java.util.function.IntConsumer = { bl =>
-      val lo = bl * Block; val hi = math.min(rows, lo + Block); val o = new Array[Double](k * l)
+    val sum = Par.sums(rows, k * l, Block) { (lo, hi, o) =>
       var a = 0
       while (a < k) {
         var b = 0
         while (b < l) { o(a * l + b) = dot(left(a).s, right(b).s, lo, hi) + dot(left(a).c, right(b).c, lo, hi); b += 1 }
         a += 1
       }
-      part(bl) = o
     }
-    if (rows >= Parallel) IntStream.range(0, blocks).parallel().forEach(body) else (0 until blocks).foreach(body.accept)
-    val sum = new Array[Double](k * l)
-    part.foreach { p => var q = 0; while (q < k * l) { sum(q) += p(q); q += 1 } }
     Array.tabulate(k, l)((a, b) => sum(a * l + b))
   }
 
   /** One block's sums, in the order (0,0), y0, (1,0), (1,1), y1, ... : pair (i, j <= i), then column i against y. */
   private def block(as: Array[Array[Double]], ac: Array[Array[Double]], ys: Array[Double], yc: Array[Double], idx: Array[Int],
-                    lo: Int, hi: Int, m: Int): Array[Double] = {
-    val out = new Array[Double](m)
+                    lo: Int, hi: Int, out: Array[Double]): Unit = {
     val k = as.length
     // a block's rows gathered when they are a fold (`idx`): the products then run over contiguous copies
     def rows(a: Array[Double]): Array[Double] =
@@ -73,7 +55,6 @@ object Gram {
       out(q) = dot(s(i), y1, from, to) + dot(c(i), y2, from, to); q += 1
       i += 1
     }
-    out
   }
 
   /** The reference path: each pair's products over all rows in turn, on one thread. */

@@ -11,20 +11,20 @@ object Par {
   /** Samples below which one thread does the loop. */
   val Min = 1 << 15
 
-  /** body(lo, hi) over consecutive blocks covering [0, n), on all cores when n is large. */
-  def blocks(n: Int)(body: (Int, Int) => Unit): Unit = {
+  /** body(lo, hi) over consecutive blocks of `block` samples covering [0, n), on all cores when n is large. */
+  def blocks(n: Int, block: Int = Block)(body: (Int, Int) => Unit): Unit = {
     if (FitPath.isReference) { body(0, n); return }
-    val k = (n + Block - 1) / Block
-    val f: java.util.function.IntConsumer = b => body(b * Block, math.min(n, (b + 1) * Block))
+    val k = (n + block - 1) / block
+    val f: java.util.function.IntConsumer = b => body(b * block, math.min(n, (b + 1) * block))
     if (n >= Min) IntStream.range(0, k).parallel().forEach(f) else { var b = 0; while (b < k) { f.accept(b); b += 1 } }
   }
 
   /** The sums of m accumulators over [0, n): part(lo, hi, acc) adds block [lo, hi) into acc (zeroed); blocks added in order. */
-  def sums(n: Int, m: Int)(part: (Int, Int, Array[Double]) => Unit): Array[Double] = {
+  def sums(n: Int, m: Int, block: Int = Block)(part: (Int, Int, Array[Double]) => Unit): Array[Double] = {
     if (FitPath.isReference) { val a = new Array[Double](m); part(0, n, a); return a }
-    val k = (n + Block - 1) / Block
+    val k = (n + block - 1) / block
     val parts = Array.ofDim[Double](k, m)
-    blocks(n)((lo, hi) => part(lo, hi, parts(lo / Block)))
+    blocks(n, block)((lo, hi) => part(lo, hi, parts(lo / block)))
     val out = new Array[Double](m)
     var b = 0
     while (b < k) { var j = 0; while (j < m) { out(j) += parts(b)(j); j += 1 }; b += 1 }
