@@ -21,7 +21,8 @@ class ChannelResponseSpec extends AnyFlatSpec with Matchers {
   "ChannelResponse" should "equal its definition for skews, cut-offs on either channel and both, at any speed" in {
     val rnd = new scala.util.Random(3)
     val specs = Seq(ModelSpec(), ModelSpec(hasSkew = true, skewS = 20e-9), ModelSpec(bw = Map("sin" -> 600e3)),
-      ModelSpec(bw = Map("cos" -> 80e3, "both" -> 1e6)), ModelSpec(hasSkew = true, skewS = -3e-7, bw = Map("sin" -> 5e3, "cos" -> 2e6)))
+      ModelSpec(bw = Map("cos" -> 80e3, "both" -> 1e6)),
+      ModelSpec(hasSkew = true, skewS = 20e-9, bw = Map("both" -> 600e3)), ModelSpec(hasSkew = true, skewS = -3e-7, bw = Map("sin" -> 5e3, "cos" -> 2e6)))
     var worst = 0.0
     for (sp <- specs; _ <- 0 until 2000) {
       val f = (if (rnd.nextBoolean()) -1 else 1) * math.pow(10, 6 * rnd.nextDouble()); val a = 2 * math.Pi * rnd.nextDouble()

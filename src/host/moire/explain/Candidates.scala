@@ -18,6 +18,8 @@ final class Candidates(val engine: SignalEngine) {
   /** Linear term fitted with the default part on the current residual. */
   def linear(t: Term): Option[(Cand, LinSol)] = {
     if (spec.terms.contains(t)) return None
+    val white = !spec.slopeNoise && cens.censS == null && cens.censC == null
+    if (white && !FitPath.isReference) LinearFamily.of(t).foreach { case (f, ch) => return variant(t, f, ch) }
     val cols = baseCols(s1, s2, c1, c2) ++ termCols(t)
     val s = LinearFit.solve(cols, resS, resC)
     if (!s.ok) return None
@@ -35,10 +37,33 @@ final class Candidates(val engine: SignalEngine) {
     Some((Cand(t.name, ch, spec.copy(terms = spec.terms :+ t), nz.m2ll, t.params, p, u, where), s))
   }
 
+  /** Term t, the variant on channel `ch` of family f, from the family's sums (white noise, nothing censored). */
+  private def variant(t: Term, f: Term, ch: String): Option[(Cand, LinSol)] = {
+    val fam = families.computeIfAbsent(f, _ => LinearFamily(baseCols(s1, s2, c1, c2) ++ termCols(f), resS, resC, yy._1, yy._2))
+    // the default part's columns as they are, the family's with the parts on the variant's channel
+    def sin(j: Int) = j < 6 || ch != "cos"; def cos(j: Int) = j < 6 || ch != "sin"
+    val use = fam.hasSin.indices.filter(j => (sin(j) && fam.hasSin(j)) || (cos(j) && fam.hasCos(j)))
+    val (s, a, b) = fam.fit(use, j => sin(j) && fam.hasSin(j), j => cos(j) && fam.hasCos(j))
+    if (!s.ok) return None
+    val v = (a + b) / (2.0 * n)
+    val bt = s.beta.drop(6); val sd = (6 until s.beta.length).map(i => math.sqrt(math.max(0, s.inv(i)(i)) * v)).toArray
+    val (p, u, where, c) = t.effect.describe(t, bt, sd, e)
+    Some((Cand(t.name, c, spec.copy(terms = spec.terms :+ t), Noise.white(a, b, n).m2ll, t.params, p, u, where), s))
+  }
+  private val families = new java.util.concurrent.ConcurrentHashMap[Term, LinearFamily]()
+  /** Each channel's residual sum of squares (every family's fit starts from it). */
+  private lazy val yy = (sumSq(resS), sumSq(resC))
+
   private def sub(a: Array[Double], b: Array[Double]) = { val o = new Array[Double](n); var i = 0; while (i < n) { o(i) = a(i) - b(i); i += 1 }; o }
 
   def all(onStep: () => Unit): Seq[Cand] = {
     val timing = sys.props.contains("moire.timing")
+    // the linear families whose columns are a function of the sample, from one pass (their searches read them off)
+    if (!spec.slopeNoise && cens.censS == null && cens.censC == null && !FitPath.isReference) {
+      val t0 = System.nanoTime()
+      LinearSweep(e, effects.Harmonic.Orders, yy._1, yy._2).foreach { case (t, f) => families.put(t, f) }
+      if (timing) System.err.println(f"candidate linear-sweep ${(System.nanoTime() - t0) / 1e6}%.0f ms")
+    }
     val found = new Array[Seq[Cand]](searches.size)
     def run(k: Int): Unit = {
       val (name, search) = searches(k); val t0 = System.nanoTime()
@@ -148,9 +173,9 @@ final class Candidates(val engine: SignalEngine) {
   }
 
   /** Full -2 ln L of a spec with modified fundamentals (current noise model), with the fitted default part. */
-  def fullM2ll(sp: ModelSpec): Double = {
-    // white noise, nothing censored: the streaming profile on every sample is the same fit, without arrays
-    if (!sp.slopeNoise && cens.censS == null && cens.censC == null) return profile(sp, 1)
+  def fullM2ll(sp: ModelSpec, white: => Double): Double = {
+    // white noise, nothing censored: the streaming profile on every sample is the same fit, without arrays (`white`)
+    if (!sp.slopeNoise && cens.censS == null && cens.censC == null) return white
     val a1 = new Array[Double](n); val a2 = new Array[Double](n); val b1 = new Array[Double](n); val b2 = new Array[Double](n)
     fundamentals(sp, a1, a2, b1, b2)
     val cols = baseCols(a1, a2, b1, b2)
@@ -175,9 +200,10 @@ final class Candidates(val engine: SignalEngine) {
     if (!(hi > lo)) return None
     val tau = minimize(x => profile(spec.copy(hasSkew = true, skewS = x), stride), lo, hi)
     val sp = spec.copy(hasSkew = true, skewS = tau)
-    val sd = curvatureSd(x => profile(spec.copy(hasSkew = true, skewS = x), 1), tau, math.max(sd0, 1e-12))
+    val full = Candidates.memo(x => profile(spec.copy(hasSkew = true, skewS = x), 1))
+    val sd = curvatureSd(full, tau, math.max(sd0, 1e-12))
     val (p, u, where) = (Map("skew_s" -> tau), Map("skew_s" -> sd), f"against speed: cos channel phase, ${fMin / 1e3}%.1f to ${fMax / 1e3}%.1f kHz")
-    Some(Cand(ChannelSkew.name, "cos", sp, fullM2ll(sp), 1, p, u, where))
+    Some(Cand(ChannelSkew.name, "cos", sp, fullM2ll(sp, full(tau)), 1, p, u, where))
   }
 
   /** First-order low-pass on one channel or both, searched over 1 / cut-off. */
@@ -189,10 +215,11 @@ final class Candidates(val engine: SignalEngine) {
     if (xs <= 1 / (50 * fMax)) return None
     val fc = 1 / xs
     val sp = spec.copy(bw = spec.bw + (ch -> fc))
-    val sdx = curvatureSd(x => profile(spec.copy(bw = spec.bw + (ch -> 1 / x)), 1), xs, xs * 0.05)
+    val full = Candidates.memo(x => profile(spec.copy(bw = spec.bw + (ch -> 1 / x)), 1))
+    val sdx = curvatureSd(full, xs, xs * 0.05)
     val (p, u, where) = (Map("cutoff_hz" -> fc), Map("cutoff_hz" -> sdx / (xs * xs)),
       s"against speed: ${if (ch == "both") "amplitude of both channels" else s"$ch channel amplitude and phase"}")
-    Some(Cand(Bandwidth.name, ch, sp, fullM2ll(sp), 1, p, u, where))
+    Some(Cand(Bandwidth.name, ch, sp, fullM2ll(sp, full(xs)), 1, p, u, where))
   }
 
   /** Noise variance growing with a slope (ds, dc): the fitted scale (rms of the slope's factor), its sd from the Fisher
@@ -201,10 +228,13 @@ final class Candidates(val engine: SignalEngine) {
   private def slopeNoise(ds: Array[Double], dc: Array[Double]): Option[(Double, Double, Double, Double)] = {
     val nz = Noise.fit(resS, resC, (ds, dc), cens)
     if (nz.jitter2 <= 0) return None
-    var info = 0.0; var i = 0
-    while (i < n) {
-      val a = ds(i) * ds(i) / (nz.varS + nz.jitter2 * ds(i) * ds(i)); val b = dc(i) * dc(i) / (nz.varC + nz.jitter2 * dc(i) * dc(i))
-      info += 0.5 * (a * a + b * b); i += 1
+    val info = Par.sum(n) { (lo, hi) =>
+      var f = 0.0; var i = lo
+      while (i < hi) {
+        val a = ds(i) * ds(i) / (nz.varS + nz.jitter2 * ds(i) * ds(i)); val b = dc(i) * dc(i) / (nz.varC + nz.jitter2 * dc(i) * dc(i))
+        f += 0.5 * (a * a + b * b); i += 1
+      }
+      f
     }
     val r = math.sqrt(nz.jitter2)
     Some((r, (1 / math.sqrt(info)) / (2 * r), math.sqrt(0.5 * (nz.varS + nz.varC)), nz.m2ll))
@@ -242,9 +272,7 @@ final class Candidates(val engine: SignalEngine) {
       val tau = math.pow(10, lt)
       val cols = base ++ warmupCols(idx.map(i => math.exp(-i / fs / tau)), uS(_), uC(_))
       val sol = LinearFit.solve(cols, ys, yc)
-      val rs = LinearFit.combine(cols, sol.beta, sinCh = true, ys.length); val rc = LinearFit.combine(cols, sol.beta, sinCh = false, ys.length)
-      var rss = 0.0; var i = 0
-      while (i < ys.length) { val a = ys(i) - rs(i); val b = yc(i) - rc(i); rss += a * a + b * b; i += 1 }
+      val rss = LinearFit.rss(cols, sol.beta, ys, sinCh = true) + LinearFit.rss(cols, sol.beta, yc, sinCh = false)
       2.0 * n * math.log(math.max(1e-300, rss / (2.0 * ys.length)))
     }
     val lo = math.log10(span / 100); val hi = math.log10(3 * span)
@@ -259,7 +287,8 @@ final class Candidates(val engine: SignalEngine) {
     val m = Integer.highestOneBit(math.min(n, 1 << 20))
     if (m < 64) return None
     val ps = new Array[Double](m / 2)
-    for (r <- Seq(resS, resC)) { val p = Fft.power(r, m); for (k <- 1 until m / 2) ps(k) += p(k) }
+    // both channels' power by one complex FFT
+    val both = Fft.powerSum(resS, resC, m); for (k <- 1 until m / 2) ps(k) = both(k)
     val k0 = (4 until m / 2).maxBy(ps(_))
     val bin = fs / m
     if (spec.terms.exists { case Term.Interference(h) => math.abs(h - k0 * bin) < 3 * bin; case _ => false }) return None
@@ -280,22 +309,25 @@ final class Candidates(val engine: SignalEngine) {
     val adc = rec.adc
     val out = Seq.newBuilder[Cand]
     for ((codes, ch) <- Seq((rec.sin, 0), (rec.cos, 1))) {
-      val p = if (ch == 0) predS else predC
-      val pc = new Array[Int](n); var i = 0
-      while (i < n) { pc(i) = adc.pins(adc.signedCode(p(i)).code); i += 1 }
+      // the prediction (the repaired data less the residual) read where it is needed, not made as an array
+      val (rp, rr) = if (ch == 0) (repS, resS) else (repC, resC)
       val need = math.max(20, n / 1000)
       val bits = adc.bits
-      val m1 = new Array[Int](bits); val p1 = new Array[Int](bits); val diffM = new Array[Int](bits); val diffP = new Array[Int](bits)
-      i = 0
-      while (i < n) {
-        val c = codes(i); val q = pc(i); var b = 0
-        while (b < bits) {
-          m1(b) += (c >> b) & 1; p1(b) += (q >> b) & 1
-          if (b + 1 < bits) { diffM(b) += ((c >> b) ^ (c >> (b + 1))) & 1; diffP(b) += ((q >> b) ^ (q >> (b + 1))) & 1 }
-          b += 1
+      // per bit: samples with it set in the codes and in the prediction's codes, and with it unlike the next bit
+      val h = Par.sums(n, 4 * bits) { (a, z, m) =>
+        var i = a
+        while (i < z) {
+          val c = codes(i); val q = adc.pins(adc.signedCode(rp(i) - rr(i)).code); var b = 0
+          while (b < bits) {
+            m(b) += (c >> b) & 1; m(bits + b) += (q >> b) & 1
+            if (b + 1 < bits) { m(2 * bits + b) += ((c >> b) ^ (c >> (b + 1))) & 1; m(3 * bits + b) += ((q >> b) ^ (q >> (b + 1))) & 1 }
+            b += 1
+          }
+          i += 1
         }
-        i += 1
       }
+      def counts(at: Int) = Array.tabulate(bits)(b => h(at * bits + b).toLong)
+      val m1 = counts(0); val p1 = counts(1); val diffM = counts(2); val diffP = counts(3)
       for (b <- coarseBits until bits) {
         if (m1(b) == 0 && p1(b) > need) out ++= faultCand(Fault(ch, b, 0, -1))
         else if (m1(b) == n && n - p1(b) > need) out ++= faultCand(Fault(ch, b, 1, -1))
@@ -322,10 +354,19 @@ final class Candidates(val engine: SignalEngine) {
     val (ps, pc) = (predS, predC)
     val raw = repair(spec, ps, pc, censor = false)
     for ((y, p, ch) <- Seq((raw.s, ps, 0), (raw.c, pc, 1)) if !spec.clips.exists(_.ch == ch)) {
-      val hi = y.max; val lo = y.min
-      val atHi = y.count(_ >= hi - 0.5 * lsb); val atLo = y.count(_ <= lo + 0.5 * lsb)
+      var hi = Double.NegativeInfinity; var lo = Double.PositiveInfinity; var i = 0
+      while (i < n) { if (y(i) > hi) hi = y(i); if (y(i) < lo) lo = y(i); i += 1 }
+      // the samples at each extreme code, and those the model puts beyond it
+      val k = Par.sums(n, 4) { (a, b, m) =>
+        var i = a
+        while (i < b) {
+          if (y(i) >= hi - 0.5 * lsb) m(0) += 1; if (y(i) <= lo + 0.5 * lsb) m(1) += 1
+          if (p(i) > hi + lsb) m(2) += 1; if (p(i) < lo - lsb) m(3) += 1
+          i += 1
+        }
+      }
+      val (atHi, atLo, overHi, underLo) = (k(0), k(1), k(2), k(3))
       val need = math.max(20, n / 2000)
-      val overHi = p.count(_ > hi + lsb); val underLo = p.count(_ < lo - lsb)
       val useHi = hi < railHi && atHi > need && overHi > need
       val useLo = lo > railLo && atLo > need && underLo > need
       if (useHi || useLo) {
@@ -344,6 +385,12 @@ final class Candidates(val engine: SignalEngine) {
 }
 
 object Candidates {
+  /** f with its values kept (a profile on every sample is evaluated at the same point more than once). */
+  def memo(f: Double => Double): Double => Double = {
+    val seen = scala.collection.mutable.Map.empty[Double, Double]
+    x => seen.getOrElseUpdate(x, f(x))
+  }
+
   /** Samples up to which the searches run side by side (beyond, their columns would hold too much of the heap at once). */
   val SideBySide: Int = 1 << 22
 

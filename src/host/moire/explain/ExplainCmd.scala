@@ -121,8 +121,11 @@ object ExplainCmd {
         checkSignals(p, rec)
         val r = SignalExplain.run(p.toString, rec, givenEffects, progress, materiality = materiality)
         progress.close()
-        plotFolder.foreach(d => plotFiles = Plots.signals(r, d, stem))
-        extra :+= "interpolation_error" -> InterpolationError.of(rec, r.engine).json
+        val t0 = System.nanoTime()
+        val ie = InterpolationError.of(rec, r.engine)
+        plotFolder.foreach(d => plotFiles = Plots.signals(r, d, stem, ie))
+        extra :+= "interpolation_error" -> ie.json
+        if (sys.props.contains("moire.timing")) System.err.println(f"interpolation error and plots ${(System.nanoTime() - t0) / 1e6}%.0f ms")
         // Board outputs (a `position` column) against the RTL run on the recorded codes.
         rtl.filter(_ => rec.extra.contains("position")).map { opts =>
           val (f, notes) = BoardCheck.run(p.toString, rec, opts, say)

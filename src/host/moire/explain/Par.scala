@@ -31,6 +31,14 @@ object Par {
     out
   }
 
+  /** body(k) for each of k independent parts (segments) that together cover `samples` samples, on all cores when
+    * they are many; each part is done by one thread, so the numbers do not depend on the cores.
+    */
+  def each(k: Int, samples: Long)(body: Int => Unit): Unit = {
+    if (FitPath.isReference || samples < Min || k < 2) { var j = 0; while (j < k) { body(j); j += 1 }; return }
+    IntStream.range(0, k).parallel().forEach(j => body(j))
+  }
+
   /** One sum over [0, n) (see `sums`). */
   def sum(n: Int)(part: (Int, Int) => Double): Double = sums(n, 1)((lo, hi, a) => a(0) += part(lo, hi))(0)
 }

@@ -43,42 +43,56 @@ object Plots {
   /** Sample i's fringe phase in degrees (0 to 360). */
   private def fringeDeg(e: SignalEngine, i: Int): Double = 360 * (e.phase(i) - math.floor(e.phase(i)))
 
-  def signals(r: SignalExplain.Result, dir: os.Path, stem: String): Seq[os.Path] = {
+  def signals(r: SignalExplain.Result, dir: os.Path, stem: String, ie: InterpolationError): Seq[os.Path] = {
     val e = r.engine; val n = e.n; val lsb = e.lsb
     val after = Snapshot.of("final model", e.resS, e.resC)
     val snaps = Seq(r.before, after)
-    val out = Seq.newBuilder[os.Path]
+    // each plot made and written on its own: side by side on all cores, listed in this order
+    val plots = Seq.newBuilder[() => os.Path]
     // time
-    val ct = chart(s"$stem: residual rms against time", "time (s)", "residual rms (LSB)")
-    for (s <- snaps; (res, ch) <- Seq((s.resS, "sin"), (s.resC, "cos"))) {
-      val (x, y) = binned(j => j * s.stride / e.fs, j => res(j) / lsb, s.size, 0, n / e.fs, 64, rms = true); line(ct, s"$ch, ${s.label}", x, y)
+    plots += { () =>
+      val ct = chart(s"$stem: residual rms against time", "time (s)", "residual rms (LSB)")
+      for (s <- snaps; (res, ch) <- Seq((s.resS, "sin"), (s.resC, "cos"))) {
+        val (x, y) = binned(j => j * s.stride / e.fs, j => res(j) / lsb, s.size, 0, n / e.fs, 64, rms = true); line(ct, s"$ch, ${s.label}", x, y)
+      }
+      save(ct, dir / s"${stem}_residual_time.png")
     }
-    out += save(ct, dir / s"${stem}_residual_time.png")
     // fringe phase
-    val cp = chart(s"$stem: mean residual against fringe phase", "fringe phase (degree)", "mean residual (LSB)")
-    for (s <- snaps; (res, ch) <- Seq((s.resS, "sin"), (s.resC, "cos"))) {
-      val (x, y) = binned(j => fringeDeg(e, j * s.stride), j => res(j) / lsb, s.size, 0, 360, 72); line(cp, s"$ch, ${s.label}", x, y)
+    plots += { () =>
+      val cp = chart(s"$stem: mean residual against fringe phase", "fringe phase (degree)", "mean residual (LSB)")
+      for (s <- snaps; (res, ch) <- Seq((s.resS, "sin"), (s.resC, "cos"))) {
+        val (x, y) = binned(j => fringeDeg(e, j * s.stride), j => res(j) / lsb, s.size, 0, 360, 72); line(cp, s"$ch, ${s.label}", x, y)
+      }
+      save(cp, dir / s"${stem}_residual_phase.png")
     }
-    out += save(cp, dir / s"${stem}_residual_phase.png")
     // spectrum
-    out += spectrum(s"$stem: residual spectrum", snaps, e, dir / s"${stem}_residual_spectrum.png")
+    plots += (() => spectrum(s"$stem: residual spectrum", snaps, e, dir / s"${stem}_residual_spectrum.png"))
     // effects
-    for (((f, b, a), k) <- r.steps.zipWithIndex) out += effect(f, b, a, e, dir / s"${stem}_effect_${k + 1}_${f.effect}.png", stem)
+    for (((f, b, a), k) <- r.steps.zipWithIndex) plots += (() => effect(f, b, a, e, dir / s"${stem}_effect_${k + 1}_${f.effect}.png", stem))
     // the Lissajous figure before and after the Heydemann correction, the interpolation error
-    val ie = InterpolationError.of(e.rec, e)
-    out += save(LissajousPlot.before(s"$stem: Lissajous figure", e.yc, e.ys, ie.ellipse), dir / s"${stem}_lissajous_before.png")
-    ie.ellipse.foreach(el => out += save(LissajousPlot.after(s"$stem: Lissajous figure after correction", e.yc, e.ys, el), dir / s"${stem}_lissajous_after.png"))
-    out += save(InterpolationPlot.chart(s"$stem: interpolation error", ie), dir / s"${stem}_interpolation_error.png")
-    out.result()
+    plots += (() => save(LissajousPlot.before(s"$stem: Lissajous figure", e.yc, e.ys, ie.ellipse), dir / s"${stem}_lissajous_before.png"))
+    ie.ellipse.foreach(el => plots += (() => save(LissajousPlot.after(s"$stem: Lissajous figure after correction", e.yc, e.ys, el), dir / s"${stem}_lissajous_after.png")))
+    plots += (() => save(InterpolationPlot.chart(s"$stem: interpolation error", ie), dir / s"${stem}_interpolation_error.png"))
+    val todo = plots.result().toArray
+    val out = new Array[os.Path](todo.length)
+    // every plot runs to its end (each cleans up after itself when its write fails); the first failure is thrown after
+    val failed = new Array[Throwable](todo.length)
+    java.util.stream.IntStream.range(0, todo.length).parallel().forEach(k => try out(k) = todo(k)() catch { case x: Throwable => failed(k) = x })
+    failed.find(_ != null).foreach(x => throw x)
+    out.toSeq
   }
 
   def spectrum(title: String, snaps: Seq[Snapshot], e: SignalEngine, path: os.Path): os.Path = {
     val m = Integer.highestOneBit(math.min(e.n, 1 << 18)); val c = chart(title, "frequency (kHz)", "amplitude (dB LSB)")
     for (s <- snaps) {
-      val p = Fft.power(s.headSin, m); val q = Fft.power(s.headCos, m)
-      val g = math.max(1, p.length / 1500)
-      val xs = (0 until p.length / g).map(k => (k * g + g / 2) * e.fs / m / 1e3).toArray
-      val ys = (0 until p.length / g).map { k => val mx = (k * g until (k + 1) * g).map(j => p(j) + q(j)).max; 10 * math.log10(2 * mx / m.toDouble / m / (e.lsb * e.lsb) + 1e-30) }.toArray
+      val pq = Fft.powerSum(s.headSin, s.headCos, m) // both channels' power by one FFT
+      val g = math.max(1, pq.length / 1500)
+      val xs = Doubles.tabulate(pq.length / g)(k => (k * g + g / 2) * e.fs / m / 1e3)
+      val ys = Doubles.tabulate(pq.length / g) { k =>
+        var mx = Double.NegativeInfinity; var j = k * g
+        while (j < (k + 1) * g) { mx = math.max(mx, pq(j)); j += 1 }
+        10 * math.log10(2 * mx / m.toDouble / m / (e.lsb * e.lsb) + 1e-30)
+      }
       line(c, s.label, xs, ys)
     }
     save(c, path)

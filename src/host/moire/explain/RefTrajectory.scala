@@ -36,8 +36,10 @@ final class RefTrajectory(val ref: Reference, val fs: Double, val kFixed: Option
   def params: Int = 1 + (if (kFixed.isEmpty) 1 else 0) + (if (hasLag) 1 else 0)
 
   def eval(phase: Array[Double], freq: Array[Double]): Unit = {
-    var i = 0
-    while (i < n) { phase(i) = offset + k * x(i) + kLag * dx(i); freq(i) = k * (dx(i) + dxMean); i += 1 }
+    Par.blocks(n) { (lo, hi) =>
+      var i = lo
+      while (i < hi) { phase(i) = offset + k * x(i) + kLag * dx(i); freq(i) = k * (dx(i) + dxMean); i += 1 }
+    }
   }
 
   /** Adds the weighted least-squares correction of offset (and k, lag) to the phase difference d (periods). */

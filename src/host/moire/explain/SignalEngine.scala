@@ -113,10 +113,11 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
   /** Initial ellipse from the extremes, raw phase by atan2, first trajectory, then the full default fit. */
   def init(): Unit = {
     val (os, as) = mid(ys); val (oc, ac) = mid(yc)
-    val raw = new Array[Double](n)
+    // the angle of each sample on all cores, then unwrapped in order
+    val raw = Doubles.tabulate(n)(i => math.atan2((ys(i) - os) / as, (yc(i) - oc) / ac) / (2 * math.Pi))
     var prev = 0.0; var turns = 0.0; var i = 0
     while (i < n) {
-      val p = math.atan2((ys(i) - os) / as, (yc(i) - oc) / ac) / (2 * math.Pi)
+      val p = raw(i)
       if (i > 0) { val d = p - prev; if (d > 0.5) turns -= 1 else if (d < -0.5) turns += 1 }
       raw(i) = p + turns; prev = p; i += 1
     }
@@ -132,8 +133,16 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
     def freeFit(): Unit = {
       def free(len: Int): Unit = start(new Trajectory(n, len, fs), raw)
       val lens = Seq(16.0, 6.0, 2.5).map(p => Trajectory.segmentLength(n, fs, typicalHz, p)).distinct
-      val best = if (lens.size == 1) lens.head else lens.minBy { l => free(l); bic }
-      if (lens.size == 1 || best != lens.last || FitPath.isReference) free(best) // the last one tried is the engine's state already
+      if (lens.size == 1) { free(lens.head); return }
+      // each length's fitted trajectory and repaired data are kept: the best is restored and solved once, not fitted again
+      final case class Fitted(len: Int, bic: Double, traj: PhaseTrack, repS: Array[Double], repC: Array[Double], cens: Repaired)
+      val fitted = lens.map { l => free(l); Fitted(l, bic, _traj, _repS, _repC, _cens) }
+      val best = fitted.minBy(_.bic)
+      if (FitPath.isReference) free(best.len)
+      else if (best ne fitted.last) {
+        _traj = best.traj; evalTraj(); _repS = best.repS; _repC = best.repC; _cens = best.cens
+        refit(1, refineTraj = false)
+      }
     }
     refColumn.foreach { r =>
       // the smoothing of the reference: the window with the lowest BIC (a noisy reference wants a wide one)
@@ -177,8 +186,8 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
   }
 
   private def mid(a: Array[Double]): (Double, Double) = {
-    var lo = Double.MaxValue; var hi = -Double.MaxValue
-    a.foreach { v => if (v < lo) lo = v; if (v > hi) hi = v }
+    var lo = Double.MaxValue; var hi = -Double.MaxValue; var i = 0
+    while (i < a.length) { val v = a(i); if (v < lo) lo = v; if (v > hi) hi = v; i += 1 }
     (0.5 * (lo + hi), math.max(0.5 * (hi - lo), lsb))
   }
 
@@ -189,7 +198,7 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
   private var _version = 0L
 
   def evalTraj(): Unit = {
-    _version += 1
+    _version += 1; phaseCount += 1
     traj.eval(phase, freq)
     range = null
     setFundamentals()
@@ -199,7 +208,7 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
   /** The 2 % and 98 % points of the fringe frequency's magnitude (Hz): the speed range the record spans. */
   def speedRange: (Double, Double) = {
     if (range == null) {
-      val a = freq.map(math.abs); java.util.Arrays.sort(a)
+      val a = Doubles.tabulate(n)(i => math.abs(freq(i))); java.util.Arrays.parallelSort(a)
       def pct(q: Double) = a(math.min(n - 1, (q * n).toInt))
       range = (pct(0.02), pct(0.98))
     }
@@ -213,8 +222,14 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
   /** 2 pi times the fractional fringe phase of sample i. */
   @inline final def angle(i: Int): Double = 2 * math.Pi * (phase(i) - math.floor(phase(i)))
 
+  // the phase's changes, and the phase and spec the fundamentals were made for (made again only when either changed)
+  private var phaseCount = 0L
+  private var madeFor: (Long, Boolean, Double, Map[String, Double]) = null
   /** s1, s2, c1, c2 for the current phase and spec. */
   private def setFundamentals(): Unit = {
+    val key = (phaseCount, spec.hasSkew, spec.skewS, spec.bw)
+    if (key == madeFor && !FitPath.isReference) return
+    madeFor = key
     if (!spec.hasSkew && spec.bw.isEmpty) {
       _s1 = plainSin; _s2 = plainCos; _c1 = plainSin; _c2 = plainCos
       Par.blocks(n) { (lo, hi) =>
@@ -295,15 +310,35 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
       def col(g: Int => Double, f: Double => Double) = Doubles.tabulate(n)(i => g(i) * (2 * math.Pi * f(m * th(i))))
       IndexedSeq(Col(col(gS(_), math.cos), col(gC(_), math.cos)), Col(col(gS(_), math.sin), col(gC(_), math.sin)))
     case Term.Interference(hz) =>
-      val a = Doubles.tabulate(n)(i => math.sin(2 * math.Pi * hz * i / fs)); val b = Doubles.tabulate(n)(i => math.cos(2 * math.Pi * hz * i / fs))
+      val (a, b) = line(hz)
       IndexedSeq(Col(a, null), Col(b, null), Col(null, a), Col(null, b))
   }
 
+  /** sin and cos of a fixed-frequency line at every sample: the last one made is kept while two arrays of the record's
+    * length fit in a sixteenth of the heap (a refit makes the columns of an accepted pickup at every iteration; they do not
+    * change with the fit).
+    */
+  private def line(hz: Double): (Array[Double], Array[Double]) = {
+    val k = lastLine
+    if (k != null && k._1 == hz) return (k._2, k._3)
+    val a = new Array[Double](n); val b = new Array[Double](n)
+    if (FitPath.isReference) { var i = 0; while (i < n) { a(i) = math.sin(2 * math.Pi * hz * i / fs); b(i) = math.cos(2 * math.Pi * hz * i / fs); i += 1 } }
+    else {
+      // by rotation, each block from its first sample's sin and cos (the error stays near 1e-12 over a block)
+      val w = 2 * math.Pi * hz / fs; val sw = math.sin(w); val cw = math.cos(w)
+      Par.blocks(n) { (lo, hi) =>
+        var s = math.sin(w * lo); var c = math.cos(w * lo); var i = lo
+        while (i < hi) { a(i) = s; b(i) = c; val s1 = s * cw + c * sw; c = c * cw - s * sw; s = s1; i += 1 }
+      }
+    }
+    if (16L * n <= holdBytes / 2) lastLine = (hz, a, b) // a long record's are made again (memory before time)
+    (a, b)
+  }
+  @volatile private var lastLine: (Double, Array[Double], Array[Double]) = null
+
   /** Position along the travel in fringe periods, centred on the record's mean position. */
   def travel: Array[Double] = {
-    var m = 0.0; var i = 0
-    while (i < n) { m += phase(i); i += 1 }
-    m /= n
+    val m = Par.sum(n) { (lo, hi) => var s = 0.0; var i = lo; while (i < hi) { s += phase(i); i += 1 }; s } / n
     Doubles.tabulate(n)(i => phase(i) - m)
   }
 
@@ -319,44 +354,63 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
     o
   }
 
+  /** Each code's preimages under the faults `fl` (codes as the ADC's pins), a table over the converter's codes made
+    * once per set of faults.
+    */
+  private def preimages(fl: Seq[Fault]): Array[Array[Int]] = synchronized {
+    preTables.getOrElseUpdate(fl, Array.tabulate(if (rec.adc.bits <= 16) 1 << rec.adc.bits else 0)(c => preimagesOf(fl, c)))
+  }
+  private val preTables = scala.collection.mutable.Map.empty[Seq[Fault], Array[Array[Int]]]
+  private def preimagesOf(fl: Seq[Fault], code: Int): Array[Int] = fl.foldLeft(Seq(code))((cs, f) => cs.flatMap(f.preimages)).distinct.toArray
+
   /** Measured values with faults undone (closest preimage to the prediction); samples at a saturation level
     * (ADC rails or a clipping effect) are censored: their value is replaced by the prediction and `cens` holds
     * the distance from the prediction up to the level (NaN where not censored), for the Tobit likelihood.
     */
-  def repair(sp: ModelSpec, ps: Array[Double], pc: Array[Double], censor: Boolean = true): Repaired = {
+  def repair(sp: ModelSpec, ps: => Array[Double], pc: => Array[Double], censor: Boolean = true): Repaired = {
     val adc = rec.adc
-    def one(ch: Int, y: Array[Double], codes: Array[Int], p: Array[Double]): (Array[Double], Array[Double]) = {
+    // the predictions are made only when a channel has something to repair
+    lazy val predSin = ps; lazy val predCos = pc
+    def one(ch: Int, y: Array[Double], codes: Array[Int], pred: => Array[Double]): (Array[Double], Array[Double]) = {
       val fl = sp.faults.filter(_.ch == ch); val cl = sp.clips.filter(_.ch == ch)
       val lo = (railLo +: cl.map(_.lo)).max; val hi = (railHi +: cl.map(_.hi)).min
-      // copies made on the first change: an unchanged channel is `y` itself, no censored sample gives a null `cen`
-      var out = y; var cen: Array[Double] = null; var i = 0
-      def own(): Unit = if (out eq y) out = y.clone()
-      // each code's preimages under the faults (codes as the ADC's pins), made once per code seen
-      val pre = new Array[Array[Int]](1 << adc.bits)
-      def preimages(code: Int): Array[Int] = {
-        def make = fl.foldLeft(Seq(code))((cs, f) => cs.flatMap(f.preimages)).distinct.toArray
-        if (code < 0 || code >= pre.length) make else { if (pre(code) == null) pre(code) = make; pre(code) }
+      val ex = _excluded
+      val pre = if (fl.isEmpty) null else preimages(fl)
+      // the sample's value with the faults undone (the preimage of its code closest to the prediction)
+      @inline def value(i: Int, p: Array[Double]): Double = {
+        var v = y(i)
+        if (pre != null) {
+          val c0 = codes(i)
+          val cands = if (c0 >= 0 && c0 < pre.length) pre(c0) else preimagesOf(fl, c0)
+          var best = c0; var bestD = Double.MaxValue; var q = 0
+          while (q < cands.length) { val c = cands(q); val d = math.abs(adc.fromPins(c) * lsb - p(i)); if (d < bestD) { bestD = d; best = c }; q += 1 }
+          if (best != c0) v = adc.fromPins(best) * lsb
+        }
+        v
       }
-      while (i < n) {
-        if (_excluded != null && _excluded(i)) { own(); out(i) = p(i) }
-        else {
-        if (fl.nonEmpty) {
-          var best = codes(i); var bestD = Double.MaxValue
-          val cands = preimages(codes(i)); var q = 0
-          while (q < cands.length) { val c = cands(q); val v = adc.fromPins(c) * lsb; val d = math.abs(v - p(i)); if (d < bestD) { bestD = d; best = c }; q += 1 }
-          if (best != codes(i)) { own(); out(i) = adc.fromPins(best) * lsb }
+      @inline def censored(v: Double) = censor && (v >= hi - 0.5 * lsb || v <= lo + 0.5 * lsb)
+      // without faults most records change nothing: a scan first, so that an unchanged channel is `y` itself
+      if (pre == null && ex == null && !censor) return (y, null)
+      if (pre == null && ex == null && Par.sum(n) { (a, b) => var k = 0.0; var i = a; while (i < b) { if (censored(y(i))) k += 1; i += 1 }; k } == 0)
+        return (y, null)
+      val p = pred
+      val out = new Array[Double](n); val cen = new Array[Double](n)
+      val counts = Par.sums(n, 2) { (a, b, m) =>
+        var i = a
+        while (i < b) {
+          cen(i) = Double.NaN
+          if (ex != null && ex(i)) { out(i) = p(i); m(0) += 1 }
+          else {
+            val v = value(i, p)
+            if (censored(v)) { cen(i) = if (v >= hi - 0.5 * lsb) v - 0.5 * lsb - p(i) else p(i) - (v + 0.5 * lsb); out(i) = p(i); m(1) += 1 }
+            else { out(i) = v; if (v != y(i)) m(0) += 1 }
+          }
+          i += 1
         }
-        val v = out(i)
-        if (censor && (v >= hi - 0.5 * lsb || v <= lo + 0.5 * lsb)) {
-          if (cen == null) cen = Array.fill(n)(Double.NaN)
-          own(); cen(i) = if (v >= hi - 0.5 * lsb) v - 0.5 * lsb - p(i) else p(i) - (v + 0.5 * lsb); out(i) = p(i)
-        }
-        }
-        i += 1
       }
-      (out, cen)
+      if (counts(0) == 0 && counts(1) == 0) (y, null) else (out, if (counts(1) == 0) null else cen)
     }
-    val (a, ca) = one(0, ys, rec.sin, ps); val (b, cb) = one(1, yc, rec.cos, pc)
+    val (a, ca) = one(0, ys, rec.sin, predSin); val (b, cb) = one(1, yc, rec.cos, predCos)
     Repaired(a, b, ca, cb)
   }
 
@@ -366,11 +420,14 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
     while (it < iters) {
       if (it > 0 && refineTraj && traj.isInstanceOf[RefTrajectory]) jointStep(traj.asInstanceOf[RefTrajectory])
       else if (it > 0 && refineTraj) {
-        val d = new Array[Double](n); val w = new Array[Double](n); var i = 0
-        while (i < n) {
-          val ww = gS(i) * gS(i) + gC(i) * gC(i)
-          if (ww > 0) { d(i) = (resS(i) * gS(i) + resC(i) * gC(i)) / ww / (2 * math.Pi); w(i) = ww }
-          i += 1
+        val d = new Array[Double](n); val w = new Array[Double](n)
+        Par.blocks(n) { (lo, hi) =>
+          var i = lo
+          while (i < hi) {
+            val ww = gS(i) * gS(i) + gC(i) * gC(i)
+            if (ww > 0) { d(i) = (resS(i) * gS(i) + resC(i) * gC(i)) / ww / (2 * math.Pi); w(i) = ww }
+            i += 1
+          }
         }
         traj.addFit(d, w); evalTraj()
       }
@@ -406,6 +463,7 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
 
   /** Refits until BIC stops falling (fault repairs and the trajectory settle over a few iterations). */
   def converge(maxIters: Int = 12): Unit = {
+    // three steps before the first check: a new fault's repair may gain little at its first step and much later
     refit(3, refineTraj = true)
     // then one refining step at a time (a plain solve first would repeat the last one's fit)
     var prev = Double.PositiveInfinity; var k = 3
@@ -466,7 +524,8 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
   def slopes(): (Array[Double], Array[Double]) =
     (Doubles.tabulate(n)(i => vs(i) * 2 * math.Pi * freq(i)), Doubles.tabulate(n)(i => vc(i) * 2 * math.Pi * freq(i)))
 
-  def sumSq(a: Array[Double]): Double = { var s = 0.0; var i = 0; while (i < a.length) { s += a(i) * a(i); i += 1 }; s }
+  def sumSq(a: Array[Double]): Double =
+    Par.sum(a.length) { (lo, hi) => var s = 0.0; var i = lo; while (i < hi) { s += a(i) * a(i); i += 1 }; s }
 }
 
 object SignalEngine { val debug: Boolean = sys.props.contains("moire.debug") }
@@ -494,7 +553,7 @@ object Noise {
 
   def fit(rs: Array[Double], rc: Array[Double], slope: (Array[Double], Array[Double]), cens: Repaired = null): Noise = {
     val n = rs.length
-    def ss(a: Array[Double]) = { var s = 0.0; var i = 0; while (i < n) { s += a(i) * a(i); i += 1 }; s }
+    def ss(a: Array[Double]) = Par.sum(n) { (lo, hi) => var s = 0.0; var i = lo; while (i < hi) { s += a(i) * a(i); i += 1 }; s }
     val floor = 1e-30
     val cs = if (cens == null) null else cens.censS; val cc = if (cens == null) null else cens.censC
     def count(c: Array[Double]) = if (c == null) 0 else c.count(!_.isNaN)
@@ -507,7 +566,11 @@ object Noise {
     }
     val (ds, dc) = slope
     var vs = ss(rs) / n; var vc = ss(rc) / n; var j2 = 0.0
-    for (_ <- 0 until 8) {
+    // scoring steps until the estimates stop changing (at most 8; the reference path takes all 8)
+    var it = 0; var moved = true
+    while (it < 8 && (moved || FitPath.isReference)) {
+      it += 1
+      val (vs0, vc0, j20) = (vs, vc, j2)
       // weighted least squares of r^2 on (1_sin, 1_cos, d^2) with weights 1 / var_i^2 (Gaussian ML scoring)
       val m = Array.ofDim[Double](3, 4)
       def acc(r: Array[Double], d: Array[Double], v0: Double, ch: Int): Unit = {
@@ -527,13 +590,18 @@ object Noise {
         Array(m(2)(0), m(2)(1), m(2)(2), 0, m(2)(3)), Array(0.0, 0, 0, 1, 0))
       val x = Trajectory.solve4(a)
       vs = math.max(floor, x(0)); vc = math.max(floor, x(1)); j2 = math.max(0, x(2))
+      def rel(a: Double, b: Double) = math.abs(a - b) > 1e-13 * math.max(math.abs(a), math.abs(b))
+      moved = rel(vs, vs0) || rel(vc, vc0) || rel(j2, j20)
     }
-    var m2 = 0.0; var i = 0
-    while (i < n) {
-      val a = vs + j2 * ds(i) * ds(i); val b = vc + j2 * dc(i) * dc(i)
-      if (cs == null || cs(i).isNaN) m2 += math.log(2 * math.Pi * a) + rs(i) * rs(i) / a
-      if (cc == null || cc(i).isNaN) m2 += math.log(2 * math.Pi * b) + rc(i) * rc(i) / b
-      i += 1
+    var m2 = Par.sum(n) { (lo, hi) =>
+      var m = 0.0; var i = lo
+      while (i < hi) {
+        val a = vs + j2 * ds(i) * ds(i); val b = vc + j2 * dc(i) * dc(i)
+        if (cs == null || cs(i).isNaN) m += math.log(2 * math.Pi * a) + rs(i) * rs(i) / a
+        if (cc == null || cc(i).isNaN) m += math.log(2 * math.Pi * b) + rc(i) * rc(i) / b
+        i += 1
+      }
+      m
     }
     m2 += censored(cs, k => math.sqrt(vs + j2 * ds(k) * ds(k)))._1 + censored(cc, k => math.sqrt(vc + j2 * dc(k) * dc(k)))._1
     Noise(vs, vc, j2, m2)

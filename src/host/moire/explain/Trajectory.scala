@@ -18,63 +18,69 @@ final class Trajectory(val n: Int, val len: Int, val fs: Double) extends PhaseTr
   def params: Int = 4 * nseg
 
   /** Phase (periods) and fringe frequency (Hz) of every sample. */
-  def eval(phase: Array[Double], freq: Array[Double]): Unit = {
-    var s = 0
-    while (s < nseg) {
+  def eval(phase: Array[Double], freq: Array[Double]): Unit =
+    Par.each(nseg, n) { s =>
       val (a, b) = seg(s); val mid = 0.5 * (a + b - 1); val half = math.max(0.5, 0.5 * (b - a - 1))
       val c0 = coef(4 * s); val c1 = coef(4 * s + 1); val c2 = coef(4 * s + 2); val c3 = coef(4 * s + 3)
+      val inv = 1 / half; val hz = fs / half
       var i = a
       while (i < b) {
-        val x = (i - mid) / half
+        val x = (i - mid) * inv
         phase(i) = c0 + x * (c1 + x * (c2 + x * c3))
-        freq(i) = (c1 + x * (2 * c2 + x * 3 * c3)) * fs / half
+        freq(i) = (c1 + x * (2 * c2 + x * 3 * c3)) * hz
         i += 1
       }
-      s += 1
     }
-  }
 
   /** Adds the weighted least-squares cubic of `d` (periods) per segment; weight w (null = 1). */
-  def addFit(d: Array[Double], w: Array[Double]): Unit = {
-    var s = 0
-    val m = Array.ofDim[Double](4, 5)
-    while (s < nseg) {
+  def addFit(d: Array[Double], w: Array[Double]): Unit =
+    Par.each(nseg, n) { s =>
+      val m = Array.ofDim[Double](4, 5)
       val (a, b) = seg(s); val mid = 0.5 * (a + b - 1); val half = math.max(0.5, 0.5 * (b - a - 1))
-      val sx = new Array[Double](7); val sy = new Array[Double](4)
+      // the weighted sums of x^0..x^6 and of d x^0..x^3
+      var x0 = 0.0; var x1 = 0.0; var x2 = 0.0; var x3 = 0.0; var x4 = 0.0; var x5 = 0.0; var x6 = 0.0
+      var y0 = 0.0; var y1 = 0.0; var y2 = 0.0; var y3 = 0.0
+      val inv = 1 / half
       var i = a
       while (i < b) {
-        val x = (i - mid) / half; val wi = if (w == null) 1.0 else w(i)
-        var p = wi; var k = 0
-        while (k < 7) { sx(k) += p; if (k < 4) sy(k) += p * d(i); p *= x; k += 1 }
+        val x = (i - mid) * inv; val p0 = if (w == null) 1.0 else w(i)
+        val p1 = p0 * x; val p2 = p1 * x; val p3 = p2 * x; val p4 = p3 * x; val p5 = p4 * x; val p6 = p5 * x; val di = d(i)
+        x0 += p0; x1 += p1; x2 += p2; x3 += p3; x4 += p4; x5 += p5; x6 += p6
+        y0 += p0 * di; y1 += p1 * di; y2 += p2 * di; y3 += p3 * di
         i += 1
       }
+      val sx = Array(x0, x1, x2, x3, x4, x5, x6); val sy = Array(y0, y1, y2, y3)
       val deg = math.min(3, b - a - 1)
       for (r <- 0 to 3; c <- 0 to 3) m(r)(c) = if (r <= deg && c <= deg) sx(r + c) else if (r == c) 1.0 else 0.0
       for (r <- 0 to 3) m(r)(4) = if (r <= deg) sy(r) else 0.0
       val sol = Trajectory.solve4(m)
       var k = 0
       while (k < 4) { coef(4 * s + k) += sol(k); k += 1 }
-      s += 1
     }
-  }
 }
 
 object Trajectory {
   /** Gaussian elimination with partial pivoting of a 4x5 augmented matrix (zero where singular). */
   def solve4(m: Array[Array[Double]]): Array[Double] = {
     val a = m.map(_.clone()); val n = 4
-    for (c <- 0 until n) {
-      val p = (c until n).maxBy(r => math.abs(a(r)(c)))
+    var c = 0
+    while (c < n) {
+      var p = c; var r = c + 1
+      while (r < n) { if (math.abs(a(r)(c)) > math.abs(a(p)(c))) p = r; r += 1 }
       val t = a(c); a(c) = a(p); a(p) = t
-      if (math.abs(a(c)(c)) > 1e-300) for (r <- c + 1 until n) {
-        val f = a(r)(c) / a(c)(c)
-        for (k <- c to n) a(r)(k) -= f * a(c)(k)
+      if (math.abs(a(c)(c)) > 1e-300) {
+        r = c + 1
+        while (r < n) { val f = a(r)(c) / a(c)(c); var k = c; while (k <= n) { a(r)(k) -= f * a(c)(k); k += 1 }; r += 1 }
       }
+      c += 1
     }
     val x = new Array[Double](n)
-    for (r <- n - 1 to 0 by -1) {
-      var s = a(r)(n); for (k <- r + 1 until n) s -= a(r)(k) * x(k)
+    var r = n - 1
+    while (r >= 0) {
+      var s = a(r)(n); var k = r + 1
+      while (k < n) { s -= a(r)(k) * x(k); k += 1 }
       x(r) = if (math.abs(a(r)(r)) > 1e-300) s / a(r)(r) else 0.0
+      r -= 1
     }
     x
   }

@@ -15,7 +15,7 @@ object AdcNonlinearity extends Effect {
 
   override def backward(sp: ModelSpec, e: EffectSpec): ModelSpec = sp.copy(terms = sp.terms :+ Term.Inl(e.channel))
   override def searches(c: Candidates): Seq[() => Seq[Cand]] =
-    Seq("both", "sin", "cos").map(ch => () => c.linear(Term.Inl(ch)).map(_._1).toSeq)
+    Seq(() => Seq("both", "sin", "cos").flatMap(ch => c.linear(Term.Inl(ch)).map(_._1)))
   override def describe(t: Term, b: Array[Double], sd: Array[Double], e: SignalEngine): Effect.Described = {
     val ch = t match { case Term.Inl(c) => c; case _ => "both" }
     // one ADC's: how much its channel's amplitude changes over the record (what tells it from a harmonic)

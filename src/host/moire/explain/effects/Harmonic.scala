@@ -17,7 +17,8 @@ object Harmonic extends Effect {
     if (e.p("order", 2) < 2) throw new ExplainError("harmonic order must be >= 2")
   override def backward(sp: ModelSpec, e: EffectSpec): ModelSpec = sp.copy(terms = sp.terms :+ Term.Harm(e.p("order", 2).toInt, e.channel))
   override def searches(c: Candidates): Seq[() => Seq[Cand]] =
-    for (k <- Orders; ch <- Seq("sin", "cos", "both")) yield () => c.linear(Term.Harm(k, ch)).map(_._1).toSeq
+    // one step per order: its three variants share their columns (`LinearFamily`)
+    for (k <- Orders) yield () => Seq("sin", "cos", "both").flatMap(ch => c.linear(Term.Harm(k, ch)).map(_._1))
 
   override def describe(t: Term, b: Array[Double], sd: Array[Double], e: SignalEngine): Effect.Described = t match {
     case Term.Harm(k, ch) if ch != "both" =>
