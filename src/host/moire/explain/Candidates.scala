@@ -100,14 +100,27 @@ final class Candidates(val engine: SignalEngine) {
       m(at) += 1; m(at + 1) += x1; m(at + 2) += x2; m(at + 3) += x1 * x1; m(at + 4) += x1 * x2; m(at + 5) += x2 * x2
       m(at + 6) += y; m(at + 7) += y * x1; m(at + 8) += y * x2; m(at + 9) += y * y
     }
-    val pts = points(stride, idx); val cnt = pts.sn.length
-    // the points in blocks on all cores
-    val sums = Par.sums(cnt, 20) { (lo, hi, m) =>
+    val end = if (idx == null) n else idx.length
+    val cnt = (end + stride - 1) / stride
+    // the points in blocks on all cores: from the kept points, or (too many to keep) made where they are read
+    val sums = if (keeps(cnt)) {
+      val pts = points(stride, idx)
+      Par.sums(cnt, 20) { (lo, hi, m) =>
+        val o = new Array[Double](4); var q = lo
+        while (q < hi) {
+          resp(pts.f(q), pts.sn(q), pts.cs(q), o)
+          acc(m, 0, o(0), o(1), pts.ys(q))
+          acc(m, 10, o(2), o(3), pts.yc(q))
+          q += 1
+        }
+      }
+    } else Par.sums(cnt, 20) { (lo, hi, m) =>
       val o = new Array[Double](4); var q = lo
       while (q < hi) {
-        resp(pts.f(q), pts.sn(q), pts.cs(q), o)
-        acc(m, 0, o(0), o(1), pts.ys(q))
-        acc(m, 10, o(2), o(3), pts.yc(q))
+        val k = q * stride; val i = if (idx == null) k else idx(k); val a = angle(i)
+        resp(freq(i), math.sin(a), math.cos(a), o)
+        acc(m, 0, o(0), o(1), repS(i) - termS(i))
+        acc(m, 10, o(2), o(3), repC(i) - termC(i))
         q += 1
       }
     }
@@ -144,9 +157,11 @@ final class Candidates(val engine: SignalEngine) {
       }
     }
     val p = new Points(e.version, stride, idx, f, sn, cs, ys, yc)
-    if (cnt <= (1 << 21)) cached = p
+    cached = p
     p
   }
+  /** Points are made and kept when they fit in 2^21 samples; beyond, each profile makes them where it reads them. */
+  private def keeps(cnt: Int): Boolean = cnt <= (1 << 21)
 
   /** Minimum of f on [lo, hi]: a grid, then golden section around the best grid point. */
   def minimize(f: Double => Double, lo: Double, hi: Double, grid: Int = 12, golden: Int = 14): Double = {
@@ -270,7 +285,7 @@ final class Candidates(val engine: SignalEngine) {
     // -2 ln L (white noise) of the warm-up at log10(tau), from the subsample (its columns built there), scaled to all samples
     def f(lt: Double): Double = {
       val tau = math.pow(10, lt)
-      val cols = base ++ warmupCols(idx.map(i => math.exp(-i / fs / tau)), uS(_), uC(_))
+      val cols = base ++ warmupCols(Doubles.tabulate(idx.length)(q => math.exp(-idx(q) / fs / tau)), uS(_), uC(_))
       val sol = LinearFit.solve(cols, ys, yc)
       val rss = LinearFit.rss(cols, sol.beta, ys, sinCh = true) + LinearFit.rss(cols, sol.beta, yc, sinCh = false)
       2.0 * n * math.log(math.max(1e-300, rss / (2.0 * ys.length)))
@@ -313,19 +328,35 @@ final class Candidates(val engine: SignalEngine) {
       val (rp, rr) = if (ch == 0) (repS, resS) else (repC, resC)
       val need = math.max(20, n / 1000)
       val bits = adc.bits
-      // per bit: samples with it set in the codes and in the prediction's codes, and with it unlike the next bit
-      val h = Par.sums(n, 4 * bits) { (a, z, m) =>
+      // per bit: samples with it set in the codes and in the prediction's codes, and with it unlike the next bit; from
+      // the histograms of both codes (a count per code, in blocks of 2^18 samples), codes beyond them bit by bit
+      val size = 1 << math.min(bits, 16)
+      def addBits(m: Array[Double], at: Int, code: Int, w: Double): Unit = {
+        var b = 0
+        while (b < bits) {
+          m(at + b) += w * ((code >> b) & 1)
+          if (b + 1 < bits) m(at + 2 * bits + b) += w * (((code >> b) ^ (code >> (b + 1))) & 1)
+          b += 1
+        }
+      }
+      val h = new Array[Double](4 * bits)
+      val hist = Par.sums(n, 2 * size + 4 * bits, 1 << 18) { (a, z, m) =>
         var i = a
         while (i < z) {
-          val c = codes(i); val q = adc.pins(adc.signedCode(rp(i) - rr(i)).code); var b = 0
-          while (b < bits) {
-            m(b) += (c >> b) & 1; m(bits + b) += (q >> b) & 1
-            if (b + 1 < bits) { m(2 * bits + b) += ((c >> b) ^ (c >> (b + 1))) & 1; m(3 * bits + b) += ((q >> b) ^ (q >> (b + 1))) & 1 }
-            b += 1
-          }
+          val c = codes(i); val q = adc.pins(adc.signedCode(rp(i) - rr(i)).code)
+          if (c >= 0 && c < size) m(c) += 1 else addBits(m, 2 * size, c, 1)
+          if (q >= 0 && q < size) m(size + q) += 1 else addBits(m, 2 * size + bits, q, 1)
           i += 1
         }
       }
+      // the layout of h: set in codes, set in predictions, unlike the next (codes), unlike the next (predictions)
+      var c = 0
+      while (c < size) {
+        if (hist(c) > 0) addBits(h, 0, c, hist(c))
+        if (hist(size + c) > 0) addBits(h, bits, c, hist(size + c))
+        c += 1
+      }
+      for (j <- 0 until 4 * bits) h(j) += hist(2 * size + j)
       def counts(at: Int) = Array.tabulate(bits)(b => h(at * bits + b).toLong)
       val m1 = counts(0); val p1 = counts(1); val diffM = counts(2); val diffP = counts(3)
       for (b <- coarseBits until bits) {
