@@ -167,6 +167,10 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
       } else _reference = Some(rt)
     }
     if (reference.isEmpty && !traj.isInstanceOf[Trajectory]) freeFit()
+    // then settle until BIC does: samples held at a rail and the fit converge in turns, slowly when many sit at a rail (a
+    // third of the samples at the rails take some 30 steps; left after four, the clipping passed for INL and odd harmonics)
+    var last = Double.PositiveInfinity; var k = 0
+    while (k < 40 && last - bic > 0.5) { last = bic; refit(2, refineTraj = true, from = 1); k += 1 }
   }
 
   /** Fringe periods per turn, when the reference names turns (from its k and its turns per unit). */
