@@ -1,6 +1,7 @@
 package moire.explain
 
 import moire.explain.effects._
+import scala.jdk.CollectionConverters._
 
 
 /** One fitted effect proposal: the model with it, its -2 ln L, extra parameters, and readable parameters. */
@@ -94,7 +95,7 @@ final class Candidates(val engine: SignalEngine) {
   /** -2 ln L (white noise per channel) of the default part refitted with modified fundamentals, on every stride-th sample
     * (of `idx` when given: a fold), scaled to n.
     */
-  def profile(sp: ModelSpec, stride: Int, idx: Array[Int] = null): Double = {
+  def profile(sp: ModelSpec, stride: Int, idx: Array[Int] = null): Double = Laps("profile: every sample") {
     val resp = new ChannelResponse(sp)
     def acc(m: Array[Double], at: Int, x1: Double, x2: Double, y: Double): Unit = {
       m(at) += 1; m(at + 1) += x1; m(at + 2) += x2; m(at + 3) += x1 * x1; m(at + 4) += x1 * x2; m(at + 5) += x2 * x2
@@ -125,13 +126,31 @@ final class Candidates(val engine: SignalEngine) {
       }
     }
     val ms = sums.slice(0, 10); val mc = sums.slice(10, 20)
-    def rss(m: Array[Double]): Double = {
-      val a = Array(Array(m(0), m(1), m(2), 0, m(6)), Array(m(1), m(3), m(4), 0, m(7)), Array(m(2), m(4), m(5), 0, m(8)), Array(0.0, 0, 0, 1, 0))
-      val x = Trajectory.solve4(a)
-      math.max(1e-300, m(9) - x(0) * m(6) - x(1) * m(7) - x(2) * m(8))
-    }
-    n * (math.log(2 * math.Pi * rss(ms) / cnt) + 1) + n * (math.log(2 * math.Pi * rss(mc) / cnt) + 1)
+    n * (math.log(2 * math.Pi * Candidates.rss(ms) / cnt) + 1) + n * (math.log(2 * math.Pi * Candidates.rss(mc) / cnt) + 1)
   }
+
+  /** The profile a search minimises: from the binned sums of all samples (of the fold `idx`); on the reference path,
+    * `profile` on every stride-th sample.
+    */
+  def searched(sp: ModelSpec, stride: Int, idx: Array[Int] = null): Double =
+    if (FitPath.isReference) profile(sp, stride, idx) else fromBins(sp, idx).getOrElse(profile(sp, stride, idx))
+  /** The profile a curvature is taken from: the binned sums (the reference path: every sample). */
+  def curved(sp: ModelSpec, idx: Array[Int] = null): Double =
+    if (FitPath.isReference) profile(sp, 1, idx) else fromBins(sp, idx).getOrElse(profile(sp, 1, idx))
+  /** The binned profile, or None where its bins are too coarse for the spec's response. */
+  private def fromBins(sp: ModelSpec, idx: Array[Int]): Option[Double] = {
+    val b = binned(idx)
+    Some(Laps("profile: from the bins")(b.m2ll(sp))).filter(!_.isNaN)
+  }
+
+  /** The binned profile sums of the engine's state on all samples (or the fold `idx`), made once per state and fold. */
+  def binned(idx: Array[Int] = null): ProfileSums = {
+    val k = if (idx == null) Candidates.AllSamples else idx
+    sums.synchronized {
+      sums.get(k).filter(_.version == e.version).getOrElse { val p = Laps("profile: binned sums")(new ProfileSums(e, idx)); sums.put(k, p); p }
+    }
+  }
+  private val sums = new java.util.IdentityHashMap[Array[Int], ProfileSums]().asScala
 
   /** What `profile` reads at its points (every stride-th sample, of `idx` when given): the fringe frequency, the sin and
     * cos of the fringe phase, each channel less its terms. Made once for the engine's state (its `version`) while the
@@ -213,10 +232,10 @@ final class Candidates(val engine: SignalEngine) {
     val limit = 0.5 / (2 * math.Pi * math.max(fMax, 1))
     val lo = math.max(-limit, t0 - span); val hi = math.min(limit, t0 + span)
     if (!(hi > lo)) return None
-    val tau = minimize(x => profile(spec.copy(hasSkew = true, skewS = x), stride), lo, hi)
+    val tau = minimize(x => searched(spec.copy(hasSkew = true, skewS = x), stride), lo, hi)
     val sp = spec.copy(hasSkew = true, skewS = tau)
     val full = Candidates.memo(x => profile(spec.copy(hasSkew = true, skewS = x), 1))
-    val sd = curvatureSd(full, tau, math.max(sd0, 1e-12))
+    val sd = curvatureSd(if (FitPath.isReference) full else x => curved(spec.copy(hasSkew = true, skewS = x)), tau, math.max(sd0, 1e-12))
     val (p, u, where) = (Map("skew_s" -> tau), Map("skew_s" -> sd), f"against speed: cos channel phase, ${fMin / 1e3}%.1f to ${fMax / 1e3}%.1f kHz")
     Some(Cand(ChannelSkew.name, "cos", sp, fullM2ll(sp, full(tau)), 1, p, u, where))
   }
@@ -225,13 +244,13 @@ final class Candidates(val engine: SignalEngine) {
   def bandwidth(ch: String): Option[Cand] = {
     if (spec.bw.contains(ch) || fMax <= 0 || (fMax - fMin) < 0.05 * fMax) return None
     val hiX = 5 / fMax
-    val xs = minimize(x => profile(spec.copy(bw = spec.bw + (ch -> (if (x <= 0) Double.PositiveInfinity else 1 / x))), stride), 0, hiX, grid = 16)
+    val xs = minimize(x => searched(spec.copy(bw = spec.bw + (ch -> (if (x <= 0) Double.PositiveInfinity else 1 / x))), stride), 0, hiX, grid = 16)
     // a cut-off far above the fringe frequencies shows only as a delay, which is a skew, not a bandwidth
     if (xs <= 1 / (50 * fMax)) return None
     val fc = 1 / xs
     val sp = spec.copy(bw = spec.bw + (ch -> fc))
     val full = Candidates.memo(x => profile(spec.copy(bw = spec.bw + (ch -> 1 / x)), 1))
-    val sdx = curvatureSd(full, xs, xs * 0.05)
+    val sdx = curvatureSd(if (FitPath.isReference) full else x => curved(spec.copy(bw = spec.bw + (ch -> 1 / x))), xs, xs * 0.05)
     val (p, u, where) = (Map("cutoff_hz" -> fc), Map("cutoff_hz" -> sdx / (xs * xs)),
       s"against speed: ${if (ch == "both") "amplitude of both channels" else s"$ch channel amplitude and phase"}")
     Some(Cand(Bandwidth.name, ch, sp, fullM2ll(sp, full(xs)), 1, p, u, where))
@@ -416,6 +435,18 @@ final class Candidates(val engine: SignalEngine) {
 }
 
 object Candidates {
+  /** The key of the binned sums of all samples. */
+  private val AllSamples = new Array[Int](0)
+
+  /** The residual sum of squares of one channel's fit of y on (1, x1, x2) from the sums n, x1, x2, x1 x1, x1 x2, x2 x2,
+    * y, y x1, y x2, y y.
+    */
+  def rss(m: Array[Double]): Double = {
+    val a = Array(Array(m(0), m(1), m(2), 0, m(6)), Array(m(1), m(3), m(4), 0, m(7)), Array(m(2), m(4), m(5), 0, m(8)), Array(0.0, 0, 0, 1, 0))
+    val x = Trajectory.solve4(a)
+    math.max(1e-300, m(9) - x(0) * m(6) - x(1) * m(7) - x(2) * m(8))
+  }
+
   /** f with its values kept (a profile on every sample is evaluated at the same point more than once). */
   def memo(f: Double => Double): Double => Double = {
     val seen = scala.collection.mutable.Map.empty[Double, Double]

@@ -52,6 +52,54 @@ private[explain] final class ChannelResponse(sp: ModelSpec) {
   }
 }
 
+/** A response's coefficients over the fringe frequencies [lo, hi] in bins, each the quadratic through its centre and
+  * ends: a sample's columns from a few products instead of square roots and divisions. `ok` is false when the
+  * quadratic misses the response by more than `tol` (relative) at a bin's quarter points (a range far wider than the
+  * cut-offs): the caller then evaluates the response itself.
+  */
+private[explain] final class ResponseTable(resp: ChannelResponse, lo: Double, hi: Double, bins: Int, tol: Double) {
+  private val width = if (hi > lo) (hi - lo) / bins else 0.0
+  private val inv = if (width > 0) 1 / width else 0.0
+  private val k = if (width > 0) bins else 1
+  // per bin, for A and B of each channel (x1 = A sn + B cs, x2 = A cs - B sn): c0 + c1 u + c2 u^2, u in [-1/2, 1/2]
+  private val c = new Array[Double](12 * k)
+  val ok: Boolean = {
+    val o = new Array[Double](4)
+    def at(f: Double): Array[Double] = { resp(f, 1.0, 0.0, o); Array(o(0), -o(1), o(2), -o(3)) }
+    var fine = true; var b = 0
+    var left = at(lo)
+    while (b < k) {
+      val mid = at(lo + (b + 0.5) * width); val right = at(lo + (b + 1) * width)
+      var j = 0
+      while (j < 4) {
+        val m = left(j); val z = mid(j); val p = right(j)
+        c(12 * b + 3 * j) = z; c(12 * b + 3 * j + 1) = p - m; c(12 * b + 3 * j + 2) = 2 * (p + m - 2 * z)
+        j += 1
+      }
+      for (u <- Seq(-0.25, 0.25)) {
+        val x = at(lo + (b + 0.5 + u) * width)
+        for (j <- 0 until 4) {
+          val q = c(12 * b + 3 * j) + u * (c(12 * b + 3 * j + 1) + u * c(12 * b + 3 * j + 2))
+          if (!(math.abs(q - x(j)) <= tol * math.max(1.0, math.abs(x(j))))) fine = false
+        }
+      }
+      left = right; b += 1
+    }
+    fine
+  }
+
+  /** As `ChannelResponse.apply`, from the table. */
+  @inline def apply(f: Double, sn: Double, cs: Double, out: Array[Double]): Unit = {
+    val x = (f - lo) * inv
+    val b = if (x <= 0) 0 else if (x >= k - 1) k - 1 else x.toInt
+    val u = x - b - 0.5; val o = 12 * b
+    val as = c(o) + u * (c(o + 1) + u * c(o + 2)); val bs = c(o + 3) + u * (c(o + 4) + u * c(o + 5))
+    val ac = c(o + 6) + u * (c(o + 7) + u * c(o + 8)); val bc = c(o + 9) + u * (c(o + 10) + u * c(o + 11))
+    out(0) = as * sn + bs * cs; out(1) = as * cs - bs * sn
+    out(2) = ac * sn + bc * cs; out(3) = ac * cs - bc * sn
+  }
+}
+
 private[explain] object ChannelResponse {
   // sin and cos by their series for |x| <= 1/4 (the skew's turn at the fringe frequencies; the next term is below
   // 3e-18 of the value): a fraction of the library's cost, called for every sample in a profile

@@ -251,6 +251,7 @@ object ExplainCmd {
       f"CPU $cpu%.1f s (${cpu / s}%.2f cores busy); " +
       f"peak heap in use $peak%.0f MB of $maxMb%.0f MB (${perM(peak)}%.1f MB per million samples); ${Runtime.getRuntime.availableProcessors} cores; " +
       s"findings: ${rep.findings.map(_.effect).mkString(", ")}")
+    Laps.lines.foreach(l => say(s"explain-bench: $l"))
   }
 
   /** CPU seconds this process has used (all threads), NaN where the JVM does not say. */

@@ -175,8 +175,8 @@ object Replicate {
   def profileFolds(e: SignalEngine, cands: Candidates, fs: Seq[Array[Int]], x0: Double, spec: Double => ModelSpec, span: Double): Seq[Option[Est]] =
     fs.map { idx =>
       val st = math.max(1, idx.length / 50000)
-      val x = cands.minimize(v => cands.profile(spec(v), st, idx), x0 - span, x0 + span, grid = 8, golden = 10)
-      val sd = cands.curvatureSd(v => cands.profile(spec(v), 1, idx) * idx.length / e.n, x, math.max(span * 0.05, 1e-15))
+      val x = cands.minimize(v => cands.searched(spec(v), st, idx), x0 - span, x0 + span, grid = 8, golden = 10)
+      val sd = cands.curvatureSd(v => cands.curved(spec(v), idx) * idx.length / e.n, x, math.max(span * 0.05, 1e-15))
       if (sd.isNaN || sd <= 0) None else Some(Est(Array(x), Array(Array(sd * sd)), Array(ModelRel * math.abs(x0))))
     }
 

@@ -250,16 +250,42 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
   def fundamentals(sp: ModelSpec, a1: Array[Double], a2: Array[Double], b1: Array[Double], b2: Array[Double]): Unit = {
     val plain = !sp.hasSkew && sp.bw.isEmpty
     val resp = new ChannelResponse(sp)
+    // the response from a table over the fringe frequencies when it holds to 1e-10 (fast path)
+    val table = if (plain || FitPath.isReference) null else {
+      val (lo, hi) = freqRange
+      val t = new ResponseTable(resp, lo, hi, SignalEngine.ResponseBins, 1e-10)
+      if (t.ok) t else null
+    }
     Par.blocks(n) { (lo, hi) =>
       val o = new Array[Double](4); var i = lo
       while (i < hi) {
         val a = angle(i); val sn = math.sin(a); val cs = math.cos(a)
         if (plain) { a1(i) = sn; a2(i) = cs; b1(i) = sn; b2(i) = cs }
-        else { resp(freq(i), sn, cs, o); a1(i) = o(0); a2(i) = o(1); b1(i) = o(2); b2(i) = o(3) }
+        else {
+          if (table != null) table(freq(i), sn, cs, o) else resp(freq(i), sn, cs, o)
+          a1(i) = o(0); a2(i) = o(1); b1(i) = o(2); b2(i) = o(3)
+        }
         i += 1
       }
     }
   }
+
+  /** The lowest and highest fringe frequency (Hz, signed) of the current phase. */
+  def freqRange: (Double, Double) = {
+    if (fRange == null || fRangeAt != phaseCount) {
+      val k = (n + Par.Block - 1) / Par.Block
+      val mins = Array.fill(k)(Double.PositiveInfinity); val maxs = Array.fill(k)(Double.NegativeInfinity)
+      Par.blocks(n) { (a, b) =>
+        var mn = Double.PositiveInfinity; var mx = Double.NegativeInfinity; var i = a
+        while (i < b) { val f = freq(i); if (f < mn) mn = f; if (f > mx) mx = f; i += 1 }
+        mins(a / Par.Block) = mn; maxs(a / Par.Block) = mx
+      }
+      fRange = if (k == 0) (0.0, 0.0) else (mins.min, maxs.max); fRangeAt = phaseCount
+    }
+    fRange
+  }
+  private var fRange: (Double, Double) = null
+  private var fRangeAt = -1L
 
   def baseCols(a1: Array[Double], a2: Array[Double], b1: Array[Double], b2: Array[Double]): IndexedSeq[Col] =
     IndexedSeq(Col(ones, null), Col(a1, null), Col(a2, null), Col(null, ones), Col(null, b1), Col(null, b2))
@@ -423,7 +449,7 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
     var it = from
     while (it < iters) {
       if (it > 0 && refineTraj && traj.isInstanceOf[RefTrajectory]) jointStep(traj.asInstanceOf[RefTrajectory])
-      else if (it > 0 && refineTraj) {
+      else if (it > 0 && refineTraj) Laps("refit: trajectory and fundamentals") {
         val d = new Array[Double](n); val w = new Array[Double](n)
         Par.blocks(n) { (lo, hi) =>
           var i = lo
@@ -435,17 +461,16 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
         }
         traj.addFit(d, w); evalTraj()
       }
-      if (it > 0) { val r = repair(spec, predS, predC); _repS = r.s; _repC = r.c; _cens = r } // the predictions are garbage after
-      setFundamentals()
+      if (it > 0) Laps("refit: repair") { val r = repair(spec, predS, predC); _repS = r.s; _repC = r.c; _cens = r } // the predictions are garbage after
+      Laps("refit: fundamentals")(setFundamentals())
       val cols = groups()
-      _sol = cols.solve(repS, repC)
+      _sol = Laps("refit: solve")(cols.solve(repS, repC))
       _termIndex = spec.terms.zip(cols.offsets.tail).toMap
       // the terms' columns may be made again below: from the state they were fitted in (the old default part)
-      residual(cols); holdExcluded()
-      predictionSlope(cols, sol.beta.take(6))
+      Laps("refit: residual") { residual(cols); holdExcluded(); predictionSlope(cols, sol.beta.take(6)) }
       _base = sol.beta.take(6)
       it += 1
-      _noise = Noise.fit(resS, resC, noiseSlopes(spec), cens)
+      _noise = Laps("refit: noise")(Noise.fit(resS, resC, noiseSlopes(spec), cens))
       _version += 1
       if (SignalEngine.debug) System.err.println(f"refit $it: rms $rms%.4g bic $bic%.8g")
     }
@@ -532,7 +557,11 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
     Par.sum(a.length) { (lo, hi) => var s = 0.0; var i = lo; while (i < hi) { s += a(i) * a(i); i += 1 }; s }
 }
 
-object SignalEngine { val debug: Boolean = sys.props.contains("moire.debug") }
+object SignalEngine {
+  val debug: Boolean = sys.props.contains("moire.debug")
+  /** Bins of the channel response's table over the fringe frequencies. */
+  val ResponseBins = 4096
+}
 
 /** Noise model: per-channel white variance plus jitter variance jitter2 * slope^2; m2ll = -2 ln L. */
 final case class Noise(varS: Double, varC: Double, jitter2: Double, m2ll: Double)

@@ -283,8 +283,8 @@ object SignalExplain {
       val before = e.spec
       // a polish that lowers the profile's -2 ln L by less than the loop's step leaves the fit as it stands (its refit
       // would not move the criterion by more either); the reference path refits after every polish
-      if (polish(e) < 0.5 && !FitPath.isReference) { e.spec = before; return }
-      e.converge(); k += 1
+      if (Laps("settle: polish")(polish(e)) < 0.5 && !FitPath.isReference) { e.spec = before; return }
+      Laps("settle: converge")(e.converge()); k += 1
     }
   }
 
@@ -296,14 +296,14 @@ object SignalExplain {
     var gain = 0.0
     if (e.spec.hasSkew) {
       val t = e.spec.skewS; val span = math.max(math.abs(t) * 0.3, 1e-10)
-      def f(x: Double) = c.profile(e.spec.copy(skewS = x), st)
+      def f(x: Double) = c.searched(e.spec.copy(skewS = x), st)
       val best = c.minimize(f, t - span, t + span)
       gain += f(t) - f(best)
       e.spec = e.spec.copy(skewS = best)
     }
     for ((ch, fc) <- e.spec.bw) {
       val x0 = 1 / fc
-      def f(x: Double) = c.profile(e.spec.copy(bw = e.spec.bw + (ch -> 1 / x)), st)
+      def f(x: Double) = c.searched(e.spec.copy(bw = e.spec.bw + (ch -> 1 / x)), st)
       val best = c.minimize(f, x0 * 0.6, x0 * 1.6)
       gain += f(x0) - f(best)
       e.spec = e.spec.copy(bw = e.spec.bw + (ch -> 1 / best))
