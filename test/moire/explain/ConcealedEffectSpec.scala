@@ -13,8 +13,10 @@ class ConcealedEffectSpec extends AnyFlatSpec with Matchers {
   private def first(r: Report, effect: String): Finding = {
     info(describe(r) + " | unexplained: " + r.unexplained.map(_.where).mkString(", "))
     withClue(describe(r)) { r.findings should not be empty; r.findings.head.effect shouldBe effect }
-    r.findings.head.rmsAfter should be < r.findings.head.rmsBefore
-    r.finalRms should be < r.baselineRms
+    // a noise model (jitter) lowers the criterion, not the residual: its rms stays within rounding
+    r.findings.head.rmsAfter should be <= r.findings.head.rmsBefore * (1 + 1e-12)
+    r.finalRms should be <= r.baselineRms * (1 + 1e-12)
+    r.finalBic should be < r.baselineBic - SignalExplain.Threshold
     r.findings.head
   }
 

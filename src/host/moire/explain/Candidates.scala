@@ -104,7 +104,9 @@ final class Candidates(val engine: SignalEngine) {
     val end = if (idx == null) n else idx.length
     val cnt = (end + stride - 1) / stride
     // the points in blocks on all cores: from the kept points, or (too many to keep) made where they are read
-    val sums = if (keeps(cnt)) {
+    // kept points serve the many calls of a search; one call on every sample (the fast path's) reads them where they are
+    val keep = keeps(cnt) && (FitPath.isReference || stride > 1 || { val c = cached; c != null && c.version == e.version && c.stride == stride && (c.idx eq idx) })
+    val sums = if (keep) {
       val pts = points(stride, idx)
       Par.sums(cnt, 20) { (lo, hi, m) =>
         val o = new Array[Double](4); var q = lo
@@ -116,10 +118,11 @@ final class Candidates(val engine: SignalEngine) {
         }
       }
     } else Par.sums(cnt, 20) { (lo, hi, m) =>
-      val o = new Array[Double](4); var q = lo
+      val o = new Array[Double](4); val sc = new Array[Double](2); var q = lo
       while (q < hi) {
-        val k = q * stride; val i = if (idx == null) k else idx(k); val a = angle(i)
-        resp(freq(i), math.sin(a), math.cos(a), o)
+        val k = q * stride; val i = if (idx == null) k else idx(k)
+        if (FitPath.isReference) { val a = angle(i); sc(0) = math.sin(a); sc(1) = math.cos(a) } else Turns.sinCos(turn(i), sc, 0)
+        resp(freq(i), sc(0), sc(1), o)
         acc(m, 0, o(0), o(1), repS(i) - termS(i))
         acc(m, 10, o(2), o(3), repC(i) - termC(i))
         q += 1
@@ -327,10 +330,15 @@ final class Candidates(val engine: SignalEngine) {
     val bin = fs / m
     if (spec.terms.exists { case Term.Interference(h) => math.abs(h - k0 * bin) < 3 * bin; case _ => false }) return None
     val at = Candidates.spread(n, stride)
+    val ref = FitPath.isReference; val sc = new Array[Double](2)
     def power(hz: Double): Double = {
       var a = 0.0; var b = 0.0; var c = 0.0; var d = 0.0; var k = 0
       while (k < at.length) {
-        val i = at(k); val x = 2 * math.Pi * hz * i / fs; val sx = math.sin(x); val cx = math.cos(x)
+        val i = at(k)
+        // sin and cos of the line's phase from its turns (the reference path: the library's)
+        if (ref) { val x = 2 * math.Pi * hz * i / fs; sc(0) = math.sin(x); sc(1) = math.cos(x) }
+        else { val t = hz * i / fs; Turns.sinCos(t - math.floor(t), sc, 0) }
+        val sx = sc(0); val cx = sc(1)
         a += resS(i) * sx; b += resS(i) * cx; c += resC(i) * sx; d += resC(i) * cx; k += 1
       }
       -(a * a + b * b + c * c + d * d)

@@ -66,6 +66,8 @@ object ExplainCmd {
     if (outDirs.nonEmpty) paths.groupBy(_.last.stripSuffix(".csv")).collectFirst { case (stem, ps) if ps.distinct.size > 1 =>
       throw new ExplainError(s"${ps.distinct.mkString(" and ")} share the name $stem: their reports would overwrite each other; rename one")
     }
+    // the plotting library's start (fonts, image classes) on a side thread while the first file is read and fitted
+    if (plotDir.isDefined || html.isDefined || htmlDir.isDefined) Plots.warmUp()
     // Every file gets its report or its one-line error; the command fails after all were tried.
     def htmlOf(p: os.Path) = html.map(os.Path(_, os.pwd)).orElse(htmlDir.map(d => os.Path(d, os.pwd) / s"${p.last.stripSuffix(".csv")}.html"))
     def one(p: os.Path, progress: Progress, say: String => Unit) =
@@ -122,8 +124,8 @@ object ExplainCmd {
         val r = SignalExplain.run(p.toString, rec, givenEffects, progress, materiality = materiality)
         progress.close()
         val t0 = System.nanoTime()
-        val ie = InterpolationError.of(rec, r.engine)
-        plotFolder.foreach(d => plotFiles = Plots.signals(r, d, stem, ie))
+        val ie = Laps("interpolation error")(InterpolationError.of(rec, r.engine))
+        plotFolder.foreach(d => plotFiles = Laps("plots")(Plots.signals(r, d, stem, ie)))
         extra :+= "interpolation_error" -> ie.json
         if (sys.props.contains("moire.timing")) System.err.println(f"interpolation error and plots ${(System.nanoTime() - t0) / 1e6}%.0f ms")
         // Board outputs (a `position` column) against the RTL run on the recorded codes.

@@ -10,6 +10,17 @@ import org.knowm.xchart.style.markers.SeriesMarkers
 object Plots {
   System.setProperty("java.awt.headless", "true")
 
+  /** Draws a small chart into memory on a daemon thread: the library's first chart costs about half a second of class
+    * loading and font set-up, which then overlaps the fit instead of following it.
+    */
+  def warmUp(): Unit = {
+    val t = new Thread(() => try {
+      val c = chart("warm-up", "x", "y"); line(c, "y", Array(0.0, 1.0), Array(0.0, 1.0))
+      BitmapEncoder.getBitmapBytes(c, BitmapFormat.PNG)
+    } catch { case _: Throwable => () }, "moire-plot-warm-up")
+    t.setDaemon(true); t.setPriority(Thread.MIN_PRIORITY); t.start()
+  }
+
   def chart(title: String, x: String, y: String): XYChart = {
     val c = new XYChartBuilder().width(900).height(500).title(title).xAxisTitle(x).yAxisTitle(y).build()
     // the legend below the plot: inside, it hides the curves it names

@@ -42,20 +42,32 @@ private[explain] final class ProfileSums(e: SignalEngine, idx: Array[Int]) {
     Par.each(chunks, count.toLong) { c =>
       val s = new Array[Double](bins * ProfileSums.Stride); val t = tots(c)
       val inv = if (width > 0) 1 / width else 0.0
+      val sc = new Array[Double](2)
+      val b0 = e.base(0); val b1 = e.base(1); val b2 = e.base(2); val b3 = e.base(3); val b4 = e.base(4); val b5 = e.base(5)
+      val rs = e.resS; val rc = e.resC; val s1 = e.s1; val s2 = e.s2; val c1 = e.c1; val c2 = e.c2
+      // a bin's sums in a small array while the points stay in it (the fringe frequency moves slowly), then added to its place
+      val acc = new Array[Double](ProfileSums.Stride); var cur = -1
+      def flush(): Unit = if (cur >= 0) {
+        val o = cur * ProfileSums.Stride; var k = 0
+        while (k < ProfileSums.Stride) { s(o + k) += acc(k); acc(k) = 0; k += 1 }
+      }
       var q = c * per; val end = math.min(count, (c + 1) * per)
       while (q < end) {
         val i = at(q); val f = e.freq(i)
         val b = if (width > 0) math.min(bins - 1, ((f - lo) * inv).toInt) else 0
         val u = if (width > 0) (f - lo) * inv - b - 0.5 else 0.0
-        val a = e.angle(i); val sn = math.sin(a); val cs = math.cos(a)
-        val ys = e.repS(i) - e.termS(i); val yc = e.repC(i) - e.termC(i)
+        if (b != cur) { flush(); cur = b }
+        Turns.sinCos(e.turn(i), sc, 0); val sn = sc(0); val cs = sc(1)
+        // the data less the terms: the residual plus the default part
+        val ys = rs(i) + b0 + b1 * s1(i) + b2 * s2(i); val yc = rc(i) + b3 + b4 * c1(i) + b5 * c2(i)
         t(0) += ys; t(1) += ys * ys; t(2) += yc; t(3) += yc * yc
-        val o = b * ProfileSums.Stride; val u2 = u * u
-        @inline def add(j: Int, p: Double): Unit = { val k = o + 3 * j; s(k) += p; s(k + 1) += u * p; s(k + 2) += u2 * p }
+        val u2 = u * u
+        @inline def add(j: Int, p: Double): Unit = { val k = 3 * j; acc(k) += p; acc(k + 1) += u * p; acc(k + 2) += u2 * p }
         add(0, sn); add(1, cs); add(2, sn * sn); add(3, sn * cs); add(4, cs * cs)
         add(5, ys * sn); add(6, ys * cs); add(7, yc * sn); add(8, yc * cs)
         q += 1
       }
+      flush()
       parts(c) = s
     }
     val s = new Array[Double](bins * ProfileSums.Stride); val t = new Array[Double](4)

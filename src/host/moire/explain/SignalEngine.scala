@@ -127,7 +127,9 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
     def start(t: PhaseTrack, first: Array[Double]): Unit = {
       _traj = t; traj.addFit(first, null); evalTraj()
       _base = Array(os, as, 0, oc, 0, ac); spec = ModelSpec(); _cens = Repaired(ys, yc, null, null); _repS = ys; _repC = yc
-      refit(4, refineTraj = true)
+      // a plain solve and three refining steps; the fast path leaves out the third when the second gained < 0.5
+      refit(3, refineTraj = true)
+      if (FitPath.isReference || lastGain > 0.5) refit(4, refineTraj = true, from = 3)
     }
     /** The trajectory from the signals: of segments spanning 16, 6 or 2.5 fringe periods, the one with the lowest BIC. */
     def freeFit(): Unit = {
@@ -135,13 +137,13 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
       val lens = Seq(16.0, 6.0, 2.5).map(p => Trajectory.segmentLength(n, fs, typicalHz, p)).distinct
       if (lens.size == 1) { free(lens.head); return }
       // each length's fitted trajectory and repaired data are kept: the best is restored and solved once, not fitted again
-      final case class Fitted(len: Int, bic: Double, traj: PhaseTrack, repS: Array[Double], repC: Array[Double], cens: Repaired)
-      val fitted = lens.map { l => free(l); Fitted(l, bic, _traj, _repS, _repC, _cens) }
+      final case class Fitted(len: Int, bic: Double, traj: PhaseTrack, repS: Array[Double], repC: Array[Double], cens: Repaired, gain: Double)
+      val fitted = lens.map { l => free(l); Fitted(l, bic, _traj, _repS, _repC, _cens, lastGain) }
       val best = fitted.minBy(_.bic)
       if (FitPath.isReference) free(best.len)
       else if (best ne fitted.last) {
         _traj = best.traj; evalTraj(); _repS = best.repS; _repC = best.repC; _cens = best.cens
-        refit(1, refineTraj = false)
+        refit(1, refineTraj = false); _lastGain = best.gain
       }
     }
     refColumn.foreach { r =>
@@ -169,7 +171,8 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
     if (reference.isEmpty && !traj.isInstanceOf[Trajectory]) freeFit()
     // then settle until BIC does: samples held at a rail and the fit converge in turns, slowly when many sit at a rail (a
     // third of the samples at the rails take some 30 steps; left after four, the clipping passed for INL and odd harmonics)
-    var last = Double.PositiveInfinity; var k = 0
+    // (the fast path not when the last refining step gained < 0.5 already)
+    var last = if (FitPath.isReference) Double.PositiveInfinity else bic + lastGain; var k = 0
     while (k < 40 && last - bic > 0.5) { last = bic; refit(2, refineTraj = true, from = 1); k += 1 }
   }
 
@@ -203,9 +206,9 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
 
   def evalTraj(): Unit = {
     _version += 1; phaseCount += 1
-    traj.eval(phase, freq)
+    Laps("traj: eval")(traj.eval(phase, freq))
     range = null
-    setFundamentals()
+    Laps("traj: setFundamentals")(setFundamentals())
   }
 
   private var range: (Double, Double) = null
@@ -225,6 +228,8 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
 
   /** 2 pi times the fractional fringe phase of sample i. */
   @inline final def angle(i: Int): Double = 2 * math.Pi * (phase(i) - math.floor(phase(i)))
+  /** The fractional fringe phase of sample i (turns, in [0, 1]). */
+  @inline final def turn(i: Int): Double = phase(i) - math.floor(phase(i))
 
   // the phase's changes, and the phase and spec the fundamentals were made for (made again only when either changed)
   private var phaseCount = 0L
@@ -236,9 +241,14 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
     madeFor = key
     if (!spec.hasSkew && spec.bw.isEmpty) {
       _s1 = plainSin; _s2 = plainCos; _c1 = plainSin; _c2 = plainCos
+      val ref = FitPath.isReference
       Par.blocks(n) { (lo, hi) =>
-        var i = lo
-        while (i < hi) { val a = angle(i); plainSin(i) = math.sin(a); plainCos(i) = math.cos(a); i += 1 }
+        val sc = new Array[Double](2); var i = lo
+        while (i < hi) {
+          if (ref) { val a = angle(i); plainSin(i) = math.sin(a); plainCos(i) = math.cos(a) }
+          else { Turns.sinCos(turn(i), sc, 0); plainSin(i) = sc(0); plainCos(i) = sc(1) }
+          i += 1
+        }
       }
     } else {
       if (s1 eq plainSin) { _s1 = new Array[Double](n); _s2 = new Array[Double](n); _c1 = plainSin; _c2 = plainCos }
@@ -256,10 +266,12 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
       val t = new ResponseTable(resp, lo, hi, SignalEngine.ResponseBins, 1e-10)
       if (t.ok) t else null
     }
+    val ref = FitPath.isReference
     Par.blocks(n) { (lo, hi) =>
-      val o = new Array[Double](4); var i = lo
+      val o = new Array[Double](4); val sc = new Array[Double](2); var i = lo
       while (i < hi) {
-        val a = angle(i); val sn = math.sin(a); val cs = math.cos(a)
+        if (ref) { val a = angle(i); sc(0) = math.sin(a); sc(1) = math.cos(a) } else Turns.sinCos(turn(i), sc, 0)
+        val sn = sc(0); val cs = sc(1)
         if (plain) { a1(i) = sn; a2(i) = cs; b1(i) = sn; b2(i) = cs }
         else {
           if (table != null) table(freq(i), sn, cs, o) else resp(freq(i), sn, cs, o)
@@ -444,10 +456,15 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
     Repaired(a, b, ca, cb)
   }
 
+  /** How much the last refining step of `refit` lowered BIC (infinite before the first). */
+  def lastGain: Double = _lastGain
+  private var _lastGain = Double.PositiveInfinity
+
   /** Refits the default part and all linear terms (and the trajectory) for the current spec. */
   def refit(iters: Int, refineTraj: Boolean, from: Int = 0): Unit = {
     var it = from
     while (it < iters) {
+      val before = if (_noise.m2ll == 0 || _traj == null) Double.PositiveInfinity else bic; val refines = it > 0 && refineTraj
       if (it > 0 && refineTraj && traj.isInstanceOf[RefTrajectory]) jointStep(traj.asInstanceOf[RefTrajectory])
       else if (it > 0 && refineTraj) Laps("refit: trajectory and fundamentals") {
         val d = new Array[Double](n); val w = new Array[Double](n)
@@ -459,7 +476,7 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
             i += 1
           }
         }
-        traj.addFit(d, w); evalTraj()
+        Laps("traj: addFit")(traj.addFit(d, w)); Laps("traj: evalTraj")(evalTraj())
       }
       if (it > 0) Laps("refit: repair") { val r = repair(spec, predS, predC); _repS = r.s; _repC = r.c; _cens = r } // the predictions are garbage after
       Laps("refit: fundamentals")(setFundamentals())
@@ -472,6 +489,7 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
       it += 1
       _noise = Laps("refit: noise")(Noise.fit(resS, resC, noiseSlopes(spec), cens))
       _version += 1
+      if (refines) _lastGain = before - bic
       if (SignalEngine.debug) System.err.println(f"refit $it: rms $rms%.4g bic $bic%.8g")
     }
   }
@@ -494,8 +512,9 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
   def converge(maxIters: Int = 12): Unit = {
     // three steps before the first check: a new fault's repair may gain little at its first step and much later
     refit(3, refineTraj = true)
-    // then one refining step at a time (a plain solve first would repeat the last one's fit)
-    var prev = Double.PositiveInfinity; var k = 3
+    // then one refining step at a time (a plain solve first would repeat the last one's fit), unless the third step
+    // gained less than the loop asks of a step (the reference path takes one more)
+    var prev = if (FitPath.isReference) Double.PositiveInfinity else bic + lastGain; var k = 3
     val from = if (FitPath.isReference) 0 else 1; val step = 2 - from
     while (k < maxIters && prev - bic > 0.5) { prev = bic; refit(2, refineTraj = true, from = from); k += step }
   }
