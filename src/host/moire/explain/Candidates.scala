@@ -301,9 +301,9 @@ final class Candidates(val engine: SignalEngine) {
     if (spec.terms.exists(_.isInstanceOf[Term.Warmup])) return None
     val span = n / fs; val st = stride
     val idx = (0 until n by st).toArray
-    def pick(a: Array[Double]) = if (a == null) null else idx.map(a(_))
+    def pick(a: Array[Double]) = if (a == null) null else Doubles.tabulate(idx.length)(q => a(idx(q)))
     val ys = pick(resS); val yc = pick(resC); val base = baseCols(s1, s2, c1, c2).map(c => Col(pick(c.s), pick(c.c)))
-    val uS = idx.map(us(_)); val uC = idx.map(uc(_))
+    val uS = Doubles.tabulate(idx.length)(q => us(idx(q))); val uC = Doubles.tabulate(idx.length)(q => uc(idx(q)))
     // -2 ln L (white noise) of the warm-up at log10(tau), from the subsample (its columns built there), scaled to all samples
     def f(lt: Double): Double = {
       val tau = math.pow(10, lt)
@@ -312,9 +312,46 @@ final class Candidates(val engine: SignalEngine) {
       val rss = LinearFit.rss(cols, sol.beta, ys, sinCh = true) + LinearFit.rss(cols, sol.beta, yc, sinCh = false)
       2.0 * n * math.log(math.max(1e-300, rss / (2.0 * ys.length)))
     }
+    // the fast path: the default part's sums once, then per time constant one pass for the warm-up's own (its columns
+    // against the default part's, each other and the data), the rss from the sums (y'y - 2 b'X'y + b'X'X b)
+    lazy val fixed = { val (g, r) = Gram.of(base, ys, yc); (g, r, sumSq(ys) + sumSq(yc)) }
+    def fast(lt: Double): Double = {
+      val tau = math.pow(10, lt); val (gB, rB, yy) = fixed
+      val m = idx.length; val bs1 = base(1).s; val bs2 = base(2).s; val bc1 = base(4).c; val bc2 = base(5).c
+      // per channel: w and u w against the channel's three default columns (1, sin, cos) and the data, and each other
+      // exp(-t / tau) at the subsample's regular times: each block from its first point, then by its ratio
+      val ratio = math.exp(-st / fs / tau)
+      val q = Par.sums(m, 22, Gram.Block) { (a, b, o) =>
+        var k = a; var w = math.exp(-idx(a) / fs / tau)
+        while (k < b) {
+          val ws = uS(k) * w; val wc = uC(k) * w
+          val s1k = bs1(k); val s2k = bs2(k); val c1k = bc1(k); val c2k = bc2(k); val y1 = ys(k); val y2 = yc(k)
+          o(0) += w; o(1) += w * s1k; o(2) += w * s2k; o(3) += w * y1
+          o(4) += ws; o(5) += ws * s1k; o(6) += ws * s2k; o(7) += ws * y1
+          o(8) += w * w; o(9) += w * ws; o(10) += ws * ws
+          o(11) += w; o(12) += w * c1k; o(13) += w * c2k; o(14) += w * y2
+          o(15) += wc; o(16) += wc * c1k; o(17) += wc * c2k; o(18) += wc * y2
+          o(19) += w * w; o(20) += w * wc; o(21) += wc * wc
+          w *= ratio; k += 1
+        }
+      }
+      // columns: the default part's 6 (sin: 0-2, cos: 3-5), then w on sin (6), w on cos (7), u w on sin (8), u w on cos (9)
+      val g = Array.ofDim[Double](10, 10); val r = new Array[Double](10)
+      for (i <- 0 until 6; j <- 0 until 6) g(i)(j) = gB(i)(j)
+      for (i <- 0 until 6) r(i) = rB(i)
+      def set(i: Int, j: Int, v: Double): Unit = { g(i)(j) = v; g(j)(i) = v }
+      for ((col, at) <- Seq((6, 0), (8, 4))) { set(col, 0, q(at)); set(col, 1, q(at + 1)); set(col, 2, q(at + 2)); r(col) = q(at + 3) }
+      for ((col, at) <- Seq((7, 11), (9, 15))) { set(col, 3, q(at)); set(col, 4, q(at + 1)); set(col, 5, q(at + 2)); r(col) = q(at + 3) }
+      set(6, 6, q(8)); set(6, 8, q(9)); set(8, 8, q(10)); set(7, 7, q(19)); set(7, 9, q(20)); set(9, 9, q(21))
+      val sol = LinearFit.normal(g, r)
+      var rss = yy
+      for (i <- 0 until 10) { rss -= 2 * sol.beta(i) * r(i); for (j <- 0 until 10) rss += sol.beta(i) * g(i)(j) * sol.beta(j) }
+      2.0 * n * math.log(math.max(1e-300, rss / (2.0 * ys.length)))
+    }
     val lo = math.log10(span / 100); val hi = math.log10(3 * span)
-    val lt = minimize(f, lo, hi, grid = 12, golden = 12)
-    val sdLog = curvatureSd(f, lt, 0.05)
+    val search: Double => Double = if (FitPath.isReference) f else fast
+    val lt = minimize(search, lo, hi, grid = 12, golden = 12)
+    val sdLog = curvatureSd(search, lt, 0.05)
     val tau = math.pow(10, lt)
     linear(Term.Warmup(tau)).map { case (c, _) => c.copy(unc = c.unc + ("time_constant_s" -> tau * math.log(10) * sdLog)) }
   }

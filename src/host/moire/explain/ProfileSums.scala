@@ -94,20 +94,28 @@ private[explain] final class ProfileSums(e: SignalEngine, idx: Array[Int]) {
     */
   def m2ll(sp: ModelSpec): Double = {
     val resp = new ChannelResponse(sp)
-    val half = 0.5 * width
+    val half = 0.5 * width; val nodes = 2 * bins + 1
+    // the response at the nodes in use: A and B of each channel (x1 = A sn + B cs, x2 = A cs - B sn)
+    val at = new Array[Double](4 * nodes)
+    Par.blocks(nodes, ProfileSums.NodeBlock) { (v0, v1) =>
+      val o = new Array[Double](4); var v = v0
+      while (v < v1) {
+        if (used(v)) { resp(lo + v * half, 1.0, 0.0, o); at(4 * v) = o(0); at(4 * v + 1) = -o(1); at(4 * v + 2) = o(2); at(4 * v + 3) = -o(3) }
+        v += 1
+      }
+    }
     // the quadratic through a bin's nodes must hold the response at its quarter point to 1e-8: else NaN (the caller
     // takes the profile on every sample; a range of fringe frequencies far wider than the cut-off)
     val missed = Par.sums(bins, 1, ProfileSums.NodeBlock) { (b0, b1, m) =>
-      val o = new Array[Double](4); val v = new Array[Double](12); var b = b0
+      val o = new Array[Double](4); var b = b0
       while (b < b1) {
         if (used(2 * b + 1)) {
-          var k = 0
-          while (k < 3) { resp(lo + (b + 0.5 * k) * width, 1.0, 0.0, o); Array.copy(o, 0, v, 4 * k, 4); k += 1 }
           resp(lo + (b + 0.75) * width, 1.0, 0.0, o)
           var j = 0
           while (j < 4) {
-            val q = -0.125 * v(j) + 0.75 * v(4 + j) + 0.375 * v(8 + j) // the quadratic at u = 1/4
-            if (!(math.abs(q - o(j)) <= 1e-8 * math.max(1.0, math.abs(o(j))))) m(0) += 1
+            val x = if (j % 2 == 0) o(j) else -o(j)
+            val q = -0.125 * at(8 * b + j) + 0.75 * at(8 * b + 4 + j) + 0.375 * at(8 * b + 8 + j) // the quadratic at u = 1/4
+            if (!(math.abs(q - x) <= 1e-8 * math.max(1.0, math.abs(x)))) m(0) += 1
             j += 1
           }
         }
@@ -116,17 +124,15 @@ private[explain] final class ProfileSums(e: SignalEngine, idx: Array[Int]) {
     }
     if (missed(0) > 0) return Double.NaN
     // per channel: x1, x2, x1 x1, x1 x2, x2 x2, y x1, y x2
-    val m = Par.sums(2 * bins + 1, 14, ProfileSums.NodeBlock) { (v0, v1, m) =>
-      val o = new Array[Double](4)
+    val m = Par.sums(nodes, 14, ProfileSums.NodeBlock) { (v0, v1, m) =>
       var v = v0
       while (v < v1) {
         val k = 9 * v
         if (used(v)) {
-          resp(lo + v * half, 1.0, 0.0, o)
           val sn = sums(k); val cs = sums(k + 1); val ss = sums(k + 2); val sc = sums(k + 3); val cc = sums(k + 4)
           var ch = 0
           while (ch < 2) {
-            val a = o(2 * ch); val b = -o(2 * ch + 1); val aa = a * a; val ab = a * b; val bb = b * b
+            val a = at(4 * v + 2 * ch); val b = at(4 * v + 2 * ch + 1); val aa = a * a; val ab = a * b; val bb = b * b
             val ysn = sums(k + 5 + 2 * ch); val ycs = sums(k + 6 + 2 * ch)
             val q = 7 * ch
             m(q) += a * sn + b * cs

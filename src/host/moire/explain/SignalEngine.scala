@@ -129,7 +129,7 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
       _base = Array(os, as, 0, oc, 0, ac); spec = ModelSpec(); _cens = Repaired(ys, yc, null, null); _repS = ys; _repC = yc
       // a plain solve and three refining steps; the fast path leaves out the third when the second gained < 0.5
       refit(3, refineTraj = true)
-      if (FitPath.isReference || lastGain > 0.5) refit(4, refineTraj = true, from = 3)
+      if (FitPath.isReference || !plainData || lastGain > 0.5) refit(4, refineTraj = true, from = 3)
     }
     /** The trajectory from the signals: of segments spanning 16, 6 or 2.5 fringe periods, the one with the lowest BIC. */
     def freeFit(): Unit = {
@@ -171,8 +171,8 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
     if (reference.isEmpty && !traj.isInstanceOf[Trajectory]) freeFit()
     // then settle until BIC does: samples held at a rail and the fit converge in turns, slowly when many sit at a rail (a
     // third of the samples at the rails take some 30 steps; left after four, the clipping passed for INL and odd harmonics)
-    // (the fast path not when the last refining step gained < 0.5 already)
-    var last = if (FitPath.isReference) Double.PositiveInfinity else bic + lastGain; var k = 0
+    // (the fast path not when the last refining step gained < 0.5 already and no sample sits at a rail)
+    var last = if (FitPath.isReference || !plainData) Double.PositiveInfinity else bic + lastGain; var k = 0
     while (k < 40 && last - bic > 0.5) { last = bic; refit(2, refineTraj = true, from = 1); k += 1 }
   }
 
@@ -456,6 +456,9 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
     Repaired(a, b, ca, cb)
   }
 
+  /** No fault repaired and no sample held at a rail: the fit's data do not change from one step to the next. */
+  private def plainData: Boolean = spec.faults.isEmpty && cens.censS == null && cens.censC == null
+
   /** How much the last refining step of `refit` lowered BIC (infinite before the first). */
   def lastGain: Double = _lastGain
   private var _lastGain = Double.PositiveInfinity
@@ -513,8 +516,9 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
     // three steps before the first check: a new fault's repair may gain little at its first step and much later
     refit(3, refineTraj = true)
     // then one refining step at a time (a plain solve first would repeat the last one's fit), unless the third step
-    // gained less than the loop asks of a step (the reference path takes one more)
-    var prev = if (FitPath.isReference) Double.PositiveInfinity else bic + lastGain; var k = 3
+    // gained less than the loop asks of a step and nothing is repaired or held at a rail (a repair may gain little at
+    // one step and much at the next; the reference path always takes one more)
+    var prev = if (FitPath.isReference || !plainData) Double.PositiveInfinity else bic + lastGain; var k = 3
     val from = if (FitPath.isReference) 0 else 1; val step = 2 - from
     while (k < maxIters && prev - bic > 0.5) { prev = bic; refit(2, refineTraj = true, from = from); k += step }
   }
