@@ -20,14 +20,7 @@ private[explain] final class ProfileSums(e: SignalEngine, idx: Array[Int]) {
   /** Bins: about 16 points each, at most 2,048. */
   val bins: Int = math.max(1, math.min(ProfileSums.MaxBins, count / 16))
   private val (lo, width) = {
-    val k = (count + Par.Block - 1) / Par.Block
-    val mins = new Array[Double](k); val maxs = new Array[Double](k)
-    Par.blocks(count) { (a, b) =>
-      var mn = Double.PositiveInfinity; var mx = Double.NegativeInfinity; var q = a
-      while (q < b) { val f = e.freq(at(q)); if (f < mn) mn = f; if (f > mx) mx = f; q += 1 }
-      mins(a / Par.Block) = mn; maxs(a / Par.Block) = mx
-    }
-    val mn = if (k == 0) 0.0 else mins.min; val mx = if (k == 0) 0.0 else maxs.max
+    val (mn, mx) = if (idx == null) e.freqRange else Doubles.range(count)(q => e.freq(idx(q)))
     (mn, if (mx > mn) (mx - mn) / bins else 0.0)
   }
   @inline private def at(q: Int): Int = if (idx == null) q else idx(q)

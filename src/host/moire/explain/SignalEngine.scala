@@ -284,16 +284,7 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
 
   /** The lowest and highest fringe frequency (Hz, signed) of the current phase. */
   def freqRange: (Double, Double) = {
-    if (fRange == null || fRangeAt != phaseCount) {
-      val k = (n + Par.Block - 1) / Par.Block
-      val mins = Array.fill(k)(Double.PositiveInfinity); val maxs = Array.fill(k)(Double.NegativeInfinity)
-      Par.blocks(n) { (a, b) =>
-        var mn = Double.PositiveInfinity; var mx = Double.NegativeInfinity; var i = a
-        while (i < b) { val f = freq(i); if (f < mn) mn = f; if (f > mx) mx = f; i += 1 }
-        mins(a / Par.Block) = mn; maxs(a / Par.Block) = mx
-      }
-      fRange = if (k == 0) (0.0, 0.0) else (mins.min, maxs.max); fRangeAt = phaseCount
-    }
+    if (fRange == null || fRangeAt != phaseCount) { fRange = Doubles.range(n)(freq(_)); fRangeAt = phaseCount }
     fRange
   }
   private var fRange: (Double, Double) = null
