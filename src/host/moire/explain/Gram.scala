@@ -15,6 +15,11 @@ object Gram {
     val rows = if (idx != null) idx.length else if (ys != null) ys.length else cols.find(_.s != null).map(_.s.length).getOrElse(cols.head.c.length)
     val as = cols.map(_.s).toArray; val ac = cols.map(_.c).toArray
     val sum = Par.sums(rows, k * (k + 1) / 2 + k, Block)((lo, hi, out) => block(as, ac, ys, yc, idx, lo, hi, out))
+    unpack(sum, k)
+  }
+
+  /** X'X and X'y from the sums in `block`'s order. */
+  private[explain] def unpack(sum: Array[Double], k: Int): (Array[Array[Double]], Array[Double]) = {
     val g = Array.ofDim[Double](k, k); val r = new Array[Double](k)
     var q = 0
     for (i <- 0 until k) { for (j <- 0 to i) { g(i)(j) = sum(q); g(j)(i) = sum(q); q += 1 }; r(i) = sum(q); q += 1 }
@@ -38,7 +43,7 @@ object Gram {
   }
 
   /** One block's sums, in the order (0,0), y0, (1,0), (1,1), y1, ... : pair (i, j <= i), then column i against y. */
-  private def block(as: Array[Array[Double]], ac: Array[Array[Double]], ys: Array[Double], yc: Array[Double], idx: Array[Int],
+  private[explain] def block(as: Array[Array[Double]], ac: Array[Array[Double]], ys: Array[Double], yc: Array[Double], idx: Array[Int],
                     lo: Int, hi: Int, out: Array[Double]): Unit = {
     val k = as.length
     // a block's rows gathered when they are a fold (`idx`): the products then run over contiguous copies

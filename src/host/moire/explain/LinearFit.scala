@@ -95,50 +95,99 @@ object LinearFit {
   }
 }
 
-/** A design's columns in groups (the default part, then one group per term), made on demand. With `keep` each group
-  * is made once and held; without it a group is made again whenever it is needed, so that no more than two groups
-  * are in memory at once (a long record's terms would not fit together). Both give the same numbers.
+/** A group's columns made a block of samples at a time, never whole: `fill(lo, hi, out, at)` writes samples [lo, hi)
+  * of column j's sin part into out(2 j) and of its cos part into out(2 j + 1), sample i at index at + i - lo. `sin(j)` /
+  * `cos(j)`: column j has a part on that channel (else its out entry is null and left alone).
   */
-final class ColGroups(make: IndexedSeq[() => IndexedSeq[Col]], keep: Boolean, held0: IndexedSeq[Boolean] = IndexedSeq()) {
+final class ColGen(val sin: Array[Boolean], val cos: Array[Boolean], val fill: (Int, Int, Array[Array[Double]], Int) => Unit) {
+  def size: Int = sin.length
+  /** The columns over all n samples, as arrays (the blocks on all cores). */
+  def whole(n: Int): IndexedSeq[Col] = {
+    val out = Array.tabulate(2 * size)(p => if ((if (p % 2 == 0) sin else cos)(p / 2)) new Array[Double](n) else null)
+    Par.blocks(n, Gram.Block)((lo, hi) => fill(lo, hi, out, lo))
+    (0 until size).map(j => Col(out(2 * j), out(2 * j + 1)))
+  }
+}
+
+/** A design's columns in groups (the default part, then one group per term). With `keep` each group is made once and
+  * held; without it the groups that have a generator (`gens`) are made a block at a time wherever they are read (a long
+  * record's terms would not fit in memory), the others once and held. Both give the same numbers.
+  */
+final class ColGroups(make: IndexedSeq[() => IndexedSeq[Col]], keep: Boolean, held0: IndexedSeq[Boolean] = IndexedSeq(),
+                      gens: IndexedSeq[ColGen] = IndexedSeq()) {
   private val held = new Array[IndexedSeq[Col]](make.size)
   private var at: Array[Int] = _
   def size: Int = make.size
-  /** Group g's columns. The first group and those marked in `held0` are always held. */
+  private def gen(g: Int): ColGen = if (keep || g == 0 || held0.lift(g).contains(true)) null else gens.lift(g).orNull
+  /** Group g's columns, whole. The groups without a generator are held once made. */
   def apply(g: Int): IndexedSeq[Col] =
-    if (held(g) != null) held(g) else { val c = make(g)(); if (keep || g == 0 || held0.lift(g).contains(true)) held(g) = c; c }
+    if (held(g) != null) held(g) else { val c = make(g)(); if (gen(g) == null) held(g) = c; c }
   /** Where each group's coefficients start in the solution (known after `solve`). */
   def offsets: IndexedSeq[Int] = at.toIndexedSeq
+  private def streamed: Boolean = (0 until size).exists(gen(_) != null)
+
+  /** The held groups' columns (null where a group is made a block at a time), and where each group's start. */
+  private def layout(): IndexedSeq[IndexedSeq[Col]] = {
+    val all = (0 until size).map(g => if (gen(g) == null) apply(g) else null)
+    at = (0 until size).map(g => if (all(g) == null) gen(g).size else all(g).size).scanLeft(0)(_ + _).toArray
+    all
+  }
 
   /** The least-squares fit over all groups' columns (the same numbers as `LinearFit.solve` on them all). */
   def solve(ys: Array[Double], yc: Array[Double]): LinSol = {
-    val n = make.size
-    // held groups: all their products in one pass over the samples; groups made again: a pass per pair of groups
-    if (keep) {
-      val all = (0 until n).map(apply)
-      at = all.map(_.size).scanLeft(0)(_ + _).toArray
-      val (g, r) = Gram.of(all.flatten, ys, yc)
-      return LinearFit.normal(g, r)
+    val all = layout()
+    if (!streamed) { val (g, r) = Gram.of(all.flatten, ys, yc); return LinearFit.normal(g, r) }
+    // the held columns' block copied beside the made ones: the same block sums as `Gram.of` on whole columns
+    val k = at(size)
+    val sum = Par.sums(ys.length, k * (k + 1) / 2 + k, Gram.Block) { (lo, hi, out) =>
+      val (s, c) = block(all, lo, hi, sinCh = true, cosCh = true)
+      Gram.block(s, c, slice(ys, lo, hi), slice(yc, lo, hi), null, 0, hi - lo, out)
     }
-    val blocks = Array.ofDim[Array[Array[Double]]](n, n); val rs = new Array[Array[Double]](n)
-    for (i <- 0 until n) {
-      val ci = apply(i)
-      for (j <- 0 to i) {
-        val cj = if (j == i) ci else apply(j)
-        // the products of the pair (i, j): ci's own Gram (with y), or the block between ci and cj
-        if (j == i) { val (g, r) = Gram.of(ci, ys, yc); rs(i) = r; blocks(i)(j) = g }
-        else blocks(i)(j) = Gram.cross(ci, cj)
+    val (g, r) = Gram.unpack(sum, k)
+    LinearFit.normal(g, r)
+  }
+
+  private def slice(a: Array[Double], lo: Int, hi: Int): Array[Double] = if (a == null) null else java.util.Arrays.copyOfRange(a, lo, hi)
+  /** Every column's samples [lo, hi) (at 0 until hi - lo) on the channels asked for: held ones copied, the rest made. */
+  private def block(all: IndexedSeq[IndexedSeq[Col]], lo: Int, hi: Int, sinCh: Boolean, cosCh: Boolean): (Array[Array[Double]], Array[Array[Double]]) = {
+    val k = at(size); val s = new Array[Array[Double]](k); val c = new Array[Array[Double]](k)
+    for (g <- 0 until size) {
+      val gn = gen(g)
+      if (gn == null) for ((col, j) <- all(g).zipWithIndex) {
+        if (sinCh) s(at(g) + j) = slice(col.s, lo, hi); if (cosCh) c(at(g) + j) = slice(col.c, lo, hi)
+      } else {
+        val out = Array.tabulate(2 * gn.size)(p => if ((if (p % 2 == 0) gn.sin else gn.cos)(p / 2)) new Array[Double](hi - lo) else null)
+        gn.fill(lo, hi, out, 0)
+        for (j <- 0 until gn.size) { if (sinCh) s(at(g) + j) = out(2 * j); if (cosCh) c(at(g) + j) = out(2 * j + 1) }
       }
     }
-    at = rs.map(_.length).scanLeft(0)(_ + _)
-    val k = at(n)
-    val g = Array.ofDim[Double](k, k)
-    for (i <- 0 until n; j <- 0 to i; a <- rs(i).indices; b <- rs(j).indices) {
-      val v = blocks(i)(j)(a)(b); g(at(i) + a)(at(j) + b) = v; g(at(j) + b)(at(i) + a) = v
-    }
-    LinearFit.normal(g, rs.flatten)
+    (s, c)
   }
 
   /** out += sign * sum beta_i * column_i on one channel, a group at a time. */
   def addTo(out: Array[Double], beta: Array[Double], sinCh: Boolean, sign: Double): Unit =
-    for (g <- 0 until make.size) LinearFit.addTo(out, apply(g), beta.slice(at(g), at(g + 1)), sinCh, sign)
+    if (sinCh) addToBoth(out, null, beta, sign) else addToBoth(null, out, beta, sign)
+
+  /** `addTo` on both channels (null: not that one), in one pass when columns are made a block at a time: each sample
+    * gets the columns' parts in column order, as `LinearFit.addTo` adds them.
+    */
+  def addToBoth(outS: Array[Double], outC: Array[Double], beta: Array[Double], sign: Double): Unit = {
+    val all = (0 until size).map(g => if (gen(g) == null) apply(g) else null)
+    if (!streamed) {
+      for (g <- 0 until size; (o, ch) <- Seq((outS, true), (outC, false)) if o != null) LinearFit.addTo(o, all(g), beta.slice(at(g), at(g + 1)), ch, sign)
+      return
+    }
+    val n = if (outS != null) outS.length else outC.length
+    Par.blocks(n, Gram.Block) { (lo, hi) =>
+      val (s, c) = block(all, lo, hi, outS != null, outC != null)
+      for ((o, a) <- Seq((outS, s), (outC, c)) if o != null) {
+        var k = 0
+        while (k < a.length) {
+          val x = a(k); val b = sign * beta(k)
+          if (x != null && b != 0) { var i = lo; while (i < hi) { o(i) += b * x(i - lo); i += 1 } }
+          k += 1
+        }
+      }
+    }
+  }
 }

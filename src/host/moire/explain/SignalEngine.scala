@@ -295,56 +295,92 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
 
   /** Columns of a linear term at the current state. */
   def termCols(t: Term): IndexedSeq[Col] = t match {
-    case Term.Harm(k, ch) =>
-      def harm(u: Int => Double, v: Int => Double): (Array[Double], Array[Double]) = {
-        val hs = new Array[Double](n); val hc = new Array[Double](n)
-        Par.blocks(n) { (lo, hi) =>
-          var i = lo
-          while (i < hi) {
-            val ui = u(i); val vi = v(i); val a = math.sqrt(ui * ui + vi * vi)
-            if (a > 0) {
-              val s = ui / a; val c = vi / a; var re = 1.0; var im = 0.0; var j = 0
-              while (j < k) { val r2 = re * c - im * s; im = re * s + im * c; re = r2; j += 1 }
-              hs(i) = a * im; hc(i) = a * re
-            }
-            i += 1
-          }
-        }
-        (hs, hc)
-      }
-      val sin = if (ch != "cos") { val (a, b) = harm(us(_), vs(_)); IndexedSeq(Col(a, null), Col(b, null)) } else IndexedSeq()
-      val cos = if (ch != "sin") { val (a, b) = harm(uc(_), vc(_)); IndexedSeq(Col(null, a), Col(null, b)) } else IndexedSeq()
-      sin ++ cos
-    case Term.Drift =>
-      val t = tc
-      IndexedSeq(Col(t, null), Col(null, t), Col(mul(us(_), t), null), Col(null, mul(uc(_), t)))
-    case Term.Am =>
-      val l = rec.linesPerRev.getOrElse(1.0)
-      val m = mechAngle.orNull
-      def th(i: Int) = if (m != null) m(i) else 2 * math.Pi * phase(i) / l
-      def col(u: Int => Double, f: Double => Double) = Doubles.tabulate(n)(i => u(i) * f(th(i)))
-      IndexedSeq(Col(col(us(_), math.cos), col(uc(_), math.cos)), Col(col(us(_), math.sin), col(uc(_), math.sin)))
     case Term.Inl(ch) =>
       def t2(p: Array[Double]) = Doubles.tabulate(n)(i => (2 * p(i) * p(i) - 1) * lsb)
       def t3(p: Array[Double]) = Doubles.tabulate(n)(i => (4 * p(i) * p(i) * p(i) - 3 * p(i)) * lsb)
       val ps = if (ch != "cos") predS else null; val pc = if (ch != "sin") predC else null
       def on(p: Array[Double], f: Array[Double] => Array[Double]) = if (p == null) null else f(p)
       IndexedSeq(Col(on(ps, t2), on(pc, t2)), Col(on(ps, t3), on(pc, t3)))
-    case Term.Crosstalk =>
-      val w = Doubles.tabulate(n)(i => 2 * math.Pi * freq(i))
-      IndexedSeq(Col(mul(vc(_), w), null), Col(null, mul(vs(_), w)))
     case t: Term.ContrastSpline => effects.ContrastAlongTravel.splineCols(this, t.knots)
-    case Term.Contrast =>
-      val x = travel
-      IndexedSeq(Col(x, null), Col(null, x), Col(mul(us(_), x), null), Col(null, mul(uc(_), x)))
-    case Term.Warmup(tau) => warmupCols(warmupBasis(tau), us(_), uc(_))
-    case Term.AngleHarm(m) =>
-      val th = mechAngle.get
-      def col(g: Int => Double, f: Double => Double) = Doubles.tabulate(n)(i => g(i) * (2 * math.Pi * f(m * th(i))))
-      IndexedSeq(Col(col(gS(_), math.cos), col(gC(_), math.cos)), Col(col(gS(_), math.sin), col(gC(_), math.sin)))
     case Term.Interference(hz) =>
       val (a, b) = line(hz)
       IndexedSeq(Col(a, null), Col(b, null), Col(null, a), Col(null, b))
+    case _ => termGen(t).get.whole(n)
+  }
+
+  /** A term's columns a block of samples at a time (`ColGen`), for the terms whose columns are a function of the
+    * sample; None for INL (from the prediction, which the fit overwrites) and the contrast spline.
+    */
+  def termGen(t: Term): Option[ColGen] = {
+    val T = true; val F = false
+    def gen(sin: Array[Boolean], cos: Array[Boolean])(f: (Int, Int, Array[Array[Double]], Int) => Unit) = Some(new ColGen(sin, cos, f))
+    t match {
+      case Term.Harm(k, ch) =>
+        val onS = ch != "cos"; val onC = ch != "sin"
+        // the k-th harmonic of the fitted fundamental (u, v): its amplitude times sin and cos of k times its angle
+        @inline def harm(ui: Double, vi: Double, o1: Array[Double], o2: Array[Double], q: Int): Unit = {
+          val a = math.sqrt(ui * ui + vi * vi)
+          if (a > 0) {
+            val s = ui / a; val c = vi / a; var re = 1.0; var im = 0.0; var j = 0
+            while (j < k) { val r2 = re * c - im * s; im = re * s + im * c; re = r2; j += 1 }
+            o1(q) = a * im; o2(q) = a * re
+          } else { o1(q) = 0; o2(q) = 0 }
+        }
+        val sin = (if (onS) Array(T, T) else Array[Boolean]()) ++ (if (onC) Array(F, F) else Array[Boolean]())
+        val cos = (if (onS) Array(F, F) else Array[Boolean]()) ++ (if (onC) Array(T, T) else Array[Boolean]())
+        gen(sin, cos) { (lo, hi, o, at) =>
+          var i = lo
+          while (i < hi) {
+            val q = at + i - lo
+            if (onS) harm(us(i), vs(i), o(0), o(2), q)
+            if (onC) { val p = if (onS) 4 else 0; harm(uc(i), vc(i), o(p + 1), o(p + 3), q) }
+            i += 1
+          }
+        }
+      case Term.Drift =>
+        gen(Array(T, F, T, F), Array(F, T, F, T)) { (lo, hi, o, at) =>
+          var i = lo
+          while (i < hi) { val q = at + i - lo; val x = (i - 0.5 * (n - 1)) / fs; o(0)(q) = x; o(3)(q) = x; o(4)(q) = us(i) * x; o(7)(q) = uc(i) * x; i += 1 }
+        }
+      case Term.Contrast =>
+        val m = Par.sum(n) { (lo, hi) => var s = 0.0; var i = lo; while (i < hi) { s += phase(i); i += 1 }; s } / n
+        gen(Array(T, F, T, F), Array(F, T, F, T)) { (lo, hi, o, at) =>
+          var i = lo
+          while (i < hi) { val q = at + i - lo; val x = phase(i) - m; o(0)(q) = x; o(3)(q) = x; o(4)(q) = us(i) * x; o(7)(q) = uc(i) * x; i += 1 }
+        }
+      case Term.Warmup(tau) =>
+        gen(Array(T, F, T, F), Array(F, T, F, T)) { (lo, hi, o, at) =>
+          var i = lo
+          while (i < hi) { val q = at + i - lo; val w = math.exp(-i / fs / tau); o(0)(q) = w; o(3)(q) = w; o(4)(q) = us(i) * w; o(7)(q) = uc(i) * w; i += 1 }
+        }
+      case Term.Crosstalk =>
+        gen(Array(T, F), Array(F, T)) { (lo, hi, o, at) =>
+          var i = lo
+          while (i < hi) { val q = at + i - lo; val w = 2 * math.Pi * freq(i); o(0)(q) = vc(i) * w; o(3)(q) = vs(i) * w; i += 1 }
+        }
+      case Term.Am =>
+        val l = rec.linesPerRev.getOrElse(1.0)
+        val m = mechAngle.orNull
+        gen(Array(T, T), Array(T, T)) { (lo, hi, o, at) =>
+          var i = lo
+          while (i < hi) {
+            val q = at + i - lo; val th = if (m != null) m(i) else 2 * math.Pi * phase(i) / l; val c = math.cos(th); val s = math.sin(th)
+            o(0)(q) = us(i) * c; o(1)(q) = uc(i) * c; o(2)(q) = us(i) * s; o(3)(q) = uc(i) * s; i += 1
+          }
+        }
+      case Term.AngleHarm(m) =>
+        val th = mechAngle.get
+        gen(Array(T, T), Array(T, T)) { (lo, hi, o, at) =>
+          var i = lo
+          while (i < hi) {
+            val q = at + i - lo; val c = 2 * math.Pi * math.cos(m * th(i)); val s = 2 * math.Pi * math.sin(m * th(i))
+            o(0)(q) = gS(i) * c; o(1)(q) = gC(i) * c; o(2)(q) = gS(i) * s; o(3)(q) = gC(i) * s; i += 1
+          }
+        }
+      case Term.Interference(hz) =>
+        gen(Array(T, T, F, F), Array(F, F, T, T)) { (lo, hi, o, at) => lineBlock(hz, lo, hi, o(0), o(2), o(5), o(7), at) }
+      case _ => None
+    }
   }
 
   /** sin and cos of a fixed-frequency line at every sample: the last one made is kept while two arrays of the record's
@@ -356,18 +392,22 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
     if (k != null && k._1 == hz) return (k._2, k._3)
     val a = new Array[Double](n); val b = new Array[Double](n)
     if (FitPath.isReference) { var i = 0; while (i < n) { a(i) = math.sin(2 * math.Pi * hz * i / fs); b(i) = math.cos(2 * math.Pi * hz * i / fs); i += 1 } }
-    else {
-      // by rotation, each block from its first sample's sin and cos (the error stays near 1e-12 over a block)
-      val w = 2 * math.Pi * hz / fs; val sw = math.sin(w); val cw = math.cos(w)
-      Par.blocks(n) { (lo, hi) =>
-        var s = math.sin(w * lo); var c = math.cos(w * lo); var i = lo
-        while (i < hi) { a(i) = s; b(i) = c; val s1 = s * cw + c * sw; c = c * cw - s * sw; s = s1; i += 1 }
-      }
-    }
+    else Par.blocks(n, Gram.Block)((lo, hi) => lineBlock(hz, lo, hi, a, b, null, null, lo))
     if (16L * n <= holdBytes / 2) lastLine = (hz, a, b) // a long record's are made again (memory before time)
     (a, b)
   }
   @volatile private var lastLine: (Double, Array[Double], Array[Double]) = null
+  /** The line's sin (into a, and a2 unless null) and cos (b, b2) over samples [lo, hi), sample i at at + i - lo: by
+    * rotation from the sin and cos at lo (the error stays near 1e-12 over a block of `Gram.Block`).
+    */
+  private def lineBlock(hz: Double, lo: Int, hi: Int, a: Array[Double], b: Array[Double], a2: Array[Double], b2: Array[Double], at: Int): Unit = {
+    val w = 2 * math.Pi * hz / fs; val sw = math.sin(w); val cw = math.cos(w)
+    var s = math.sin(w * lo); var c = math.cos(w * lo); var i = lo
+    while (i < hi) {
+      val q = at + i - lo; a(q) = s; b(q) = c; if (a2 != null) { a2(q) = s; b2(q) = c }
+      val s1 = s * cw + c * sw; c = c * cw - s * sw; s = s1; i += 1
+    }
+  }
 
   /** Position along the travel in fringe periods, centred on the record's mean position. */
   def travel: Array[Double] = {
@@ -515,20 +555,22 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
   }
 
   /** The design of the current spec: the default part, each term's columns, then `extra` groups (held). The terms'
-    * columns are held when they all fit in `holdBytes` (an eighth of the heap), else made again as needed (long records).
+    * columns are held when they all fit in `holdBytes` (an eighth of the heap), else made a block at a time where they
+    * are read (long records; INL's and the contrast spline's are held).
     */
   private def groups(extra: IndexedSeq[IndexedSeq[Col]] = IndexedSeq()): ColGroups = {
     val base0 = baseCols(s1, s2, c1, c2)
     val keep = n.toLong * 8 * 4 * spec.terms.size < holdBytes
     // the INL term's columns come from the residual, which the fit then overwrites: always held
     val held = (false +: spec.terms.toIndexedSeq.map(_.isInstanceOf[Term.Inl])) ++ extra.map(_ => true)
-    new ColGroups((() => base0) +: (spec.terms.toIndexedSeq.map(t => () => termCols(t)) ++ extra.map(c => () => c)), keep, held)
+    val gens = null +: spec.terms.toIndexedSeq.map(t => if (keep) null else termGen(t).orNull)
+    new ColGroups((() => base0) +: (spec.terms.toIndexedSeq.map(t => () => termCols(t)) ++ extra.map(c => () => c)), keep, held, gens)
   }
 
   /** The residual of the fit `sol` over `cols`: the repaired data less the prediction. */
   private def residual(cols: ColGroups): Unit = {
     System.arraycopy(repS, 0, resS, 0, n); System.arraycopy(repC, 0, resC, 0, n)
-    cols.addTo(resS, sol.beta, sinCh = true, -1.0); cols.addTo(resC, sol.beta, sinCh = false, -1.0)
+    cols.addToBoth(resS, resC, sol.beta, -1.0)
   }
 
   /** d(prediction)/d(2 pi fringe phase) per channel: the fundamental's (v), plus the harmonics' when the phase follows a
