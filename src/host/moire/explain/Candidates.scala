@@ -60,9 +60,13 @@ final class Candidates(val engine: SignalEngine) {
   def all(onStep: () => Unit): Seq[Cand] = {
     val timing = sys.props.contains("moire.timing")
     // the linear families whose columns are a function of the sample, from one pass (their searches read them off)
-    if (!spec.slopeNoise && cens.censS == null && cens.censC == null && !FitPath.isReference) {
+    // (a long record's on a spread subsample: see `confirmed`)
+    val white = !spec.slopeNoise && cens.censS == null && cens.censC == null && !FitPath.isReference
+    val screen = white && n > Candidates.ScreenAbove
+    if (white) {
       val t0 = System.nanoTime()
-      LinearSweep(e, effects.Harmonic.Orders, yy._1, yy._2).foreach { case (t, f) => families.put(t, f) }
+      val idx = if (screen) Candidates.spread(n, n / Candidates.ScreenSamples) else null
+      LinearSweep.of(e, LinearSweep.terms(effects.Harmonic.Orders), yy._1, yy._2, idx).foreach { case (t, f) => families.put(t, f) }
       if (timing) System.err.println(f"candidate linear-sweep ${(System.nanoTime() - t0) / 1e6}%.0f ms")
     }
     val found = new Array[Seq[Cand]](searches.size)
@@ -80,7 +84,33 @@ final class Candidates(val engine: SignalEngine) {
       java.util.stream.IntStream.range(0, searches.size).parallel().forEach(k => try run(k) catch { case x: Throwable => failed(k) = x })
       failed.find(_ != null).foreach(x => throw x)
     }
-    found.toSeq.flatten
+    if (screen) confirmed(found.toSeq.flatten, (n / Candidates.ScreenSamples).toDouble) else found.toSeq.flatten
+  }
+
+  /** The linear candidates screened on a subsample of every `st`-th sample's worth: those that lower BIC there (on the
+    * subsample's own count) fitted again on all samples (their families in one more pass), the rest dropped (kept
+    * with no gain: not significant on a million samples, they are not material on more). Others as they are.
+    */
+  private def confirmed(cands: Seq[Cand], st: Double): Seq[Cand] = {
+    val base = e.noise.m2ll
+    def term(c: Cand) = c.spec.terms.lastOption.filter(t => c.spec.terms.size == spec.terms.size + 1 && LinearFamily.of(t).isDefined)
+    // the candidate's gain on the subsample (its estimate is the subsample's scaled by st) against its own criterion there
+    def significant(c: Cand) = (base - c.m2ll) / st - c.extraK * math.log(2.0 * n / st) > SignalExplain.Threshold
+    val need = cands.filter(c => term(c).isDefined && significant(c)).flatMap(term)
+    // the subsample's families go (a later `linear` makes its own on all samples); those needed, from all samples
+    families.clear()
+    if (need.nonEmpty) Laps("candidates: confirmed on all samples") {
+      val fams = need.map(t => LinearFamily.of(t).get._1).distinct
+      if (sys.props.contains("moire.timing")) System.err.println(s"candidate confirm ${fams.mkString(", ")}")
+      LinearSweep.of(e, fams, yy._1, yy._2).foreach { case (t, f) => families.put(t, f) }
+    }
+    cands.map { c =>
+      term(c) match {
+        case Some(t) if need.contains(t) => linear(t).map(_._1).getOrElse(c.copy(m2ll = base))
+        case Some(_) => c.copy(m2ll = base)
+        case None => c
+      }
+    }
   }
   /** The registry's searches for this record: one progress step each. */
   lazy val searches: Seq[(String, () => Seq[Cand])] = Effects.all.filter(_.searched).flatMap(f => f.searches(this).map(f.name -> _))
@@ -497,6 +527,15 @@ object Candidates {
     val seen = scala.collection.mutable.Map.empty[Double, Double]
     x => seen.getOrElseUpdate(x, f(x))
   }
+
+  /** Samples above which the linear candidates are screened on a spread subsample of `ScreenSamples`, and those that
+    * are significant there fitted on all samples.
+    */
+  def ScreenAbove: Int = screen.value._1
+  def ScreenSamples: Int = screen.value._2
+  private val screen = new scala.util.DynamicVariable((1 << 22, 1 << 20))
+  /** Runs `body` with screening above `above` samples on `samples` (a test's short records). */
+  def screening[A](above: Int, samples: Int)(body: => A): A = screen.withValue((above, samples))(body)
 
   /** Samples up to which the searches run side by side (beyond, their columns would hold too much of the heap at once). */
   val SideBySide: Int = 1 << 22

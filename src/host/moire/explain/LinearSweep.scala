@@ -20,9 +20,16 @@ object LinearSweep {
     case _ => (Array(true, false, true, false), Array(false, true, false, true)) // drift, contrast
   }
 
-  def apply(e: SignalEngine, orders: Seq[Int], yyS: Double, yyC: Double): Map[Term, LinearFamily] = {
+  def apply(e: SignalEngine, orders: Seq[Int], yyS: Double, yyC: Double): Map[Term, LinearFamily] = of(e, terms(orders), yyS, yyC)
+
+  /** The families `families` (of `terms`) from one pass over all samples, or over the samples `idx` (a screening
+    * subsample): then each channel's sums are scaled so that the default part's own fit there leaves the whole record's
+    * residual sum of squares (yyS, yyC), and a family's variant lowers it by the same fraction as on the subsample.
+    */
+  def of(e: SignalEngine, families: Seq[Term], yyS: Double, yyC: Double, idx: Array[Int] = null): Map[Term, LinearFamily] = {
     import e._
-    val fams = terms(orders).toArray
+    val orders = families.collect { case Term.Harm(k, _) => k }.sorted
+    val fams = (orders.map(k => Term.Harm(k, "both")) ++ families.filterNot(_.isInstanceOf[Term.Harm])).toArray
     val nf = fams.length
     val maxOrder = if (orders.isEmpty) 0 else orders.max
     val orderAt = Array.fill(maxOrder + 1)(-1); orders.zipWithIndex.foreach { case (k, j) => orderAt(k) = j }
@@ -43,11 +50,13 @@ object LinearSweep {
     // per channel, the family's columns with a part there (indices into its columns)
     val onS = ps.map(p => p._1.indices.filter(p._1(_)).toArray); val onC = ps.map(p => p._2.indices.filter(p._2(_)).toArray)
 
-    val sums = Par.sums(n, mS + mC, Gram.Block) { (lo, hi, acc) =>
+    val rows = if (idx == null) n else idx.length
+    val sums = Par.sums(rows, mS + mC + 2, Gram.Block) { (lo, hi, acc) =>
       val v = new Array[Double](2 * colAt(nf)) // the families' column values at a sample: (sin part, cos part) per column
       val bs = new Array[Double](3); val bc = new Array[Double](3)
-      var i = lo
-      while (i < hi) {
+      var row = lo
+      while (row < hi) {
+        val i = if (idx == null) row else idx(row)
         // the families' columns at sample i, as their termCols make them
         val usi = us(i); val vsi = vs(i); val uci = uc(i); val vci = vc(i)
         if (maxOrder > 0) {
@@ -100,8 +109,19 @@ object LinearSweep {
           }
         }
         channel(bs, resS(i), onS, atS, 0, 0); channel(bc, resC(i), onC, atC, mS, 1)
-        i += 1
+        acc(mS + mC) += resS(i) * resS(i); acc(mS + mC + 1) += resC(i) * resC(i)
+        row += 1
       }
+    }
+    // a subsample's sums scaled per channel: the default part's fit there to the record's residual sum of squares
+    val (famS, famC) = if (idx == null) (yyS, yyC) else {
+      def scale(off: Int, m: Int, yySub: Double, yyAll: Double): Double = {
+        val q = sums.slice(off, off + 9)
+        val c = yyAll / Candidates.rss(Array(q(0), q(1), q(3), q(2), q(4), q(5), q(6), q(7), q(8), yySub))
+        for (j <- off until off + m) sums(j) *= c
+        c * yySub
+      }
+      (scale(0, mS, sums(mS + mC), yyS), scale(mS, mC, sums(mS + mC + 1), yyC))
     }
 
     // each family's Gram in LinearFamily's layout: columns 0..5 the default part's, 6.. the family's; index j for a
@@ -125,7 +145,7 @@ object LinearSweep {
       channel(0, atS, onS, Array(0, 1, 2), 0); channel(mS, atC, onC, Array(k + 3, k + 4, k + 5), k)
       val (hs, hc) = ps(f)
       fams(f) -> new LinearFamily(k, g, r, IndexedSeq(true, true, true, false, false, false) ++ hs,
-        IndexedSeq(false, false, false, true, true, true) ++ hc, yyS, yyC)
+        IndexedSeq(false, false, false, true, true, true) ++ hc, famS, famC)
     }.toMap
   }
 }
