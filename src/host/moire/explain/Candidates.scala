@@ -21,16 +21,18 @@ final class Candidates(val engine: SignalEngine) {
     if (spec.terms.contains(t)) return None
     val white = !spec.slopeNoise && cens.censS == null && cens.censC == null
     if (white && !FitPath.isReference) LinearFamily.of(t).foreach { case (f, ch) => return variant(t, f, ch) }
-    val cols = baseCols(s1, s2, c1, c2) ++ termCols(t)
-    val s = LinearFit.solve(cols, resS, resC)
+    // a long record's term made a block at a time where it is read (its columns would take as much heap as the fit)
+    val gen = if (n > Candidates.SideBySide && !FitPath.isReference) termGen(t).orNull else null
+    val design = new ColGroups(IndexedSeq(() => baseCols(s1, s2, c1, c2), () => termCols(t)), keep = gen == null, IndexedSeq(), IndexedSeq(null, gen))
+    val s = design.solve(resS, resC)
     if (!s.ok) return None
     // without jitter or censoring only the sums of squares matter: no residual arrays
     val (nz, v) =
-      if (!spec.slopeNoise && cens.censS == null && cens.censC == null) {
-        val a = LinearFit.rss(cols, s.beta, resS, sinCh = true); val b = LinearFit.rss(cols, s.beta, resC, sinCh = false)
+      if (white) {
+        val (a, b) = design.rss(resS, resC, s.beta)
         (Noise.white(a, b, n), (a + b) / (2.0 * n))
       } else {
-        val rs = LinearFit.minus(resS, cols, s.beta, sinCh = true); val rc = LinearFit.minus(resC, cols, s.beta, sinCh = false)
+        val rs = resS.clone(); val rc = resC.clone(); design.addToBoth(rs, rc, s.beta, -1.0)
         (Noise.fit(rs, rc, noiseSlopes(spec), cens), (sumSq(rs) + sumSq(rc)) / (2.0 * n))
       }
     val b = s.beta.drop(6); val sd = (6 until s.beta.length).map(i => math.sqrt(math.max(0, s.inv(i)(i)) * v)).toArray

@@ -164,6 +164,22 @@ final class ColGroups(make: IndexedSeq[() => IndexedSeq[Col]], keep: Boolean, he
     (s, c)
   }
 
+  /** Each channel's residual sum of squares of ys, yc less the columns times beta (no residual arrays). */
+  def rss(ys: Array[Double], yc: Array[Double], beta: Array[Double]): (Double, Double) = {
+    val all = layout()
+    if (!streamed) { val cols = all.flatten; return (LinearFit.rss(cols, beta, ys, sinCh = true), LinearFit.rss(cols, beta, yc, sinCh = false)) }
+    val q = Par.sums(ys.length, 2, Gram.Block) { (lo, hi, out) =>
+      val (s, c) = block(all, lo, hi, sinCh = true, cosCh = true)
+      for ((y, a, o) <- Seq((ys, s, 0), (yc, c, 1))) {
+        val r = java.util.Arrays.copyOfRange(y, lo, hi); var k = 0
+        while (k < a.length) { val x = a(k); val b = beta(k); if (x != null && b != 0) { var i = 0; while (i < r.length) { r(i) -= b * x(i); i += 1 } }; k += 1 }
+        var z = 0.0; var i = 0; while (i < r.length) { z += r(i) * r(i); i += 1 }
+        out(o) += z
+      }
+    }
+    (q(0), q(1))
+  }
+
   /** out += sign * sum beta_i * column_i on one channel, a group at a time. */
   def addTo(out: Array[Double], beta: Array[Double], sinCh: Boolean, sign: Double): Unit =
     if (sinCh) addToBoth(out, null, beta, sign) else addToBoth(null, out, beta, sign)

@@ -124,13 +124,13 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
     val blk = math.max(16, math.min(4096, n / 64))
     val speeds = (0 until n / blk).map(b => math.abs(raw((b + 1) * blk - 1) - raw(b * blk)) * fs / (blk - 1)).sorted
     _typicalHz = if (speeds.isEmpty) 0.0 else speeds(speeds.size / 2)
-    def start(t: PhaseTrack, first: Array[Double]): Unit = {
+    def prepare(t: PhaseTrack, first: Array[Double]): Unit = {
       _traj = t; traj.addFit(first, null); evalTraj()
       _base = Array(os, as, 0, oc, 0, ac); spec = ModelSpec(); _cens = Repaired(ys, yc, null, null); _repS = ys; _repC = yc
-      // a plain solve and three refining steps; the fast path leaves out the third when the second gained < 0.5
-      refit(3, refineTraj = true)
-      if (FitPath.isReference || !plainData || lastGain > 0.5) refit(4, refineTraj = true, from = 3)
     }
+    // a plain solve and three refining steps; the fast path leaves out the third when the second gained < 0.5
+    def finish(): Unit = if (FitPath.isReference || !plainData || lastGain > 0.5) refit(4, refineTraj = true, from = 3)
+    def start(t: PhaseTrack, first: Array[Double]): Unit = { prepare(t, first); refit(3, refineTraj = true); finish() }
     /** The trajectory from the signals: of segments spanning 16, 6 or 2.5 fringe periods, the one with the lowest BIC. */
     def freeFit(): Unit = {
       def free(len: Int): Unit = start(new Trajectory(n, len, fs), raw)
@@ -138,13 +138,25 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
       if (lens.size == 1) { free(lens.head); return }
       // each length's fitted trajectory and repaired data are kept: the best is restored and solved once, not fitted again
       final case class Fitted(len: Int, bic: Double, traj: PhaseTrack, repS: Array[Double], repC: Array[Double], cens: Repaired, gain: Double)
-      val fitted = lens.map { l => free(l); Fitted(l, bic, _traj, _repS, _repC, _cens, lastGain) }
-      val best = fitted.minBy(_.bic)
-      if (FitPath.isReference) free(best.len)
-      else if (best ne fitted.last) {
-        _traj = best.traj; evalTraj(); _repS = best.repS; _repC = best.repC; _cens = best.cens
-        refit(1, refineTraj = false); _lastGain = best.gain
+      def kept(l: Int) = Fitted(l, bic, _traj, _repS, _repC, _cens, lastGain)
+      def restore(f: Fitted): Unit = {
+        _traj = f.traj; evalTraj(); _repS = f.repS; _repC = f.repC; _cens = f.cens
+        refit(1, refineTraj = false); _lastGain = f.gain
       }
+      if (FitPath.isReference) { free(lens.map { l => free(l); kept(l) }.minBy(_.bic).len); return }
+      // the fast path: each length's plain solve and first refining step, then the further steps only for the lengths
+      // within reach of the best (their BIC within twice their last step's gain and the threshold of it)
+      val first = lens.map { l => prepare(new Trajectory(n, l, fs), raw); refit(2, refineTraj = true); kept(l) }
+      val lead = first.minBy(_.bic)
+      val reach = first.filter(f => (f eq lead) || f.bic - lead.bic < 2 * math.max(f.gain, 0) + 10)
+      var now = first.last
+      val done = reach.map { f =>
+        if (f ne now) restore(f)
+        refit(3, refineTraj = true, from = 2); finish()
+        val k = kept(f.len); now = k; k
+      }
+      val best = done.minBy(_.bic)
+      if (best ne now) restore(best)
     }
     refColumn.foreach { r =>
       // the smoothing of the reference: the window with the lowest BIC (a noisy reference wants a wide one)
