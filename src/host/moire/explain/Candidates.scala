@@ -58,6 +58,15 @@ final class Candidates(val engine: SignalEngine) {
   private lazy val yy = (sumSq(resS), sumSq(resC))
 
   private def sub(a: Array[Double], b: Array[Double]) = { val o = new Array[Double](n); var i = 0; while (i < n) { o(i) = a(i) - b(i); i += 1 }; o }
+  /** The noise model of repaired data `r` against the prediction (ps, pc): with white noise from the sums of squares
+    * alone (no residual arrays: a long record's candidate would hold two more).
+    */
+  private def repairedNoise(r: Repaired, ps: Array[Double], pc: Array[Double]): Noise = {
+    val slopes = noiseSlopes(spec)
+    if (slopes != null) return Noise.fit(sub(r.s, ps), sub(r.c, pc), slopes, r)
+    def ss(a: Array[Double], p: Array[Double]) = Par.sum(n) { (lo, hi) => var z = 0.0; var i = lo; while (i < hi) { val d = a(i) - p(i); z += d * d; i += 1 }; z }
+    Noise.fromSums(ss(r.s, ps), ss(r.c, pc), n, r)
+  }
 
   def all(onStep: () => Unit): Seq[Cand] = {
     val timing = sys.props.contains("moire.timing")
@@ -469,7 +478,7 @@ final class Candidates(val engine: SignalEngine) {
     val sp = spec.copy(faults = spec.faults :+ f)
     val (ps, pc) = (predS, predC)
     val r = repair(sp, ps, pc)
-    val nz = Noise.fit(sub(r.s, ps), sub(r.c, pc), noiseSlopes(spec), r)
+    val nz = repairedNoise(r, ps, pc)
     val p = Map("bit" -> f.bit.toDouble) ++ (if (f.stuckAt >= 0) Map("stuck_at" -> f.stuckAt.toDouble) else Map("bridged_to" -> f.bridgedTo.toDouble))
     val (u, where) = (p.map { case (k, _) => k -> 0.0 }, s"code histogram: ${if (f.ch == 0) "sin" else "cos"} channel, bit ${f.bit}")
     Some(Cand(AdcBitFault.name, if (f.ch == 0) "sin" else "cos", sp, nz.m2ll, 1, p, u, where))
@@ -500,7 +509,7 @@ final class Candidates(val engine: SignalEngine) {
         val c = Clip(ch, if (useLo) lo else Double.NegativeInfinity, if (useHi) hi else Double.PositiveInfinity)
         val sp = spec.copy(clips = spec.clips :+ c)
         val r = repair(sp, ps, pc)
-        val nz = Noise.fit(sub(r.s, ps), sub(r.c, pc), noiseSlopes(spec), r)
+        val nz = repairedNoise(r, ps, pc)
         // clip levels are read off the codes: uncertain by half an LSB
         val pp = Seq("low_fs" -> c.lo, "high_fs" -> c.hi).filter(!_._2.isInfinite).toMap
         val (u, where) = (pp.map { case (k, _) => k -> 0.5 * lsb }, s"code histogram: ${if (ch == 0) "sin" else "cos"} channel pile-up at the extremes")

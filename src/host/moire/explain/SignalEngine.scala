@@ -513,16 +513,14 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
       val before = if (_noise.m2ll == 0 || _traj == null) Double.PositiveInfinity else bic; val refines = it > 0 && refineTraj
       if (it > 0 && refineTraj && traj.isInstanceOf[RefTrajectory]) jointStep(traj.asInstanceOf[RefTrajectory])
       else if (it > 0 && refineTraj) Laps("refit: trajectory and fundamentals") {
-        val d = new Array[Double](n); val w = new Array[Double](n)
-        Par.blocks(n) { (lo, hi) =>
-          var i = lo
-          while (i < hi) {
-            val ww = gS(i) * gS(i) + gC(i) * gC(i)
-            if (ww > 0) { d(i) = (resS(i) * gS(i) + resC(i) * gC(i)) / ww / (2 * math.Pi); w(i) = ww }
-            i += 1
-          }
-        }
-        Laps("traj: addFit")(traj.addFit(d, w)); Laps("traj: evalTraj")(evalTraj())
+        // the phase residual of each sample (periods) weighted by its slope's square, read where the fit sums it
+        def w(i: Int): Double = { val ww = gS(i) * gS(i) + gC(i) * gC(i); if (ww > 0) ww else 0.0 }
+        def d(i: Int): Double = (resS(i) * gS(i) + resC(i) * gC(i)) / w(i) / (2 * math.Pi)
+        Laps("traj: addFit")(traj match {
+          case t: Trajectory => t.addFitBy(d, w)
+          case t => t.addFit(Doubles.tabulate(n)(i => if (w(i) > 0) d(i) else 0.0), Doubles.tabulate(n)(w))
+        })
+        Laps("traj: evalTraj")(evalTraj())
       }
       if (it > 0) Laps("refit: repair") { val r = repair(spec, predS, predC); _repS = r.s; _repC = r.c; _cens = r } // the predictions are garbage after
       Laps("refit: fundamentals")(setFundamentals())
@@ -652,19 +650,25 @@ object Noise {
     Noise(vs, vc, 0, n * (math.log(2 * math.Pi * vs) + 1) + n * (math.log(2 * math.Pi * vc) + 1))
   }
 
+  /** White noise per channel from the residual's sums of squares over n samples (censored ones hold no residual). */
+  def fromSums(ssS: Double, ssC: Double, n: Int, cens: Repaired): Noise = {
+    val floor = 1e-30
+    val cs = if (cens == null) null else cens.censS; val cc = if (cens == null) null else cens.censC
+    if (cs == null && cc == null) return white(ssS, ssC, n)
+    def count(c: Array[Double]) = if (c == null) 0 else c.count(!_.isNaN)
+    val ns = math.max(1, n - count(cs)); val nc = math.max(1, n - count(cc))
+    val vs = math.max(floor, ssS / ns); val vc = math.max(floor, ssC / nc)
+    val (ms, _) = censored(cs, _ => math.sqrt(vs)); val (mc, _) = censored(cc, _ => math.sqrt(vc))
+    Noise(vs, vc, 0, ns * (math.log(2 * math.Pi * vs) + 1) + nc * (math.log(2 * math.Pi * vc) + 1) + ms + mc)
+  }
+
   def fit(rs: Array[Double], rc: Array[Double], slope: (Array[Double], Array[Double]), cens: Repaired = null): Noise = {
     val n = rs.length
     def ss(a: Array[Double]) = Par.sum(n) { (lo, hi) => var s = 0.0; var i = lo; while (i < hi) { s += a(i) * a(i); i += 1 }; s }
     val floor = 1e-30
     val cs = if (cens == null) null else cens.censS; val cc = if (cens == null) null else cens.censC
     def count(c: Array[Double]) = if (c == null) 0 else c.count(!_.isNaN)
-    if (slope == null && cs == null && cc == null) return white(ss(rs), ss(rc), n)
-    if (slope == null) {
-      val ns = math.max(1, n - count(cs)); val nc = math.max(1, n - count(cc))
-      val vs = math.max(floor, ss(rs) / ns); val vc = math.max(floor, ss(rc) / nc)
-      val (ms, _) = censored(cs, _ => math.sqrt(vs)); val (mc, _) = censored(cc, _ => math.sqrt(vc))
-      return Noise(vs, vc, 0, ns * (math.log(2 * math.Pi * vs) + 1) + nc * (math.log(2 * math.Pi * vc) + 1) + ms + mc)
-    }
+    if (slope == null) return fromSums(ss(rs), ss(rc), n, cens)
     val (ds, dc) = slope
     var vs = ss(rs) / n; var vc = ss(rc) / n; var j2 = 0.0
     // scoring steps until the estimates stop changing (at most 8; the reference path takes all 8)

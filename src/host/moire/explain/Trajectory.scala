@@ -33,7 +33,10 @@ final class Trajectory(val n: Int, val len: Int, val fs: Double) extends PhaseTr
     }
 
   /** Adds the weighted least-squares cubic of `d` (periods) per segment; weight w (null = 1). */
-  def addFit(d: Array[Double], w: Array[Double]): Unit =
+  def addFit(d: Array[Double], w: Array[Double]): Unit = addFitBy(d(_), if (w == null) _ => 1.0 else w(_))
+
+  /** `addFit` of d(i) with weight w(i), read where they are needed (no arrays of the record's length). */
+  def addFitBy(d: Int => Double, w: Int => Double): Unit =
     Par.each(nseg, n) { s =>
       val m = Array.ofDim[Double](4, 5)
       val (a, b) = seg(s); val mid = 0.5 * (a + b - 1); val half = math.max(0.5, 0.5 * (b - a - 1))
@@ -43,8 +46,8 @@ final class Trajectory(val n: Int, val len: Int, val fs: Double) extends PhaseTr
       val inv = 1 / half
       var i = a
       while (i < b) {
-        val x = (i - mid) * inv; val p0 = if (w == null) 1.0 else w(i)
-        val p1 = p0 * x; val p2 = p1 * x; val p3 = p2 * x; val p4 = p3 * x; val p5 = p4 * x; val p6 = p5 * x; val di = d(i)
+        val x = (i - mid) * inv; val p0 = w(i)
+        val p1 = p0 * x; val p2 = p1 * x; val p3 = p2 * x; val p4 = p3 * x; val p5 = p4 * x; val p6 = p5 * x; val di = if (p0 == 0) 0.0 else d(i)
         x0 += p0; x1 += p1; x2 += p2; x3 += p3; x4 += p4; x5 += p5; x6 += p6
         y0 += p0 * di; y1 += p1 * di; y2 += p2 * di; y3 += p3 * di
         i += 1
