@@ -42,7 +42,11 @@ final class Candidates(val engine: SignalEngine) {
 
   /** Term t, the variant on channel `ch` of family f, from the family's sums (white noise, nothing censored). */
   private def variant(t: Term, f: Term, ch: String): Option[(Cand, LinSol)] = {
-    val fam = families.computeIfAbsent(f, _ => LinearFamily(baseCols(s1, s2, c1, c2) ++ termCols(f), resS, resC, yy._1, yy._2))
+    // made outside the map's lock (its sums run on all cores; see `binned`); two searches may both make it
+    val fam = Option(families.get(f)).getOrElse {
+      val made = LinearFamily(baseCols(s1, s2, c1, c2) ++ termCols(f), resS, resC, yy._1, yy._2)
+      Option(families.putIfAbsent(f, made)).getOrElse(made)
+    }
     // the default part's columns as they are, the family's with the parts on the variant's channel
     def sin(j: Int) = j < 6 || ch != "cos"; def cos(j: Int) = j < 6 || ch != "sin"
     val use = fam.hasSin.indices.filter(j => (sin(j) && fam.hasSin(j)) || (cos(j) && fam.hasCos(j)))
@@ -74,6 +78,7 @@ final class Candidates(val engine: SignalEngine) {
     // (a long record's on a spread subsample: see `confirmed`)
     val white = !spec.slopeNoise && cens.censS == null && cens.censC == null && !FitPath.isReference
     val screen = white && n > Candidates.ScreenAbove
+    yy // made here, not in a search side by side (a lazy value's lock held across work on all cores: see `binned`)
     if (white) {
       val t0 = System.nanoTime()
       val idx = if (screen) Candidates.spread(n, n / Candidates.ScreenSamples) else null
@@ -190,11 +195,19 @@ final class Candidates(val engine: SignalEngine) {
   /** The binned profile sums of the engine's state on all samples (or the fold `idx`), made once per state and fold. */
   def binned(idx: Array[Int] = null): ProfileSums = {
     val k = if (idx == null) Candidates.AllSamples else idx
-    sums.synchronized {
-      sums.get(k).filter(_.version == e.version).getOrElse { val p = Laps("profile: binned sums")(new ProfileSums(e, idx)); sums.put(k, p); p }
+    // the first search to ask makes them, outside the lock: they are made on all cores, and a search that waited on a
+    // lock held across that work would hold the pool's only worker on a 2-core machine (a deadlock); a search that
+    // asks meanwhile waits on the result, which lets the pool add a worker
+    val (f, mine) = sums.synchronized {
+      sums.get(k).filter(_._1 == e.version) match {
+        case Some((_, f)) => (f, false)
+        case None => val f = new java.util.concurrent.CompletableFuture[ProfileSums](); sums.put(k, (e.version, f)); (f, true)
+      }
     }
+    if (mine) try f.complete(Laps("profile: binned sums")(new ProfileSums(e, idx))) catch { case x: Throwable => f.completeExceptionally(x); throw x }
+    try f.join() catch { case x: java.util.concurrent.CompletionException if x.getCause != null => throw x.getCause }
   }
-  private val sums = new java.util.IdentityHashMap[Array[Int], ProfileSums]().asScala
+  private val sums = new java.util.IdentityHashMap[Array[Int], (Long, java.util.concurrent.CompletableFuture[ProfileSums])]().asScala
 
   /** What `profile` reads at its points (every stride-th sample, of `idx` when given): the fringe frequency, the sin and
     * cos of the fringe phase, each channel less its terms. Made once for the engine's state (its `version`) while the

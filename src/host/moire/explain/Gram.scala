@@ -26,22 +26,6 @@ object Gram {
     (g, r)
   }
 
-  /** x_a . y_b for the columns a of `left` and b of `right` (the same numbers as those entries of `of(left ++ right)`). */
-  def cross(left: IndexedSeq[Col], right: IndexedSeq[Col]): Array[Array[Double]] = {
-    val k = left.size; val l = right.size
-    if (FitPath.isReference) { val (g, _) = plain(left ++ right, null, null, null); return Array.tabulate(k, l)((a, b) => g(a)(k + b)) }
-    val rows = (left ++ right).find(_.s != null).map(_.s.length).getOrElse((left ++ right).head.c.length)
-    val sum = Par.sums(rows, k * l, Block) { (lo, hi, o) =>
-      var a = 0
-      while (a < k) {
-        var b = 0
-        while (b < l) { o(a * l + b) = dot(left(a).s, right(b).s, lo, hi) + dot(left(a).c, right(b).c, lo, hi); b += 1 }
-        a += 1
-      }
-    }
-    Array.tabulate(k, l)((a, b) => sum(a * l + b))
-  }
-
   /** One block's sums, in the order (0,0), y0, (1,0), (1,1), y1, ... : pair (i, j <= i), then column i against y. */
   private[explain] def block(as: Array[Array[Double]], ac: Array[Array[Double]], ys: Array[Double], yc: Array[Double], idx: Array[Int],
                     lo: Int, hi: Int, out: Array[Double]): Unit = {

@@ -180,15 +180,11 @@ final class ColGroups(make: IndexedSeq[() => IndexedSeq[Col]], keep: Boolean, he
     (q(0), q(1))
   }
 
-  /** out += sign * sum beta_i * column_i on one channel, a group at a time. */
-  def addTo(out: Array[Double], beta: Array[Double], sinCh: Boolean, sign: Double): Unit =
-    if (sinCh) addToBoth(out, null, beta, sign) else addToBoth(null, out, beta, sign)
-
-  /** `addTo` on both channels (null: not that one), in one pass when columns are made a block at a time: each sample
-    * gets the columns' parts in column order, as `LinearFit.addTo` adds them.
+  /** out += sign * sum beta_i * column_i on each channel (null: not that one), in one pass when columns are made a
+    * block at a time: each sample gets the columns' parts in column order, as `LinearFit.addTo` adds them.
     */
   def addToBoth(outS: Array[Double], outC: Array[Double], beta: Array[Double], sign: Double): Unit = {
-    val all = (0 until size).map(g => if (gen(g) == null) apply(g) else null)
+    val all = layout()
     if (!streamed) {
       for (g <- 0 until size; (o, ch) <- Seq((outS, true), (outC, false)) if o != null) LinearFit.addTo(o, all(g), beta.slice(at(g), at(g + 1)), ch, sign)
       return
