@@ -70,13 +70,19 @@ object Replicate {
   }
 
   /** Two parts of the samples in even and odd fringe periods of the position: each covers the whole travel. */
-  def alternatePeriods(e: SignalEngine): Seq[Array[Int]] =
-    Seq(0, 1).map(p => (0 until e.n).filter(i => math.floorMod(math.floor(e.phase(i)).toLong, 2L) == p).toArray)
+  def alternatePeriods(e: SignalEngine): Seq[Array[Int]] = parts(e.n)(i => math.floorMod(math.floor(e.phase(i)).toLong, 2L).toInt)
 
   /** Two parts of alternating blocks of n / `Blocks` samples. */
   def interleaved(n: Int): Seq[Array[Int]] = {
     val b = math.max(1, n / Blocks)
-    Seq(0, 1).map(p => (0 until n).filter(i => (i / b) % 2 == p).toArray)
+    parts(n)(i => (i / b) % 2)
+  }
+
+  /** The samples of part 0 and of part 1, in order (`part(i)` is 0 or 1), without boxing a long record's indices. */
+  private def parts(n: Int)(part: Int => Int): Seq[Array[Int]] = {
+    val out = Array(new Array[Int](n), new Array[Int](n)); val k = Array(0, 0); var i = 0
+    while (i < n) { val p = part(i); out(p)(k(p)) = i; k(p) += 1; i += 1 }
+    Seq(java.util.Arrays.copyOf(out(0), k(0)), java.util.Arrays.copyOf(out(1), k(1)))
   }
 
   /** The residual with the term's own fitted part added back (what the term alone has to explain). */
