@@ -44,11 +44,12 @@ object Locate {
         Map("chi2_sd" -> z, "phase_deg" -> 360.0 * (w + 0.5) / pb, "mean_lsb" -> m / lsb), z > Z)
     }
     // against speed: in-phase (amplitude) and quadrature (phase) projections per speed bin
-    lazy val sorted = { val a = e.freq.map(math.abs); java.util.Arrays.sort(a); a }
     val sb = 8
-    lazy val edges = (1 until sb).map(k => sorted(k * n / sb))
-    def sbin(i: Int) = { val f = math.abs(e.freq(i)); var b = 0; while (b < edges.size && f > edges(b)) b += 1; b }
-    if ((want("against speed") || want("noise against speed")) && sorted(n - 1) - sorted(0) > 0.05 * sorted(n - 1)) {
+    // the slowest, the speed at each eighth of the samples, the fastest
+    lazy val sorted = OrderStats.of(n, i => math.abs(e.freq(i)), (0 until sb).map(k => k * n / sb) :+ (n - 1))
+    lazy val edges = Array.tabulate(sb - 1)(k => sorted(k + 1))
+    def sbin(i: Int) = { val f = math.abs(e.freq(i)); val ed = edges; var b = 0; while (b < ed.length && f > ed(b)) b += 1; b }
+    if ((want("against speed") || want("noise against speed")) && sorted(sb) - sorted(0) > 0.05 * sorted(sb)) {
       for ((r, sd, u, v, ch) <- Seq[(Array[Double], Double, Int => Double, Int => Double, String)]((rs, sdS, e.us(_), e.vs(_), "sin"), (rc, sdC, e.uc(_), e.vc(_), "cos"))) {
         val pu = new Array[Double](sb); val pv = new Array[Double](sb); val uu = new Array[Double](sb); val vv = new Array[Double](sb)
         var i = 0
@@ -57,7 +58,7 @@ object Locate {
         val zp = (0 until sb).map(b => if (vv(b) > 0) pv(b) * pv(b) / (vv(b) * sd * sd) else 0.0)
         val amp = (0 until sb).map(b => if (uu(b) > 0) pu(b) / uu(b) else 0.0); val ph = (0 until sb).map(b => if (vv(b) > 0) math.toDegrees(pv(b) / vv(b)) else 0.0)
         val z = zOf(za.sum + zp.sum - 4, 2 * sb - 4)
-        val lo = sorted(0) / 1e3; val hi = sorted(n - 1) / 1e3
+        val lo = sorted(0) / 1e3; val hi = sorted(sb) / 1e3
         out += Located(s"against speed, $ch channel",
           f"amplitude ${100 * amp.head}%+.3f %% .. ${100 * amp.last}%+.3f %%, phase ${ph.head}%+.3f .. ${ph.last}%+.3f degree from $lo%.1f to $hi%.1f kHz (chi-square $z%.1f sd)",
           Map("chi2_sd" -> z, "amplitude_low_rel" -> amp.head, "amplitude_high_rel" -> amp.last, "phase_low_deg" -> ph.head, "phase_high_deg" -> ph.last), z > Z)

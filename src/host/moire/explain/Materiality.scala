@@ -28,8 +28,7 @@ object Materiality {
     val m = if (at == null) n else at.length
     val d = new Array[Double](2 * m); var k = 0; var q = 0
     while (q < m) { val i = if (at == null) q else at(q); d(k) = math.abs(bS(i) - aS(i)); d(k + 1) = math.abs(bC(i) - aC(i)); k += 2; q += 1 }
-    java.util.Arrays.sort(d, 0, k)
-    if (k == 0) 0.0 else d(math.min(k - 1, (Quantile * k).toInt))
+    if (k == 0) 0.0 else OrderStats.of(k, d(_), Seq(math.min(k - 1, (Quantile * k).toInt)))(0)
   }
 }
 

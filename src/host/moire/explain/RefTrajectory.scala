@@ -33,6 +33,7 @@ final class RefTrajectory(val ref: Reference, val fs: Double, val kFixed: Option
   var k: Double = kFixed.getOrElse(0.0)
   var kLag = 0.0
   def lagS: Double = if (k != 0) kLag / k else 0.0
+  def keep(): () => Unit = { val (o, k0, l) = (offset, k, kLag); () => { offset = o; k = k0; kLag = l } }
   def params: Int = 1 + (if (kFixed.isEmpty) 1 else 0) + (if (hasLag) 1 else 0)
 
   def eval(phase: Array[Double], freq: Array[Double]): Unit = {

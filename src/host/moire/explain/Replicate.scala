@@ -200,8 +200,8 @@ object Replicate {
       }
       if (info <= 0) None else Some(Est(Array(nz.jitter2), Array(Array(1 / info)), Array(ModelRel * e.noise.jitter2)))
     }
-    val f = e.freq.map(math.abs); val q = f.clone(); java.util.Arrays.sort(q)
-    val edges = (0 to SpeedBands).map(b => if (b == SpeedBands) Double.PositiveInfinity else q(b * e.n / SpeedBands))
+    val f = e.freq.map(math.abs); val q = OrderStats.of(e.n, f(_), (0 until SpeedBands).map(_ * e.n / SpeedBands))
+    val edges = (0 to SpeedBands).map(b => if (b == SpeedBands) Double.PositiveInfinity else q(b))
     val bands = (0 until SpeedBands).map { b =>
       val out = Array.newBuilder[Int]; var i = 0
       while (i < e.n) { if (f(i) >= edges(b) && f(i) < edges(b + 1)) out += i; i += 1 }

@@ -227,9 +227,9 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
   /** The 2 % and 98 % points of the fringe frequency's magnitude (Hz): the speed range the record spans. */
   def speedRange: (Double, Double) = {
     if (range == null) {
-      val a = Doubles.tabulate(n)(i => math.abs(freq(i))); java.util.Arrays.parallelSort(a)
-      def pct(q: Double) = a(math.min(n - 1, (q * n).toInt))
-      range = (pct(0.02), pct(0.98))
+      def rank(q: Double) = math.min(n - 1, (q * n).toInt)
+      val a = OrderStats.of(n, i => math.abs(freq(i)), Seq(rank(0.02), rank(0.98)))
+      range = (a(0), a(1))
     }
     range
   }
@@ -550,6 +550,26 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
     }
     val s = groups(IndexedSeq(jc.toIndexedSeq)).solve(repS, repC)
     if (s.ok && jc.nonEmpty) { r.addDelta(0.0 +: s.beta.takeRight(jc.size)); evalTraj() }
+  }
+
+  /** The fit as it stands (spec, trajectory, data, solution, residual), to go back to when a trial refit is not kept:
+    * `restore` gives the same state to the bit, where fitting the old spec again would end near it after some refits.
+    * None when the residual's copy would take more than an eighth of the heap (the heap, not `holdBytes`: whether the
+    * terms' columns are held does not change the result).
+    */
+  def save(): Option[() => Unit] = if (16L * n > Runtime.getRuntime.maxMemory / 8) None else {
+    val sp = spec; val tr = _traj; val trBack = tr.keep()
+    val held = _excluded != null // the data of excluded samples are held at the prediction in place: copies then
+    val (rS, rC, cn) = if (held) { val a = _repS.clone(); val b = _repC.clone(); (a, b, _cens.copy(s = a, c = b)) } else (_repS, _repC, _cens)
+    val (b, so, ti, no, gs, gc, lg) = (_base, _sol, _termIndex, _noise, slopeS, slopeC, _lastGain)
+    val resS0 = resS.clone(); val resC0 = resC.clone()
+    Some { () =>
+      spec = sp; _traj = tr; trBack(); evalTraj() // the phase, frequency and fundamentals from the trajectory
+      _repS = rS; _repC = rC; _cens = cn
+      _base = b; _sol = so; _termIndex = ti; _noise = no; slopeS = gs; slopeC = gc; _lastGain = lg
+      System.arraycopy(resS0, 0, resS, 0, n); System.arraycopy(resC0, 0, resC, 0, n)
+      _version += 1
+    }
   }
 
   /** Refits until BIC stops falling (fault repairs and the trajectory settle over a few iterations). */

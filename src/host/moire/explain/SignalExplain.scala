@@ -138,6 +138,8 @@ object SignalExplain {
             def claimedNow = if (claims.isEmpty) Nil else Locate.all(e, w => claims.exists(w.startsWith))
             val before = claimedNow
             val prev = e.spec
+            // the fit before the trial, to go back to when it is not kept (the reference path fits the old spec again)
+            val back = if (FitPath.isReference) None else e.save()
             e.spec = c.spec; e.converge(); settle(e)
             val c1 = demote(e, c)
             lap("refit")
@@ -161,7 +163,7 @@ object SignalExplain {
                   negligible += Negligible(g.effect, g.channel, size / e.lsb, floor / e.lsb, bic0 - e.bic, g.params, what)
                 }
                 else if (w.nonEmpty) reject(c, w)
-                e.spec = prev; e.converge(); settle(e)
+                back match { case Some(r) => r(); case None => e.spec = prev; e.converge(); settle(e) }
               case None =>
                 val snapA = Snapshot.of(s"after ${c.effect}", e.resS, e.resC)
                 steps += ((Finding(c1.effect, c1.channel, "", c1.params, c1.unc, bic0 - e.bic, rmsB, e.rms, c1.where, size / e.lsb), snapB, snapA))

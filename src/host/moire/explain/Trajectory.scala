@@ -7,6 +7,8 @@ trait PhaseTrack {
   def eval(phase: Array[Double], freq: Array[Double]): Unit
   /** Adds the weighted least-squares fit of the phase difference `d` (periods); weight w (null = 1). */
   def addFit(d: Array[Double], w: Array[Double]): Unit
+  /** Puts this trajectory back as it is now, when called. */
+  def keep(): () => Unit
 }
 
 /** A smooth phase trajectory: one cubic in time per segment of `len` samples, phase in periods. */
@@ -16,6 +18,7 @@ final class Trajectory(val n: Int, val len: Int, val fs: Double) extends PhaseTr
   val coef: Array[Double] = new Array[Double](4 * nseg)
   private def seg(s: Int): (Int, Int) = (s * len, math.min(n, (s + 1) * len))
   def params: Int = 4 * nseg
+  def keep(): () => Unit = { val c = coef.clone(); () => System.arraycopy(c, 0, coef, 0, c.length) }
 
   /** Phase (periods) and fringe frequency (Hz) of every sample. */
   def eval(phase: Array[Double], freq: Array[Double]): Unit =
