@@ -2,9 +2,10 @@ package moire.explain
 
 /** The linear candidates whose columns are a function of the sample (the harmonics of the fringe, the ADCs'
   * nonlinearity, crosstalk, drift, a contrast change along the travel) fitted from one pass over the samples: at each
-  * sample every family's columns are made and their products with the default part's columns, with each other and
-  * with the residual summed per channel, in blocks on all cores. No column of the record's length is made. Each
-  * family's sums are the ones `LinearFamily` takes from its columns (`LinearSweepSpec`: the same fits).
+  * sample every family's columns are made, laid out by rows for a chunk of samples, and their products with the default
+  * part's columns, with each other and with the residual summed per channel, in blocks on all cores. No column of the
+  * record's length is made. Each family's sums are the ones `LinearFamily` takes from its columns (`LinearSweepSpec`:
+  * the same fits).
   */
 object LinearSweep {
   /** The families this pass makes: harmonics of `orders`, INL, crosstalk, drift, contrast (each the term whose columns
@@ -18,6 +19,18 @@ object LinearSweep {
     case _: Term.Inl => (Array(true, true), Array(true, true))
     case Term.Crosstalk => (Array(true, false), Array(false, true))
     case _ => (Array(true, false, true, false), Array(false, true, false, true)) // drift, contrast
+  }
+
+  /** Samples laid out row by row before their products are summed (rows of a chunk stay in the core's cache). */
+  private val Chunk = 256
+
+  /** Four running sums of a(0 until m) b(0 until m) (one would wait on each addition), added at the end. */
+  private def dot(a: Array[Double], b: Array[Double], m: Int): Double = {
+    var s0 = 0.0; var s1 = 0.0; var s2 = 0.0; var s3 = 0.0; var t = 0
+    val end4 = m & ~3
+    while (t < end4) { s0 += a(t) * b(t); s1 += a(t + 1) * b(t + 1); s2 += a(t + 2) * b(t + 2); s3 += a(t + 3) * b(t + 3); t += 4 }
+    while (t < m) { s0 += a(t) * b(t); t += 1 }
+    (s0 + s1) + (s2 + s3)
   }
 
   def apply(e: SignalEngine, orders: Seq[Int], yyS: Double, yyC: Double): Map[Term, LinearFamily] = of(e, terms(orders), yyS, yyC)
@@ -50,67 +63,84 @@ object LinearSweep {
     // per channel, the family's columns with a part there (indices into its columns)
     val onS = ps.map(p => p._1.indices.filter(p._1(_)).toArray); val onC = ps.map(p => p._2.indices.filter(p._2(_)).toArray)
 
+    // per channel, the rows a chunk of samples is laid out in: 0..2 the default part's columns (1, sin, cos), 3 the
+    // residual, then each family's columns with a part there; and the pairs of rows whose products are summed, in the
+    // order of the accumulators (`layout`)
+    def plan(on: Array[Array[Int]], part: Int): (Array[Int], Array[Int]) = {
+      val from = Array.newBuilder[Int]; val pairs = Array.newBuilder[Int]
+      def pair(a: Int, b: Int): Unit = { pairs += a; pairs += b }
+      for (a <- 0 until 3; c <- 0 to a) pair(a, c)
+      for (a <- 0 until 3) pair(a, 3)
+      var row = 4
+      for (f <- 0 until nf) {
+        val first = row
+        for (j <- on(f).indices) {
+          from += 2 * colAt(f) + part + 2 * on(f)(j)
+          pair(row, 0); pair(row, 1); pair(row, 2)
+          for (l <- 0 to j) pair(row, first + l)
+          pair(row, 3); row += 1
+        }
+      }
+      (from.result(), pairs.result())
+    }
+    val (fromS, pairsS) = plan(onS, 0); val (fromC, pairsC) = plan(onC, 1)
     val rows = if (idx == null) n else idx.length
     val sums = Par.sums(rows, mS + mC + 2, Gram.Block) { (lo, hi, acc) =>
       val v = new Array[Double](2 * colAt(nf)) // the families' column values at a sample: (sin part, cos part) per column
-      val bs = new Array[Double](3); val bc = new Array[Double](3)
-      var row = lo
-      while (row < hi) {
-        val i = if (idx == null) row else idx(row)
-        // the families' columns at sample i, as their termCols make them
-        val usi = us(i); val vsi = vs(i); val uci = uc(i); val vci = vc(i)
-        if (maxOrder > 0) {
-          def harm(u: Double, w: Double, part: Int): Unit = {
-            val a = math.sqrt(u * u + w * w)
-            if (a > 0) {
-              val s = u / a; val c = w / a; var re = 1.0; var im = 0.0; var j = 0
-              while (j < maxOrder) {
-                val r2 = re * c - im * s; im = re * s + im * c; re = r2; j += 1
-                val f = orderAt(j)
-                if (f >= 0) { val at = 2 * colAt(f) + 4 * part; v(at + part) = a * im; v(at + 2 + part) = a * re }
-              }
-            } else { var f = 0; while (f < orders.size) { val at = 2 * colAt(f) + 4 * part; v(at + part) = 0; v(at + 2 + part) = 0; f += 1 } }
+      val bufS = Array.ofDim[Double](4 + fromS.length, Chunk); val bufC = Array.ofDim[Double](4 + fromC.length, Chunk)
+      var c0 = lo
+      while (c0 < hi) {
+        val m = math.min(Chunk, hi - c0)
+        var k = 0
+        while (k < m) {
+          val row = c0 + k
+          val i = if (idx == null) row else idx(row)
+          // the families' columns at sample i, as their termCols make them
+          val usi = us(i); val vsi = vs(i); val uci = uc(i); val vci = vc(i)
+          if (maxOrder > 0) {
+            def harm(u: Double, w: Double, part: Int): Unit = {
+              val a = math.sqrt(u * u + w * w)
+              if (a > 0) {
+                val s = u / a; val c = w / a; var re = 1.0; var im = 0.0; var j = 0
+                while (j < maxOrder) {
+                  val r2 = re * c - im * s; im = re * s + im * c; re = r2; j += 1
+                  val f = orderAt(j)
+                  if (f >= 0) { val at = 2 * colAt(f) + 4 * part; v(at + part) = a * im; v(at + 2 + part) = a * re }
+                }
+              } else { var f = 0; while (f < orders.size) { val at = 2 * colAt(f) + 4 * part; v(at + part) = 0; v(at + 2 + part) = 0; f += 1 } }
+            }
+            harm(usi, vsi, 0); harm(uci, vci, 1)
           }
-          harm(usi, vsi, 0); harm(uci, vci, 1)
-        }
-        var f = orders.size
-        while (f < nf) {
-          val at = 2 * colAt(f)
-          fams(f) match {
-            case _: Term.Inl =>
-              val p = repS(i) - resS(i); val q = repC(i) - resC(i)
-              v(at) = (2 * p * p - 1) * lsb; v(at + 1) = (2 * q * q - 1) * lsb
-              v(at + 2) = (4 * p * p * p - 3 * p) * lsb; v(at + 3) = (4 * q * q * q - 3 * q) * lsb
-            case Term.Crosstalk =>
-              val w = twoPi * freq(i); v(at) = vci * w; v(at + 3) = vsi * w
-            case t =>
-              val x = if (t == Term.Drift) (i - drift) / fs else phase(i) - meanPhase
-              v(at) = x; v(at + 3) = x; v(at + 4) = usi * x; v(at + 7) = uci * x
-          }
-          f += 1
-        }
-        bs(0) = 1.0; bs(1) = s1(i); bs(2) = s2(i); bc(0) = 1.0; bc(1) = c1(i); bc(2) = c2(i)
-        def channel(b: Array[Double], y: Double, on: Array[Array[Int]], at: Array[Int], off: Int, part: Int): Unit = {
-          var q = off
-          var a = 0
-          while (a < 3) { var c = 0; while (c <= a) { acc(q) += b(a) * b(c); q += 1; c += 1 }; a += 1 }
-          a = 0; while (a < 3) { acc(q) += b(a) * y; q += 1; a += 1 }
-          var f = 0
+          var f = orders.size
           while (f < nf) {
-            q = off + at(f); val cols = on(f); val base = 2 * colAt(f) + part; var j = 0
-            while (j < cols.length) {
-              val x = v(base + 2 * cols(j))
-              acc(q) += x * b(0); acc(q + 1) += x * b(1); acc(q + 2) += x * b(2); q += 3
-              var l = 0; while (l <= j) { acc(q) += x * v(base + 2 * cols(l)); q += 1; l += 1 }
-              acc(q) += x * y; q += 1
-              j += 1
+            val at = 2 * colAt(f)
+            fams(f) match {
+              case _: Term.Inl =>
+                val p = repS(i) - resS(i); val q = repC(i) - resC(i)
+                v(at) = (2 * p * p - 1) * lsb; v(at + 1) = (2 * q * q - 1) * lsb
+                v(at + 2) = (4 * p * p * p - 3 * p) * lsb; v(at + 3) = (4 * q * q * q - 3 * q) * lsb
+              case Term.Crosstalk =>
+                val w = twoPi * freq(i); v(at) = vci * w; v(at + 3) = vsi * w
+              case t =>
+                val x = if (t == Term.Drift) (i - drift) / fs else phase(i) - meanPhase
+                v(at) = x; v(at + 3) = x; v(at + 4) = usi * x; v(at + 7) = uci * x
             }
             f += 1
           }
+          bufS(0)(k) = 1.0; bufS(1)(k) = s1(i); bufS(2)(k) = s2(i); bufS(3)(k) = resS(i)
+          bufC(0)(k) = 1.0; bufC(1)(k) = c1(i); bufC(2)(k) = c2(i); bufC(3)(k) = resC(i)
+          var r = 0; while (r < fromS.length) { bufS(4 + r)(k) = v(fromS(r)); r += 1 }
+          r = 0; while (r < fromC.length) { bufC(4 + r)(k) = v(fromC(r)); r += 1 }
+          k += 1
         }
-        channel(bs, resS(i), onS, atS, 0, 0); channel(bc, resC(i), onC, atC, mS, 1)
-        acc(mS + mC) += resS(i) * resS(i); acc(mS + mC + 1) += resC(i) * resC(i)
-        row += 1
+        // the chunk's products, row by row
+        def channel(buf: Array[Array[Double]], pairs: Array[Int], off: Int): Unit = {
+          var q = 0
+          while (q < pairs.length) { acc(off + q / 2) += dot(buf(pairs(q)), buf(pairs(q + 1)), m); q += 2 }
+        }
+        channel(bufS, pairsS, 0); channel(bufC, pairsC, mS)
+        acc(mS + mC) += dot(bufS(3), bufS(3), m); acc(mS + mC + 1) += dot(bufC(3), bufC(3), m)
+        c0 += m
       }
     }
     // a subsample's sums scaled per channel: the default part's fit there to the record's residual sum of squares
