@@ -57,6 +57,8 @@ class BadInputSpec extends AnyFlatSpec with Matchers {
   bad("a missing sample rate", "sample_rate_hz' is missing")("explain", rec("nofs.csv", "# moire-recording v1\n# adc_bits: 12\nsin,cos\n1,2\n"))
   bad("a sample rate of 1e300", "not a sample rate")("explain", rec("fs.csv", "# moire-recording v1\n# sample_rate_hz: 1e300\n# adc_bits: 12\nsin,cos\n" + rows(100)))
   bad("a sample rate of NaN", "not a sample rate")("explain", rec("fsnan.csv", "# moire-recording v1\n# sample_rate_hz: NaN\n# adc_bits: 12\nsin,cos\n" + rows(100)))
+  bad("a sample rate of 4.9e-324 (subnormal)", "not a sample rate")("explain", rec("fstiny.csv", "# moire-recording v1\n# sample_rate_hz: 4.9e-324\n# adc_bits: 12\nsin,cos\n" + rows(100)))
+  bad("simulate --sample-rate-hz 1e-320", "--sample-rate-hz must be from 1e-6 to 1e11 Hz")("simulate", "--out", (dir / "tiny.csv").toString, "--sample-rate-hz", "1e-320")
   bad("a negative sample rate", "not a sample rate")("explain", rec("fsneg.csv", "# moire-recording v1\n# sample_rate_hz: -5\n# adc_bits: 12\nsin,cos\n" + rows(100)))
   bad("adc_bits out of range", "adc_bits")("explain", rec("bits.csv", "# moire-recording v1\n# sample_rate_hz: 1e6\n# adc_bits: 40\nsin,cos\n" + rows(100)))
   bad("an unknown adc_format", "adc_format")("explain", rec("fmt.csv", head + "# adc_format: gray\nsin,cos\n" + rows(100)))
@@ -96,7 +98,7 @@ class BadInputSpec extends AnyFlatSpec with Matchers {
   bad("--noise -1", "--noise must be 0 or more", Seq(existing))(sim("--noise", "-1"): _*)
   bad("--gain-sin Infinity", "--gain-sin must be a finite number", Seq(existing))(sim("--gain-sin", "Infinity"): _*)
   bad("--sample-rate-hz Infinity", "--sample-rate-hz must be a finite number", Seq(existing))(sim("--sample-rate-hz", "Infinity"): _*)
-  bad("--sample-rate-hz 0", "--sample-rate-hz must be above 0", Seq(existing))(sim("--sample-rate-hz", "0"): _*)
+  bad("--sample-rate-hz 0", "--sample-rate-hz must be from 1e-6", Seq(existing))(sim("--sample-rate-hz", "0"): _*)
   bad("--samples 0", "--samples must be at least 1", Seq(existing))(sim("--samples", "0"): _*)
   bad("--amplitude 0", "--amplitude must be above 0", Seq(existing))(sim("--amplitude", "0"): _*)
   bad("--offset-cos NaN", "--offset-cos must be a finite number", Seq(existing))(sim("--offset-cos", "NaN"): _*)
@@ -127,6 +129,11 @@ class BadInputSpec extends AnyFlatSpec with Matchers {
   bad("--harmonics 0", "--harmonics (m) must be in 1..32, got 0")(calib("--harmonics", "0"): _*)
   bad("--max-order 100 on 36 points", "36 points cannot determine 100 harmonics")(calib("--max-order", "100"): _*)
   bad("--max-order 0", "--max-order must be at least 1, got 0")(calib("--max-order", "0"): _*)
+  bad("--max-order -1 (not the default)", "--max-order must be at least 1 (or left out for the default), got -1")(calib("--max-order", "-1"): _*)
+  bad("an error of 1e300 arcsec", "is beyond a whole turn")("calibrate", "--input", rec("calhuge.csv", "# moire-calibration v1\nangle_deg,error_arcsec\n0,1e300\n10,1\n20,2\n"))
+  bad("harmonics beyond the coefficient range, naming the file", "calbig.csv: c_k = ")("calibrate", "--input",
+    rec("calbig.csv", "# moire-calibration v1\nangle_deg,error_arcsec\n" + (0 until 360 by 10).map(a => s"$a,${1e5 * math.sin(math.toRadians(a))}").mkString("\n") + "\n"),
+    "--out", calOut.toString)
   bad("--lines 1000", "--lines must be a power of two")(calib("--lines", "1000"): _*)
   bad("--subdivision 3", "--subdivision must be a power of two")(calib("--subdivision", "3"): _*)
   bad("an output folder that is a file", "is a file, not a folder", Seq(aFile))("calibrate", "--input", cal.toString, "--out", aFile.toString)
@@ -162,6 +169,10 @@ class BadInputSpec extends AnyFlatSpec with Matchers {
   private val emitOut = dir / "emit"
   bad("--angle-width -5", "--angle-width must be in 8..48 (or left out for the default), got -5")("emit", "--angle-width", "-5", "--out", emitOut.toString)
   bad("--frac-bits -7", "--frac-bits must be in 1..17")("emit", "--frac-bits", "-7", "--out", emitOut.toString)
+  for (o <- Seq("--frac-bits", "--angle-width", "--angle-guard-bits"))
+    bad(s"$o -1 (not the default)", s"$o must be in")("emit", o, "-1", "--out", emitOut.toString)
+  for (o <- Seq("--cordic-width", "--phase-bits"))
+    bad(s"emit-subdiv $o -1 (not the default)", s"$o must be a positive width")("emit-subdiv", o, "-1", "--out", emitOut.toString)
   bad("--iterations 99", "--iterations must be in 4..40, got 99")("emit", "--iterations", "99", "--out", emitOut.toString)
   bad("--width NaN", "--width: 'NaN' is not a valid int")("emit", "--width", "NaN", "--out", emitOut.toString)
   bad("an output folder that is a file (before elaboration)", "is a file, not a folder", Seq(aFile))("emit", "--out", aFile.toString)
@@ -214,6 +225,16 @@ class BadInputSpec extends AnyFlatSpec with Matchers {
   os.write.over(jModel, """{"effects": []}""")
   bad("an explain report that would replace the --model", "is an input of this command", Seq(jModel))(
     "explain", good.toString, "--quiet", "--no-rtl", "--json-dir", jdir.toString, "--model", jModel.toString)
+  bad("an explain --html that is the recording", "is an input of this command", Seq(good))(
+    "explain", good.toString, "--quiet", "--no-rtl", "--html", good.toString)
+  bad("an explain --html that is the --model", "is an input of this command", Seq(model))(
+    "explain", good.toString, "--quiet", "--no-rtl", "--html", model.toString, "--model", model.toString)
+  private val hdir = dir / "h"
+  os.makeDir.all(hdir)
+  private val hInput = hdir / "good.html"
+  os.write.over(hInput, "# moire-recording v1\n")
+  bad("an explain --html-dir report that would replace an input", "is an input of this command", Seq(hInput))(
+    "explain", good.toString, hInput.toString, "--quiet", "--no-rtl", "--html-dir", hdir.toString)
   bad("a simulate --out that is its --model", "is an input of this command", Seq(model))(
     "simulate", "--model", model.toString, "--out", model.toString, "--samples", "100")
   private val portLink = dir / "ttyLink"

@@ -14,10 +14,10 @@ case class CordicConfig(
   @arg(doc = "sincos | rotate | atan2 | asin | asin-double | acos | acos-double") mode: String = "sincos",
   @arg(doc = "CORDIC iterations n, 4..40") iterations: Int = 16,
   @arg(doc = "data width b in bits, 8..48") width: Int = 18,
-  @arg(doc = "fractional bits of data words (default width - 2)") fracBits: Int = -1,
-  @arg(doc = "angle word width, one turn = 2^angle-width (default width)") angleWidth: Int = -1,
+  @arg(doc = "fractional bits of data words (default width - 2)") fracBits: Option[Int] = None,
+  @arg(doc = "angle word width, one turn = 2^angle-width (default width)") angleWidth: Option[Int] = None,
   @arg(doc = "extra fractional bits inside the iterations, 0..8") guardBits: Int = 0,
-  @arg(doc = "extra angle bits inside the iterations (default ceil(log2 n) + 1)") angleGuardBits: Int = -1,
+  @arg(doc = "extra angle bits inside the iterations (default ceil(log2 n) + 1)") angleGuardBits: Option[Int] = None,
   @arg(doc = "a pipeline register every k iterations (1 = fully pipelined)") pipelineEvery: Int = 1,
   @arg(doc = "truncate | half-even") rounding: String = "half-even",
   @arg(doc = "leave the outputs scaled by the CORDIC gain K") noGainCompensation: Flag = Flag(),
@@ -28,11 +28,11 @@ case class CordicConfig(
   def params: CordicParams = {
     val m = CordicMode.parse(mode).fold(e => throw new UsageError(e), identity)
     val r = Rounding.parse(rounding).fold(e => throw new UsageError(e), identity)
-    // -1 means "the default"; any other negative value is a mistake, not the default
+    // left out means the default (-1 inside the params); a negative value given is a mistake, not the default
     for ((opt, v, allowed) <- Seq(("frac-bits", fracBits, s"1..${width - 1}"), ("angle-width", angleWidth, "8..48"),
-      ("angle-guard-bits", angleGuardBits, "0..8")) if v < -1)
-      throw new UsageError(s"--$opt must be in $allowed (or left out for the default), got $v")
-    try CordicParams(m, iterations, width, fracBits, angleWidth, guardBits, angleGuardBits, pipelineEvery, r,
+      ("angle-guard-bits", angleGuardBits, "0..8")); x <- v if x < 0)
+      throw new UsageError(s"--$opt must be in $allowed (or left out for the default), got $x")
+    try CordicParams(m, iterations, width, fracBits.getOrElse(-1), angleWidth.getOrElse(-1), guardBits, angleGuardBits.getOrElse(-1), pipelineEvery, r,
       !noGainCompensation.value, peakTable, taper.value)
     catch { case e: IllegalArgumentException => throw new UsageError("--" + e.getMessage.stripPrefix("requirement failed: ")) }
   }
@@ -156,11 +156,13 @@ object Main {
   @main(doc = "Fit the m largest harmonics to a moire-calibration v1 CSV; write the coefficient file, register listing and plot.")
   def calibrate(@arg(doc = "calibration CSV (moire-calibration v1)") input: String,
                 @arg(doc = "m, harmonics kept (parallel CORDICs on the board), 1..32 (default 4)") harmonics: Int = 4,
-                @arg(doc = "highest order fitted (default (distinct angles - 1) / 2, at most 32)") maxOrder: Int = -1,
+                @arg(doc = "highest order fitted (default (distinct angles - 1) / 2, at most 32)") maxOrder: Option[Int] = None,
                 @arg(doc = "grating lines per turn, power of two (default 16384)") lines: Int = 16384,
                 @arg(doc = "read-head subdivision, power of two (default 1024)") subdivision: Int = 1024,
                 @arg(doc = "output folder (default calibration)") out: String = "calibration"): Unit =
-    CalibrateCmd.run(input, harmonics, maxOrder, lines, subdivision, out)
+    CalibrateCmd.run(input, harmonics, maxOrder.map { k =>
+      if (k < 0) throw new UsageError(s"--max-order must be at least 1 (or left out for the default), got $k"); k
+    }.getOrElse(-1), lines, subdivision, out)
 
   @main(doc = "Write a moire-recording v1 file from the physics model (default part plus named effects).")
   def simulate(@arg(doc = "output CSV file") out: String,

@@ -45,8 +45,9 @@ object Calibrate {
     reversal.foreach(r => extra += "reversal_cw_minus_ccw" -> ujson.Obj("mean_arcsec" -> r.meanArcsec,
       "max_abs_arcsec" -> r.maxAbsArcsec, "shared_angles" -> r.shared))
 
-    val json = CoefficientFile.json(p, data.file, fit, extra.result())
-    val listing = CoefficientFile.listing(p, fit)
+    // a harmonic beyond the compensator's coefficient range: one line naming the file
+    val (json, listing) = try (CoefficientFile.json(p, data.file, fit, extra.result()), CoefficientFile.listing(p, fit))
+      catch { case e: CalibrationError => throw new CalibrationError(s"${data.file}: ${e.getMessage}") }
     val stem = data.file.stripSuffix(".csv")
     val jf = out / s"$stem.coefficients.json"
     val rf = out / s"$stem.registers.txt"

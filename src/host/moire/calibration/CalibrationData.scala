@@ -41,6 +41,8 @@ final case class CalibrationData(file: String, meta: Map[String, String], points
   * Angles in [0, 360] degrees (360 is the same point as 0), errors in arcsec, direction cw or ccw.
   */
 object CalibrationData {
+  /** The largest angle error a row may state: one turn. */
+  val MaxErrorArcsec = 1296000.0
   val magic = "# moire-calibration v1"
   private val columns2 = Seq("angle_deg", "error_arcsec")
   private val columns3 = columns2 :+ "direction"
@@ -88,6 +90,8 @@ object CalibrationData {
           val a = num(0)
           if (a < 0 || a > 360) fail(n, s"angle_deg $a is outside [0, 360]")
           val e = num(1)
+          // an angle error beyond a whole turn is no calibration error (and its squares overflow the fit)
+          if (math.abs(e) > CalibrationData.MaxErrorArcsec) fail(n, f"error_arcsec $e%.6g is beyond a whole turn (${CalibrationData.MaxErrorArcsec}%.0f arcsec)")
           val dir = if (h.size == 3) {
             val d = cells(2).toLowerCase
             if (d != "cw" && d != "ccw") fail(n, s"direction '${cells(2)}' must be cw or ccw")

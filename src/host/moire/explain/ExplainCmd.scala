@@ -17,8 +17,8 @@ object ExplainCmd {
       "--offset-cos" -> o.offsetCos, "--gain-sin" -> o.gainSin, "--gain-cos" -> o.gainCos, "--phase-error-deg" -> o.phaseErrorDeg,
       "--noise" -> o.noise) ++ o.linesPerRev.map("--lines-per-rev" -> _))
       if (v.isNaN || v.isInfinite) throw new ExplainError(s"$name must be a finite number, got $v")
-    if (!(o.sampleRateHz > 0 && o.sampleRateHz <= Recording.MaxSampleRateHz))
-      throw new ExplainError(s"--sample-rate-hz must be above 0 and at most 1e11 Hz, got ${o.sampleRateHz}")
+    if (!(o.sampleRateHz >= Recording.MinSampleRateHz && o.sampleRateHz <= Recording.MaxSampleRateHz))
+      throw new ExplainError(s"--sample-rate-hz must be from 1e-6 to 1e11 Hz, got ${o.sampleRateHz}")
     if (o.noise < 0) throw new ExplainError(s"--noise must be 0 or more (full-scale rms), got ${o.noise}")
     if (o.samples < 1) throw new ExplainError(s"--samples must be at least 1, got ${o.samples}")
     if (!(o.amplitude > 0)) throw new ExplainError(s"--amplitude must be above 0, got ${o.amplitude}")
@@ -61,8 +61,11 @@ object ExplainCmd {
     // Outputs are checked before the long work: writable folders, no two reports under one name.
     val outDirs = (jsonDir ++ plotDir ++ htmlDir).map(d => os.Path(d, os.pwd))
     outDirs.foreach(moire.files.SafeWrite.checkFolder)
-    for (d <- jsonDir; p <- paths)
-      moire.files.SafeWrite.refuseInputs(os.Path(d, os.pwd) / s"${p.last.stripSuffix(".csv")}.json", paths ++ modelFile.map(os.Path(_, os.pwd)))
+    // no report written over a recording or the model file
+    val inputs = paths ++ modelFile.map(os.Path(_, os.pwd))
+    for (d <- jsonDir; p <- paths) moire.files.SafeWrite.refuseInputs(os.Path(d, os.pwd) / s"${p.last.stripSuffix(".csv")}.json", inputs)
+    html.foreach(f => moire.files.SafeWrite.refuseInputs(os.Path(f, os.pwd), inputs))
+    for (d <- htmlDir; p <- paths) moire.files.SafeWrite.refuseInputs(os.Path(d, os.pwd) / s"${p.last.stripSuffix(".csv")}.html", inputs)
     if (outDirs.nonEmpty) paths.groupBy(_.last.stripSuffix(".csv")).collectFirst { case (stem, ps) if ps.distinct.size > 1 =>
       throw new ExplainError(s"${ps.distinct.mkString(" and ")} share the name $stem: their reports would overwrite each other; rename one")
     }

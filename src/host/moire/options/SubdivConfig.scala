@@ -13,9 +13,9 @@ case class SubdivConfig(
   @arg(doc = "atan2 | asin-double") method: String = "atan2",
   @arg(doc = "M, counts per grating period: power of two, 4..65536") counts: Int = 1024,
   @arg(doc = "CORDIC iterations, 4..40") iterations: Int = 16,
-  @arg(doc = "CORDIC data width (default input-bits + 6)") cordicWidth: Int = -1,
+  @arg(doc = "CORDIC data width (default input-bits + 6)") cordicWidth: Option[Int] = None,
   @arg(doc = "extra fractional bits inside the CORDIC, 0..8") guardBits: Int = 2,
-  @arg(doc = "phase word width (default max(cordic width, log2 M + 2))") phaseBits: Int = -1,
+  @arg(doc = "phase word width (default max(cordic width, log2 M + 2))") phaseBits: Option[Int] = None,
   @arg(doc = "position word width") positionWidth: Int = 32,
   @arg(doc = "A/B edges at least this many clocks apart") minEdgeClocks: Int = 1,
   @arg(doc = "counts the A/B output may lag before overspeed is flagged") backlogLimit: Int = 64,
@@ -28,7 +28,10 @@ case class SubdivConfig(
   def params: SubdivParams = {
     val m = PhaseMethod.parse(method).fold(e => throw new OptionError(e), identity)
     val r = Rounding.parse(rounding).fold(e => throw new OptionError(e), identity)
-    try SubdivParams(inputBits, m, counts, iterations, cordicWidth, guardBits, phaseBits, positionWidth, minEdgeClocks,
+    // left out means the default (-1 inside the params); a negative value given is a mistake, not the default
+    for ((opt, v) <- Seq("cordic-width" -> cordicWidth, "phase-bits" -> phaseBits); x <- v if x < 1)
+      throw new OptionError(s"--$opt must be a positive width (or left out for the default), got $x")
+    try SubdivParams(inputBits, m, counts, iterations, cordicWidth.getOrElse(-1), guardBits, phaseBits.getOrElse(-1), positionWidth, minEdgeClocks,
       backlogLimit, presentThreshold, asinAmplitude, maxStepTurns, r)
     catch { case e: IllegalArgumentException => throw new OptionError("--" + e.getMessage.stripPrefix("requirement failed: ")) }
   }

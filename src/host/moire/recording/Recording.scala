@@ -32,6 +32,8 @@ object Recording {
   val Magic = "# moire-recording v1"
   /** The fastest sample rate a file may state (100 GS/s, beyond any ADC a read head is sampled with). */
   val MaxSampleRateHz = 1e11
+  /** The slowest (one sample in about 12 days): below it a sample's time overflows or is no number. */
+  val MinSampleRateHz = 1e-6
 
   /** Writes the file; metadata keys `sample_rate_hz`, `adc_bits`, `adc_format`, `samples` are set from the
     * recording; every other key (`adc`, free text naming the converter, among them) is kept as it is.
@@ -98,8 +100,8 @@ object Recording {
       bad(1, if (first.trim.isEmpty && !it.exists(_.trim.nonEmpty)) "empty file, expected '# moire-recording v1'" else s"first line must be '$Magic', got '${Shown.text(first)}'")
     val (meta, comments, headerAt) = CsvText.header(name, it)
     def need(k: String) = meta.getOrElse(k, bad(headerAt + 1, s"metadata '$k' is missing (a line '# $k: value' before the header)"))
-    val fs = moire.numbers.Decimal.double(need("sample_rate_hz")).filter(v => v > 0 && v <= MaxSampleRateHz)
-      .getOrElse(bad(headerAt + 1, s"metadata sample_rate_hz '${meta("sample_rate_hz")}' is not a sample rate (a number above 0 and at most 1e11 Hz)"))
+    val fs = moire.numbers.Decimal.double(need("sample_rate_hz")).filter(v => v >= MinSampleRateHz && v <= MaxSampleRateHz)
+      .getOrElse(bad(headerAt + 1, s"metadata sample_rate_hz '${meta("sample_rate_hz")}' is not a sample rate (a number from 1e-6 to 1e11 Hz)"))
     val bits = need("adc_bits").toIntOption.filter(b => b >= 4 && b <= 24)
       .getOrElse(bad(headerAt + 1, s"metadata adc_bits '${meta("adc_bits")}' is not an integer in 4..24"))
     val adc = Adc(bits, format(meta).fold(e => bad(headerAt + 1, e), identity))

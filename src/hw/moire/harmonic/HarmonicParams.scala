@@ -96,7 +96,7 @@ case class HarmonicParams(
   def coefWord(arcsec: Double): Long = {
     val v = math.round(arcsec * math.pow(2, coefFrac))
     require(v >= -(1L << (coefWidth - 1)) && v < (1L << (coefWidth - 1)),
-      f"c_k = $arcsec%.6f arcsec does not fit coef-width $coefWidth with coef-frac $coefFrac (range +-${math.pow(2, coefWidth - 1 - coefFrac)}%.1f arcsec)")
+      f"c_k = $arcsec%.6g arcsec does not fit coef-width $coefWidth with coef-frac $coefFrac (range +-${math.pow(2, coefWidth - 1 - coefFrac)}%.1f arcsec)")
     v
   }
   /** phi_k in degrees to its binary angle word, 0 .. 2^countBits - 1. */
