@@ -36,7 +36,7 @@ object Plots {
   /** Writes the chart as PNG, its axes at round values first (unless the chart set its own). */
   def save(c: XYChart, path: os.Path): os.Path = {
     if (c.getStyler.getXAxisMin == null) Axes.round(c)
-    moire.files.SafeWrite(path)(t => { val o = new java.io.FileOutputStream(t.toIO); try BitmapEncoder.saveBitmap(c, o, BitmapFormat.PNG) finally o.close() })
+    Laps("plots: draw and encode")(moire.files.SafeWrite(path)(t => { val o = new java.io.FileOutputStream(t.toIO); try BitmapEncoder.saveBitmap(c, o, BitmapFormat.PNG) finally o.close() }))
     path
   }
 
@@ -88,7 +88,7 @@ object Plots {
     val out = new Array[os.Path](todo.length)
     // every plot runs to its end (each cleans up after itself when its write fails); the first failure is thrown after
     val failed = new Array[Throwable](todo.length)
-    java.util.stream.IntStream.range(0, todo.length).parallel().forEach(k => try out(k) = todo(k)() catch { case x: Throwable => failed(k) = x })
+    java.util.stream.IntStream.range(0, todo.length).parallel().forEach(k => try out(k) = Laps("plots: each")(todo(k)()) catch { case x: Throwable => failed(k) = x })
     failed.find(_ != null).foreach(x => throw x)
     out.toSeq
   }

@@ -572,14 +572,18 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
     }
   }
 
-  /** Refits until BIC stops falling (fault repairs and the trajectory settle over a few iterations). */
-  def converge(maxIters: Int = 12): Unit = {
+  /** Refits until BIC stops falling (fault repairs and the trajectory settle over a few iterations). `moved`: only
+    * nonlinear parameters of the spec moved a little (a polish), no effect is new: one refining step before the first
+    * check, and the loop stops on a small gain even with repairs (the reference path fits as for a new effect).
+    */
+  def converge(maxIters: Int = 12, moved: Boolean = false): Unit = {
+    val quick = moved && !FitPath.isReference
     // three steps before the first check: a new fault's repair may gain little at its first step and much later
-    refit(3, refineTraj = true)
+    refit(if (quick) 2 else 3, refineTraj = true)
     // then one refining step at a time (a plain solve first would repeat the last one's fit), unless the third step
     // gained less than the loop asks of a step and nothing is repaired or held at a rail (a repair may gain little at
     // one step and much at the next; the reference path always takes one more)
-    var prev = if (FitPath.isReference || !plainData) Double.PositiveInfinity else bic + lastGain; var k = 3
+    var prev = if (FitPath.isReference || (!plainData && !quick)) Double.PositiveInfinity else bic + lastGain; var k = if (quick) 2 else 3
     val from = if (FitPath.isReference) 0 else 1; val step = 2 - from
     while (k < maxIters && prev - bic > 0.5) { prev = bic; refit(2, refineTraj = true, from = from); k += step }
   }

@@ -286,7 +286,7 @@ object SignalExplain {
       // a polish that lowers the profile's -2 ln L by less than the loop's step leaves the fit as it stands (its refit
       // would not move the criterion by more either); the reference path refits after every polish
       if (Laps("settle: polish")(polish(e)) < 0.5 && !FitPath.isReference) { e.spec = before; return }
-      Laps("settle: converge")(e.converge()); k += 1
+      Laps("settle: converge")(e.converge(moved = true)); k += 1
     }
   }
 
