@@ -66,6 +66,18 @@ class BadInputSpec extends AnyFlatSpec with Matchers {
   bad("a duplicated metadata key", "metadata key 'adc_bits' appears twice")("explain", rec("dupkey.csv", head + "# adc_bits: 12\nsin,cos\n" + rows(100)))
   bad("a truncated file (samples says more rows)", "metadata samples says '200000' but the file has 2000 data rows")(
     "explain", rec("trunc.csv", head + "# samples: 200000\nsin,cos\n" + rows(2000)))
+  bad("a file cut in its last row (samples says one more)", "the last line (2005), left out, has no line end: the file may be cut short")(
+    "explain", rec("cutrow.csv", head + "# samples: 2000\nsin,cos\n" + rows(2000).dropRight(3)))
+  bad("a file whose one row has no line end", "no data rows after the header but the last line (5), which has no line end")(
+    "explain", rec("cutone.csv", head + "sin,cos\n2048,20"))
+  "explain" should "leave out a last row without a line end, and say so in the report's notes" in {
+    val jdir = dir / "j-cut"
+    val (code, err) = runCli("explain", rec("cutlast.csv", head + "sin,cos\n" + rows(2000).dropRight(3)), "--quiet", "--no-rtl", "--json-dir", jdir.toString)
+    withClue(err) { code shouldBe 0 }
+    val j = ujson.read(os.read(jdir / "cutlast.json"))
+    j("samples").num shouldBe 1999
+    j("notes").arr.head.str should startWith("line 2004, the last, has no line end: the file may be cut short")
+  }
   bad("a header without cos", "header must name columns sin and cos")("explain", rec("nocos.csv", head + "sin,x\n1,2\n"))
   bad("a ragged row", "1 cells, the header has 2")("explain", rec("ragged.csv", head + "sin,cos\n1,2\n3\n"))
   bad("a code above the ADC range", "outside the 12-bit ADC range")("explain", rec("range.csv", head + "sin,cos\n5000,2\n"))

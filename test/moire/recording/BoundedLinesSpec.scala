@@ -30,6 +30,13 @@ class BoundedLinesSpec extends AnyFlatSpec with Matchers {
     }
   }
 
+  it should "tell whether the last line had a line end" in {
+    for ((text, ended) <- Seq("a\nb\n" -> true, "a\nb" -> false, "a\r\nb\r" -> true, "a\n" -> true, "a" -> false); step <- Seq(1, 65536)) {
+      val r = new BoundedLines(chunked(text, step), 1000, n => fail(s"line $n too long"))
+      all(r); withClue(text) { r.lastEnded shouldBe ended }
+    }
+  }
+
   it should "refuse a line over the limit, naming it, without reading further" in {
     val text = "ok\nfine\n" + "0" * 5000 + "\nnever read\n"
     val r = new BoundedLines(chunked(text, 100), 1000, n => throw new RecordingError(s"line $n"))

@@ -27,6 +27,20 @@ class RecordingSpec extends AnyFlatSpec with Matchers {
     }
   }
 
+  it should "leave out a last row without a line end (it may be cut short), and say so" in {
+    val p = os.temp(suffix = ".csv")
+    os.write.over(p, good.mkString("", "\n", "\n"))
+    val whole = Recording.read(p)
+    whole.length shouldBe 2; whole.warnings shouldBe Nil
+    os.write.over(p, good.mkString("\n").dropRight(4)) // '0,100,1.5' cut to '0,100'
+    val cut = Recording.read(p)
+    cut.length shouldBe 1; cut.sin.toSeq shouldBe Seq(2048)
+    cut.warnings shouldBe Seq("line 8, the last, has no line end: the file may be cut short; end it with a line break if it is complete; that row was left out")
+    // a blank last line without an end is no row: nothing left out
+    os.write.over(p, good.mkString("", "\n", "\n  "))
+    Recording.read(p).warnings shouldBe Nil
+  }
+
   it should "stream a long file into arrays of the right length, with or without a samples line, CRLF and Latin-1 bytes" in {
     val n = 200003 // more than the first block of 65536 rows: the arrays grow
     val rnd = new scala.util.Random(5)

@@ -132,10 +132,12 @@ object ExplainCmd {
         extra :+= "interpolation_error" -> ie.json
         if (sys.props.contains("moire.timing")) System.err.println(f"interpolation error and plots ${(System.nanoTime() - t0) / 1e6}%.0f ms")
         // Board outputs (a `position` column) against the RTL run on the recorded codes.
-        rtl.filter(_ => rec.extra.contains("position")).map { opts =>
+        val checked = rtl.filter(_ => rec.extra.contains("position")).map { opts =>
           val (f, notes) = BoardCheck.run(p.toString, rec, opts, say)
           r.report.copy(findings = r.report.findings ++ f, notes = r.report.notes ++ notes)
         }.getOrElse(r.report)
+        // what the reader left out (a last row cut short) comes first among the notes
+        checked.copy(notes = rec.warnings ++ checked.notes)
       }
     } finally progress.close()
     // new keys beside the report's: the readouts of the interpolation error, the HTML and the plots written

@@ -25,12 +25,13 @@ object MonitorCmd {
   }
 
   /** The source the options name (a replayed file is read and checked first). */
-  def source(o: Options): Source = (o.port, o.replay) match {
+  def source(o: Options, warn: String => Unit = _ => ()): Source = (o.port, o.replay) match {
     case (Some(p), _) => new BoardSource(p, o.baud, o.decimation, o.scale)
     case (_, Some(f)) =>
       val p = os.Path(f, os.pwd)
       if (!os.isFile(p)) throw new MonitorError(s"$f: no such file")
       val rec = Recording.read(p)
+      rec.warnings.foreach(w => warn(s"WARNING: $f: $w"))
       moire.explain.ExplainCmd.checkSignals(p, rec)
       new ReplaySource(rec, s"replay of ${p.last}", o.scale)
     case _ => new ReplaySource(SimBoard.recording(if (o.effects.isEmpty) SimBoard.DefaultEffects else o.effects), "simulated board", o.scale)
@@ -41,7 +42,7 @@ object MonitorCmd {
     validate(o)
     val loopback = try java.net.InetAddress.getByName(o.bind).isLoopbackAddress catch { case _: Exception => false }
     if (!loopback) warn(s"WARNING: the monitor listens on ${o.bind}: anyone who reaches this computer there can watch the board, capture bursts and save files")
-    val src = source(o)
+    val src = source(o, warn)
     val live = new Live()
     val work = os.temp.dir(prefix = "moire-monitor")
     val app = new Monitor(live, src, os.Path(o.out, os.pwd), work)

@@ -5,7 +5,8 @@ import moire.signal.{Adc, AdcFormat}
 
 /** A `moire-recording v1` file: ADC pin codes of the sin and cos channels, with metadata.
   * Codes are as the ADC drives its pins (`adc_format`); `extra` holds any further numeric columns; `comments`
-  * the header's comment lines (text without a `key: value` form), kept as they were.
+  * the header's comment lines (text without a `key: value` form), kept as they were; `warnings` what the reader
+  * left out and why (never written to a file).
   */
 final case class Recording(
   sampleRateHz: Double,
@@ -14,7 +15,8 @@ final case class Recording(
   cos: Array[Int],
   meta: Map[String, String] = Map.empty,
   extra: Map[String, Array[Double]] = Map.empty,
-  comments: Seq[String] = Nil
+  comments: Seq[String] = Nil,
+  warnings: Seq[String] = Nil
 ) {
   require(sin.length == cos.length, "sin and cos must have the same length")
   def length: Int = sin.length
@@ -76,7 +78,7 @@ object Recording {
     val in = try CsvText.reader(path) catch {
       case e: java.io.IOException => throw new RecordingError(s"$path: cannot read (${moire.files.SafeWrite.reason(e)})")
     }
-    try parse(path.toString, CsvText.lineIterator(path, in)) finally in.close()
+    try { val lines = CsvText.lineIterator(path, in); parse(path.toString, lines, () => lines.lastEnded) } finally in.close()
   }
 
   /** The code format: `adc_format` (offset-binary or twos-complement); files written before it held the
@@ -90,8 +92,11 @@ object Recording {
 
   def parse(name: String, lines: IndexedSeq[String]): Recording = parse(name, lines.iterator)
 
-  /** Parses lines as they come: metadata and header first, then the rows into growing primitive arrays. */
-  def parse(name: String, lines: Iterator[String]): Recording = {
+  /** Parses lines as they come: metadata and header first, then the rows into growing primitive arrays.
+    * `lastEnded` tells (once the lines are all taken) whether the last one had a line end: a last data row
+    * without one may be cut short, and is left out with a warning.
+    */
+  def parse(name: String, lines: Iterator[String], lastEnded: () => Boolean = () => true): Recording = {
     def bad(line: Long, msg: String) = throw new RecordingError(s"$name:$line: $msg")
     val it = lines.buffered
     if (!it.hasNext) bad(1, "empty file, expected '# moire-recording v1'")
@@ -125,9 +130,11 @@ object Recording {
     var firstNegative = 0L; var firstHigh = 0L
     var n = 0
     var ln = headerAt + 1L
+    var cut = 0L // the last line, when it has no line end
     while (it.hasNext) {
       val line = it.next(); ln += 1
-      if (line.trim.nonEmpty) {
+      if (line.trim.nonEmpty && !it.hasNext && !lastEnded()) cut = ln
+      else if (line.trim.nonEmpty) {
         def badRow(msg: String) = bad(ln, s"$msg: '${Shown.text(line)}'")
         if (n == cap) {
           if (cap >= Int.MaxValue / 2) bad(ln, s"more than $cap rows: too long for one recording")
@@ -161,14 +168,17 @@ object Recording {
         n += 1
       }
     }
-    if (n == 0) bad(headerAt + 1, "no data rows after the header")
+    val cutShort = "has no line end: the file may be cut short; end it with a line break if it is complete"
+    if (n == 0) bad(headerAt + 1, if (cut == 0) "no data rows after the header" else s"no data rows after the header but the last line ($cut), which $cutShort")
     meta.get("samples").foreach { s =>
       if (!s.toLongOption.contains(n.toLong))
-        bad(ln, s"metadata samples says '$s' but the file has $n data rows: a truncated or edited file")
+        bad(ln, if (cut == 0) s"metadata samples says '$s' but the file has $n data rows: a truncated or edited file"
+          else s"metadata samples says '$s' but the file has $n whole data rows; the last line ($cut), left out, $cutShort")
     }
+    val warnings = if (cut == 0) Nil else Seq(s"line $cut, the last, $cutShort; that row was left out")
     def trim[A](a: Array[A], copy: (Array[A], Int) => Array[A]): Array[A] = if (a.length == n) a else copy(a, n)
     Recording(fs, adc, trim[Int](sin, (a, k) => java.util.Arrays.copyOf(a, k)), trim[Int](cos, (a, k) => java.util.Arrays.copyOf(a, k)), meta,
-      extraIdx.indices.map(e => header(extraIdx(e)) -> trim[Double](extra(e), (a, k) => java.util.Arrays.copyOf(a, k))).toMap, comments)
+      extraIdx.indices.map(e => header(extraIdx(e)) -> trim[Double](extra(e), (a, k) => java.util.Arrays.copyOf(a, k))).toMap, comments, warnings)
   }
 }
 
@@ -204,7 +214,10 @@ object CsvText {
   /** The lines of an open reader (a byte-order mark dropped, CRLF or LF), read as they are asked for; a read
     * error is a RecordingError naming the file.
     */
-  def lineIterator(path: os.Path, in: java.io.BufferedReader): Iterator[String] = new Iterator[String] {
+  def lineIterator(path: os.Path, in: java.io.BufferedReader): Lines = new Lines(path, in)
+
+  /** The lines of [[lineIterator]]; `lastEnded`, once `hasNext` is false, whether the last had a line end. */
+  final class Lines(path: os.Path, in: java.io.BufferedReader) extends Iterator[String] {
     private val bounded = new BoundedLines(in, MaxLineChars, line => throw new RecordingError(
       s"$path:$line: a line longer than $MaxLineChars characters: not a moire text file (it starts with '${Shown.head(path, 16)}')"))
     private var first = true
@@ -213,6 +226,7 @@ object CsvText {
       case e: java.io.IOException => throw new RecordingError(s"$path: cannot read (${moire.files.SafeWrite.reason(e)})")
     }
     def hasNext: Boolean = nextLine != null
+    def lastEnded: Boolean = bounded.lastEnded
     def next(): String = {
       val l = if (first) nextLine.stripPrefix("\uFEFF") else nextLine
       first = false

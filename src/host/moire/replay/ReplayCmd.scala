@@ -97,6 +97,7 @@ object ReplayCmd {
     var t = System.nanoTime()
     def lap(): Double = { val now = System.nanoTime(); val s = (now - t) / 1e9; t = now; s }
     val rec = Recording.read(path)
+    rec.warnings.foreach(w => System.err.println(s"replay: WARNING: $f: $w"))
     val readS = lap()
     val d = ReplayDesign(design, config(opts.subdiv, rec.meta))
     matchAdc(f, rec, d)
