@@ -122,6 +122,47 @@ class BadInputSpec extends AnyFlatSpec with Matchers {
   bad("--lines-per-rev -3", "--lines-per-rev must be above 0", Seq(existing))(sim("--lines-per-rev", "-3"): _*)
   bad("an effect parameter NaN", "order 'NaN' is not a finite number", Seq(existing))(sim("--effect", "harmonic:order=NaN"): _*)
   bad("--adc-bits 99", "bits must be within 4..24", Seq(existing))(sim("--adc-bits", "99"): _*)
+  // effects and motions that make no sense (each exited 0 before)
+  bad("adc_bit_fault stuck_at=2", "--effect adc_bit_fault: stuck_at must be 0 or 1, got 2", Seq(existing))(
+    sim("--samples", "2000", "--effect", "adc_bit_fault:bit=3,stuck_at=2,channel=sin"): _*)
+  bad("adc_bit_fault without stuck_at or bridged_to", "adc_bit_fault changes nothing without stuck_at or bridged_to: give one, e.g. adc_bit_fault:bit=3,stuck_at=1,channel=cos",
+    Seq(existing))(sim("--samples", "2000", "--effect", "adc_bit_fault:bit=3,channel=sin"): _*)
+  bad("adc_bit_fault with both stuck_at and bridged_to", "give stuck_at or bridged_to, not both", Seq(existing))(
+    sim("--samples", "2000", "--effect", "adc_bit_fault:bit=3,stuck_at=1,bridged_to=4,channel=sin"): _*)
+  bad("harmonic without keys", "harmonic changes nothing without amplitude_rel: give it", Seq(existing))(sim("--samples", "2000", "--effect", "harmonic"): _*)
+  bad("harmonic order 2.5", "--effect harmonic: order must be a whole number from 2 to 100, got 2.5", Seq(existing))(
+    sim("--samples", "2000", "--effect", "harmonic:order=2.5,amplitude_rel=0.01"): _*)
+  bad("a key given twice", "--effect harmonic: key 'order' given twice", Seq(existing))(
+    sim("--samples", "2000", "--effect", "harmonic:order=3,order=4,amplitude_rel=0.01"): _*)
+  bad("a negative jitter", "--effect jitter: jitter_s must be from 0 to 1e-3 s rms (1 ms), got -1", Seq(existing))(
+    sim("--samples", "2000", "--effect", "jitter:jitter_s=-1"): _*)
+  bad("a negative phase noise", "--effect phase_noise: phase_noise_rad must be from 0 to 6.283 rad rms", Seq(existing))(
+    sim("--samples", "2000", "--effect", "phase_noise:phase_noise_rad=-1"): _*)
+  bad("clipping high below low", "--effect clipping: high_fs must be from -1 to 1 full scale, got -5", Seq(existing))(
+    sim("--samples", "2000", "--effect", "clipping:high_fs=-5,low_fs=5"): _*)
+  bad("clipping high under low within full scale", "--effect clipping: high_fs (-0.5) must be above low_fs (0.5)", Seq(existing))(
+    sim("--samples", "2000", "--effect", "clipping:high_fs=-0.5,low_fs=0.5"): _*)
+  bad("a skew of 1e300 s", "--effect channel_skew: skew_s must be from -1e-3 to 1e-3 s (1 ms either way), got 1.0E300", Seq(existing))(
+    sim("--samples", "2000", "--effect", "channel_skew:skew_s=1e300"): _*)
+  bad("a cut-off of 1e-300 Hz", "--effect bandwidth: cutoff_hz must be from 1 Hz to 1e12 Hz", Seq(existing))(
+    sim("--samples", "2000", "--effect", "bandwidth:cutoff_hz=1e-300"): _*)
+  bad("a negative jitter in a --model", "neg.json: jitter: jitter_s must be from 0 to 1e-3 s rms", Seq(existing))(
+    sim("--model", rec("neg.json", """{"effects": [{"effect": "jitter", "jitter_s": -1}]}""")): _*)
+  bad("--motion constant:1:2", "--motion 'constant:1:2': too many values, expected constant:HZ", Seq(existing))(sim("--motion", "constant:1:2"): _*)
+  bad("--motion oscillate:10:1000:5", "too many values, expected oscillate:PERIODS:RATE_HZ", Seq(existing))(sim("--motion", "oscillate:10:1000:5"): _*)
+  bad("--motion constant:100000:", "--motion 'constant:100000:': too many values, expected constant:HZ", Seq(existing))(sim("--motion", "constant:100000:"): _*)
+  bad("--motion oscillate:-1:1000", "--motion 'oscillate:-1:1000': PERIODS (the peak excursion) must be > 0, got -1", Seq(existing))(
+    sim("--motion", "oscillate:-1:1000"): _*)
+  bad("a model's oscillation at a negative rate", "motion: RATE_HZ must be > 0", Seq(existing))(
+    sim("--model", rec("osc.json", """{"motion": {"kind": "oscillate", "periods_peak": 10, "rate_hz": -5}}""")): _*)
+  "simulate" should "still take effects whose defaults act, and a harmonic in explain's --model without its amplitude" in {
+    val (code, err) = runCli("simulate", "--out", (dir / "defaults.csv").toString, "--samples", "2000", "--effect", "bandwidth:cutoff_hz=4e5", "--effect", "clipping:high_fs=0.8,channel=sin",
+      "--effect", "adc_bit_fault:bit=5,bridged_to=6,channel=cos")
+    withClue(err) { code shouldBe 0 }
+    val m = rec("harm.json", """{"effects": [{"effect": "harmonic", "order": 3, "channel": "sin"}]}""")
+    val (c2, e2) = runCli("explain", good.toString, "--quiet", "--no-rtl", "--model", m)
+    withClue(e2) { c2 shouldBe 0 }
+  }
   bad("a --model that is not JSON", "not valid JSON", Seq(existing))(sim("--model", rec("nj.json", "not json")): _*)
 
   behavior of "calibrate"

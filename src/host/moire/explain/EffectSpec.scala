@@ -9,6 +9,11 @@ final case class EffectSpec(effect: String, params: Map[String, Double] = Map.em
     params.toSeq.sortBy(_._1).foreach { case (k, v) => o(k) = v }
     o
   }
+  /** As `--effect` takes it: `harmonic:order=3,amplitude_rel=0.001,channel=sin`. */
+  def text: String = {
+    val kv = params.toSeq.sortBy(_._1).map { case (k, v) => s"$k=${effects.Effect.show(v)}" } ++ (if (channel == "both") Nil else Seq(s"channel=$channel"))
+    if (kv.isEmpty) effect else s"$effect:${kv.mkString(",")}"
+  }
 }
 
 /** The catalogue is the registry (`effects.Effects`): each effect, the parameters it takes and what it means. */
@@ -17,13 +22,18 @@ object EffectSpec {
   val calibrationEffects: Seq[(String, Seq[String], String)] = effects.Effects.all.filter(_.calibration).map(e => (e.name, e.params.map(_.name), e.what))
   val names: Seq[String] = effects.Effects.names
 
-  /** Parses `name:key=value,key=value` (channel=sin|cos|both allowed among the keys). */
+  /** Parses `name:key=value,key=value` (channel=sin|cos|both allowed among the keys, each key once); the effect
+    * checks the values (`Effect.check`).
+    */
   def parse(s: String): EffectSpec = {
     val (name, rest) = s.indexOf(':') match { case -1 => (s.trim, ""); case i => (s.take(i).trim, s.drop(i + 1)) }
     val allowed = (catalogue ++ calibrationEffects).find(_._1 == name)
       .getOrElse(throw new ExplainError(s"--effect: '$name' is not an effect; allowed: ${names.mkString(", ")}"))
     var channel = "both"; val ps = Map.newBuilder[String, Double]
+    val seen = scala.collection.mutable.Set.empty[String]
     rest.split(",").map(_.trim).filter(_.nonEmpty).foreach { kv =>
+      val k = kv.takeWhile(_ != '=').trim
+      if (kv.contains('=') && !seen.add(k)) throw new ExplainError(s"--effect $name: key '$k' given twice")
       kv.split("=", 2) match {
         case Array("channel", v) => channel = checkChannel(v.trim)
         case Array(k, v) if allowed._2.contains(k.trim) =>
@@ -32,7 +42,9 @@ object EffectSpec {
         case _ => throw new ExplainError(s"--effect $name: '$kv' is not key=value with a key in ${(allowed._2 :+ "channel").mkString(", ")}")
       }
     }
-    EffectSpec(name, ps.result(), channel)
+    val spec = EffectSpec(name, ps.result(), channel)
+    effects.Effects(name).flatMap(_.check(spec)).foreach(m => throw new ExplainError(s"--effect $name: $m"))
+    spec
   }
 
   def checkChannel(v: String): String =

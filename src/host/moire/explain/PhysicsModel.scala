@@ -34,7 +34,15 @@ final case class PhysicsModel(
     val s = all(x); if (s.isEmpty) Nil else x.harmonics(s)
   })
 
-  def validate(): Unit = effects.foreach(e => Effects(e.effect).foreach(_.validate(e, this)))
+  /** Checks each effect: its values (`check`), a key it needs to change anything (`needs`), and against this model. */
+  def validate(): Unit = effects.foreach(e => Effects(e.effect).foreach { x =>
+    x.check(e).foreach(m => throw new ExplainError(s"${x.name}: $m"))
+    if (x.needs.nonEmpty && !x.needs.exists(e.params.contains)) {
+      val keys = if (x.needs.size == 1) x.needs.head else x.needs.init.mkString(", ") + " or " + x.needs.last
+      throw new ExplainError(s"${x.name} changes nothing without $keys: give ${if (x.needs.size == 1) "it" else "one"}, e.g. ${x.example.effect.text}")
+    }
+    x.validate(e, this)
+  })
 
   /** Generates the recording (codes on the pins) and the true fringe phase in periods. */
   def generate(): (Recording, Array[Double]) = {
@@ -122,29 +130,48 @@ object PhysicsModel {
     case Motion.Oscillate(pk, r, s) => ujson.Obj("kind" -> "oscillate", "periods_peak" -> pk, "rate_hz" -> r, "start" -> s)
   }
 
-  /** `constant:HZ`, `ramp:HZ0:HZ1:SECONDS` or `oscillate:PERIODS:RATE_HZ`. */
+  /** The forms of `--motion`, by kind. */
+  private val MotionForms = Seq("constant" -> "constant:HZ", "ramp" -> "ramp:HZ0:HZ1:SECONDS", "oscillate" -> "oscillate:PERIODS:RATE_HZ")
+
+  /** `constant:HZ`, `ramp:HZ0:HZ1:SECONDS` or `oscillate:PERIODS:RATE_HZ`, each value given once, none left over. */
   def parseMotion(s: String): Motion = {
-    val parts = s.split(":").map(_.trim)
-    def num(i: Int) = parts.lift(i).flatMap(moire.numbers.Decimal.double).filter(v => !v.isNaN && !v.isInfinite).getOrElse(
-      throw new ExplainError(s"--motion '$s': expected constant:HZ, ramp:HZ0:HZ1:SECONDS or oscillate:PERIODS:RATE_HZ"))
-    parts.head match {
+    val parts = s.split(":", -1).map(_.trim)
+    def bad(why: String) = throw new ExplainError(s"--motion '$s': $why")
+    val form = MotionForms.collectFirst { case (k, f) if k == parts.head => f }
+      .getOrElse(bad(s"expected ${MotionForms.map(_._2).mkString(", ")}"))
+    val want = form.count(_ == ':') + 1
+    if (parts.length != want) bad(s"${if (parts.length > want) "too many" else "too few"} values, expected $form")
+    def num(i: Int) = moire.numbers.Decimal.double(parts(i)).filter(v => !v.isNaN && !v.isInfinite)
+      .getOrElse(bad(s"'${parts(i)}' is not a finite number ($form)"))
+    val m = parts.head match {
       case "constant" => Motion.Constant(num(1))
-      case "ramp" if num(3) > 0 => Motion.Ramp(num(1), num(2), num(3))
-      case "oscillate" => Motion.Oscillate(num(1), num(2))
-      case _ => num(99); Motion.Constant(0)
+      case "ramp" => Motion.Ramp(num(1), num(2), if (num(3) > 0) num(3) else bad("SECONDS must be > 0"))
+      case _ => Motion.Oscillate(num(1), num(2))
     }
+    checkMotion(m).foreach(bad)
+    m
+  }
+
+  /** Why a motion makes no sense (an oscillation needs a positive size and rate), or None. */
+  def checkMotion(m: Motion): Option[String] = m match {
+    case Motion.Oscillate(pk, _, _) if !(pk > 0) => Some(s"PERIODS (the peak excursion) must be > 0, got ${effects.Effect.show(pk)}")
+    case Motion.Oscillate(_, r, _) if !(r > 0) => Some(s"RATE_HZ must be > 0, got ${effects.Effect.show(r)}")
+    case _ => None
   }
 
   def motionFromJson(v: ujson.Value, where: String): Motion = {
     val o = v.objOpt.getOrElse(throw new ExplainError(s"$where: motion must be a JSON object"))
     def n(k: String, d: Option[Double] = None) = o.get(k).flatMap(_.numOpt).orElse(d)
       .getOrElse(throw new ExplainError(s"$where: motion.$k must be a number"))
-    o.get("kind").flatMap(_.strOpt) match {
+    val m = o.get("kind").flatMap(_.strOpt) match {
       case Some("constant") => Motion.Constant(n("hz"), n("start", Some(0)))
-      case Some("ramp") => Motion.Ramp(n("hz0"), n("hz1"), n("duration_s"), n("start", Some(0)))
+      case Some("ramp") if n("duration_s") > 0 => Motion.Ramp(n("hz0"), n("hz1"), n("duration_s"), n("start", Some(0)))
+      case Some("ramp") => throw new ExplainError(s"$where: motion.duration_s must be > 0")
       case Some("oscillate") => Motion.Oscillate(n("periods_peak"), n("rate_hz"), n("start", Some(0)))
       case other => throw new ExplainError(s"$where: motion.kind '${other.getOrElse("")}' must be constant, ramp or oscillate")
     }
+    checkMotion(m).foreach(w => throw new ExplainError(s"$where: motion: $w"))
+    m
   }
 
   /** Reads a model JSON (the format `json` writes); missing keys take the defaults of `d`. */

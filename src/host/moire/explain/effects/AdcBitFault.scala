@@ -5,7 +5,7 @@ import moire.explain._
 /** An ADC data line stuck at 0 or 1, or wired-AND with another line. */
 object AdcBitFault extends Effect {
   val name = "adc_bit_fault"
-  val params = Seq(Param("bit", "", "0..bits-1"), Param("stuck_at", "", "0 or 1"), Param("bridged_to", "", "0..bits-1"))
+  val params = Seq(Param("bit", "", "0..bits-1"), Param("stuck_at", "", "0 or 1"), Param("bridged_to", "", "0..bits-1, not bit"))
   val what = "data line stuck at 0/1, or wired-AND with another bit (channel=sin|cos)"
   val shows = "code histogram"
   override val claims: Seq[String] = Seq("code histogram")
@@ -14,9 +14,17 @@ object AdcBitFault extends Effect {
   override val plot: PlotKind = PlotKind.Level
   override val confoundedWithMotion = false
 
+  override val needs: Seq[String] = Seq("stuck_at", "bridged_to")
+  override def check(e: EffectSpec): Option[String] =
+    Effect.within(e, "bit", 0, 23, "a whole number from 0 to 23 (and below the ADC's bits)", whole = true)
+      .orElse(Effect.within(e, "stuck_at", 0, 1, "0 or 1", whole = true))
+      .orElse(Effect.within(e, "bridged_to", 0, 23, "a whole number from 0 to 23 (and below the ADC's bits)", whole = true))
+      .orElse(if (e.params.contains("stuck_at") && e.params.contains("bridged_to")) Some("give stuck_at or bridged_to, not both") else None)
+      .orElse(if (e.params.contains("bridged_to") && e.params.get("bridged_to") == e.params.get("bit")) Some("bridged_to must be another bit than bit") else None)
   override def validate(e: EffectSpec, m: PhysicsModel): Unit = {
     val b = e.p("bit"); if (!(b >= 0 && b < m.adc.bits)) throw new ExplainError(s"$name bit must be in 0..${m.adc.bits - 1}")
     if (e.channel == "both") throw new ExplainError(s"$name needs channel=sin or channel=cos")
+    val o = e.p("bridged_to"); if (o >= m.adc.bits) throw new ExplainError(s"$name bridged_to must be in 0..${m.adc.bits - 1}")
   }
   override def backward(sp: ModelSpec, e: EffectSpec): ModelSpec =
     sp.copy(faults = sp.faults :+ Fault(if (e.channel == "cos") 1 else 0, e.p("bit", 0).toInt,

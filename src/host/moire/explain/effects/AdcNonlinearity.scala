@@ -6,6 +6,7 @@ import moire.explain._
 object AdcNonlinearity extends Effect {
   val name = "adc_nonlinearity"
   val params = Seq(Param("inl2_lsb", "LSB", "any"), Param("inl3_lsb", "LSB", "any"))
+  override val needs: Seq[String] = params.map(_.name)
   val what = "INL = inl2 T2(v) + inl3 T3(v) LSB, Chebyshev bow and S shape over full scale (channel=sin|cos|both)"
   val shows = "against signal level"
   override val claims: Seq[String] = Seq("against fringe phase")

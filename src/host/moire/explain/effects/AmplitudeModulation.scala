@@ -6,6 +6,8 @@ import moire.explain._
 object AmplitudeModulation extends Effect {
   val name = "amplitude_modulation"
   val params = Seq(Param("depth", "relative", "0..1"), Param("phase_deg", "degree", "-180..180"))
+  override val needs: Seq[String] = Seq("depth")
+  override def check(e: EffectSpec): Option[String] = Effect.within(e, "depth", 0, 1, "from 0 to 1")
   val what = "amplitude * (1 + depth cos(mechanical angle + phase)); needs lines_per_rev"
   val shows = "against mechanical angle"
   override def example: Example = Example(EffectSpec(name, Map("depth" -> 0.005)), "constant:100000", Some(100.0))

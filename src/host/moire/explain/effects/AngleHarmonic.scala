@@ -6,6 +6,7 @@ import moire.explain._
 object AngleHarmonic extends AngleHarmonics(2) {
   val name = "angle_harmonic"
   val params = Seq(Param("order", "", "2"), Param("amplitude_arcsec", "arcsec", ">= 0"), Param("phase_deg", "degree", "-180..180"))
+  override val needs: Seq[String] = Seq("amplitude_arcsec")
   val what = "read angle off by amplitude_arcsec sin(order angle + phase), a harmonic of the mechanical angle; needs lines_per_rev (explain: a reference naming turns)"
   val shows = "against mechanical angle (reference)"
   override def example: Example = Example(EffectSpec(name, Map("order" -> 2, "amplitude_arcsec" -> 200)), "constant:100000", Some(100.0))

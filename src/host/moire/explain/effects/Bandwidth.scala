@@ -5,7 +5,7 @@ import moire.explain._
 /** A first-order low-pass of the read-head amplifier on one channel or both. */
 object Bandwidth extends Effect {
   val name = "bandwidth"
-  val params = Seq(Param("cutoff_hz", "Hz", "> 0"))
+  val params = Seq(Param("cutoff_hz", "Hz", "1..1e12"))
   val what = "first-order read-head amplifier low-pass (channel=sin|cos|both)"
   val shows = "amplitude (and lag) against speed"
   override val claims: Seq[String] = Seq("against speed")
@@ -13,6 +13,7 @@ object Bandwidth extends Effect {
   val domain: Domain = Domain.Speed
   override val plot: PlotKind = PlotKind.Speed(phaseOnly = false)
 
+  override def check(e: EffectSpec): Option[String] = Effect.within(e, "cutoff_hz", 1, 1e12, "from 1 Hz to 1e12 Hz")
   override def validate(e: EffectSpec, m: PhysicsModel): Unit =
     if (!(e.p("cutoff_hz") > 0)) throw new ExplainError("bandwidth needs cutoff_hz > 0")
   override def backward(sp: ModelSpec, e: EffectSpec): ModelSpec = sp.copy(bw = sp.bw + (e.channel -> e.p("cutoff_hz", 1e6)))

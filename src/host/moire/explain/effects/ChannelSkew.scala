@@ -5,7 +5,7 @@ import moire.explain._
 /** The cos channel sampled later than sin: a phase error growing with speed. */
 object ChannelSkew extends Effect {
   val name = "channel_skew"
-  val params = Seq(Param("skew_s", "s", "|skew| < 1 / (4 pi f_max)"))
+  val params = Seq(Param("skew_s", "s", "-1e-3..1e-3; |skew| < 1 / (4 pi f_max)"))
   val what = "cos channel sampled skew_s seconds after sin"
   val shows = "phase error growing with speed"
   override val claims: Seq[String] = Seq("against speed")
@@ -13,6 +13,8 @@ object ChannelSkew extends Effect {
   val domain: Domain = Domain.Speed
   override val plot: PlotKind = PlotKind.Speed(phaseOnly = true)
 
+  override val needs: Seq[String] = Seq("skew_s")
+  override def check(e: EffectSpec): Option[String] = Effect.within(e, "skew_s", -1e-3, 1e-3, "from -1e-3 to 1e-3 s (1 ms either way)")
   override def backward(sp: ModelSpec, e: EffectSpec): ModelSpec = sp.copy(hasSkew = true, skewS = e.p("skew_s", 0.0))
   override def searches(c: Candidates): Seq[() => Seq[Cand]] = Seq(() => c.skew().toSeq)
   override def refresh(f: Finding, e: SignalEngine): Finding = f.copy(params = f.params + ("skew_s" -> e.spec.skewS))

@@ -5,7 +5,7 @@ import moire.explain._
 /** Amplifier saturation below the ADC's range: a pile-up of samples at one code. */
 object Clipping extends Effect {
   val name = "clipping"
-  val params = Seq(Param("high_fs", "full scale", "-1..1"), Param("low_fs", "full scale", "-1..1"))
+  val params = Seq(Param("high_fs", "full scale", "-1..1, above low_fs"), Param("low_fs", "full scale", "-1..1"))
   val what = "amplifier saturation levels in full-scale units (channel=sin|cos|both)"
   val shows = "pile-up at one code"
   override val claims: Seq[String] = Seq("code histogram")
@@ -15,6 +15,11 @@ object Clipping extends Effect {
   override val confoundedWithMotion = false
   override val direct = true
 
+  override val needs: Seq[String] = Seq("high_fs", "low_fs")
+  override def check(e: EffectSpec): Option[String] =
+    Effect.within(e, "high_fs", -1, 1, "from -1 to 1 full scale").orElse(Effect.within(e, "low_fs", -1, 1, "from -1 to 1 full scale"))
+      .orElse(for (h <- e.params.get("high_fs"); l <- e.params.get("low_fs") if h <= l)
+        yield s"high_fs (${Effect.show(h)}) must be above low_fs (${Effect.show(l)})")
   override def backward(sp: ModelSpec, e: EffectSpec): ModelSpec =
     sp.copy(clips = sp.clips :+ Clip(if (e.channel == "cos") 1 else 0, e.p("low_fs", Double.NegativeInfinity), e.p("high_fs", Double.PositiveInfinity)))
   override def searches(c: Candidates): Seq[() => Seq[Cand]] = Seq(() => c.clips())

@@ -10,6 +10,7 @@ object ContrastAlongTravel extends Effect {
   val name = "contrast_along_travel"
   val params = Seq(Param("offset_sin_per_period", "full scale/period", "any"), Param("offset_cos_per_period", "full scale/period", "any"),
     Param("gain_sin_per_period", "1/period", "any"), Param("gain_cos_per_period", "1/period", "any"))
+  override val needs: Seq[String] = params.map(_.name)
   val what = "offsets (full scale) and gains (relative) changing linearly with the position along the travel (beam walk, scale contamination), per fringe period from the start; explain also fits the amplitudes as a piecewise-linear function of the position with knots placed where the residual needs them (up to 64, by BIC) for a local band"
   val shows = "against position"
   override def example: Example = Example(EffectSpec(name, Map("gain_sin_per_period" -> 2e-5, "offset_cos_per_period" -> 1e-5)), "oscillate:400:300")

@@ -6,6 +6,7 @@ import moire.explain._
 object Crosstalk extends Effect {
   val name = "crosstalk"
   val params = Seq(Param("sin_from_cos_tau_s", "s", "any"), Param("cos_from_sin_tau_s", "s", "any"))
+  override val needs: Seq[String] = params.map(_.name)
   val what = "capacitive coupling: channel += tau * d(other channel)/dt"
   val shows = "amplitude against speed"
   override val claims: Seq[String] = Seq("against speed")

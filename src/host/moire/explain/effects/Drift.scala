@@ -7,6 +7,7 @@ object Drift extends Effect {
   val name = "drift"
   val params = Seq(Param("offset_sin_per_s", "full scale/s", "any"), Param("offset_cos_per_s", "full scale/s", "any"),
     Param("gain_sin_per_s", "1/s", "any"), Param("gain_cos_per_s", "1/s", "any"))
+  override val needs: Seq[String] = params.map(_.name)
   val what = "offsets (full scale) and gains (relative) changing linearly with time"
   val shows = "against time"
   override val claims: Seq[String] = Seq("against time")

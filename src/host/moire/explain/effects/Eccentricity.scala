@@ -6,6 +6,7 @@ import moire.explain._
 object Eccentricity extends AngleHarmonics(1) {
   val name = "eccentricity"
   val params = Seq(Param("eccentricity_rel", "of the reading radius", "0..0.1"), Param("phase_deg", "degree", "-180..180"))
+  override val needs: Seq[String] = Seq("eccentricity_rel")
   val what = "disk or magnet off the axis by eccentricity_rel of the reading radius: the read angle is off by eccentricity_rel sin(angle + phase) radians once per turn; needs lines_per_rev (explain: a reference naming turns)"
   val shows = "against mechanical angle (reference)"
   override def example: Example = Example(EffectSpec(name, Map("eccentricity_rel" -> 1e-3)), "constant:100000", Some(100.0))

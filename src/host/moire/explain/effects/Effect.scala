@@ -73,6 +73,14 @@ trait Effect {
   /** What explain needs beyond a plain recording to find it (a reference, calibration data); None: a recording will do. */
   def backwardNeeds: Option[String] = None
 
+  /** Keys of which the forward step needs one: without any it changes nothing (`simulate` refuses it). Empty: its
+    * defaults act, or `validate` says what it needs.
+    */
+  def needs: Seq[String] = Nil
+  /** Why its parameters make no sense whatever the model (a range, a whole number, two keys that clash), or None.
+    * `EffectSpec.parse` calls it: `--effect` and a model file's effects alike.
+    */
+  def check(e: EffectSpec): Option[String] = None
   /** Checks of a simulated effect's parameters (one line, `ExplainError`). */
   def validate(e: EffectSpec, m: PhysicsModel): Unit = ()
   /** The backward model with this effect (from `explain --model`). */
@@ -122,4 +130,10 @@ object Effect {
   def deg(b0: Double, b1: Double, a: Double, sa: Double): (Double, Double) =
     (math.toDegrees(math.atan2(b1, b0)), if (a > 0) math.toDegrees(sa / a) else 180.0)
   def g(p: Map[String, Double], k: String): Double = p.getOrElse(k, Double.NaN)
+
+  /** Why `key` of `e`, when given, is not from `lo` to `hi` (a whole number when `whole`), saying `range`; or None. */
+  def within(e: EffectSpec, key: String, lo: Double, hi: Double, range: String, whole: Boolean = false): Option[String] =
+    e.params.get(key).filter(v => !(v >= lo && v <= hi) || (whole && v != math.rint(v))).map(v => s"$key must be $range, got ${show(v)}")
+  /** A parameter's value as it was most likely typed (3, not 3.0). */
+  def show(v: Double): String = if (v == math.rint(v) && math.abs(v) < 1e15) v.toLong.toString else v.toString
 }

@@ -5,7 +5,7 @@ import moire.explain._
 /** Harmonic k of the fringe on one channel or both: the grating's profile, a non-sinusoidal read head. */
 object Harmonic extends Effect {
   val name = "harmonic"
-  val params = Seq(Param("order", "", "2..7"), Param("amplitude_rel", "of the fundamental", "0..0.2"), Param("phase_deg", "degree", "-180..180"))
+  val params = Seq(Param("order", "", "2..100, searched 2..7"), Param("amplitude_rel", "of the fundamental", "0..1"), Param("phase_deg", "degree", "-180..180"))
   val what = "order k of the fringe on one channel or both (channel=sin|cos|both)"
   val shows = "against fringe phase"
   override val claims: Seq[String] = Seq("against fringe phase")
@@ -13,8 +13,10 @@ object Harmonic extends Effect {
   val domain: Domain = Domain.Periodic
   val Orders: Range = 2 to 7
 
-  override def validate(e: EffectSpec, m: PhysicsModel): Unit =
-    if (e.p("order", 2) < 2) throw new ExplainError("harmonic order must be >= 2")
+  override val needs: Seq[String] = Seq("amplitude_rel")
+  override def check(e: EffectSpec): Option[String] =
+    Effect.within(e, "order", 2, 100, "a whole number from 2 to 100", whole = true)
+      .orElse(Effect.within(e, "amplitude_rel", 0, 1, "from 0 to 1 (of the fundamental)"))
   override def backward(sp: ModelSpec, e: EffectSpec): ModelSpec = sp.copy(terms = sp.terms :+ Term.Harm(e.p("order", 2).toInt, e.channel))
   override def searches(c: Candidates): Seq[() => Seq[Cand]] =
     // one step per order: its three variants share their columns (`LinearFamily`)

@@ -5,7 +5,12 @@ import moire.explain._
 /** A fixed-frequency pickup (mains, switching supply) on both channels. */
 object Interference extends Effect {
   val name = "interference"
-  val params = Seq(Param("frequency_hz", "Hz", "> 0"), Param("amplitude_fs", "full scale", ">= 0"), Param("phase_deg", "degree", "-180..180"))
+  val params = Seq(Param("frequency_hz", "Hz", "1e-6..1e12"), Param("amplitude_fs", "full scale", "0..1"), Param("phase_deg", "degree", "-180..180"))
+  override val needs: Seq[String] = Seq("amplitude_fs")
+  override def validate(e: EffectSpec, m: PhysicsModel): Unit =
+    if (!e.params.contains("frequency_hz")) throw new ExplainError(s"$name needs frequency_hz (the line's frequency in Hz)")
+  override def check(e: EffectSpec): Option[String] =
+    Effect.within(e, "frequency_hz", 1e-6, 1e12, "from 1e-6 Hz to 1e12 Hz").orElse(Effect.within(e, "amplitude_fs", 0, 1, "from 0 to 1 full scale"))
   val what = "a fixed-frequency pickup (mains, switching supply) on both channels"
   val shows = "a spectral line"
   override val claims: Seq[String] = Seq("spectrum")

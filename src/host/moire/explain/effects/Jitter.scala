@@ -5,7 +5,7 @@ import moire.explain._
 /** Sampling-clock jitter: noise growing with the signal's slope, common to both channels. */
 object Jitter extends Effect {
   val name = "jitter"
-  val params = Seq(Param("jitter_s", "s rms", ">= 0"))
+  val params = Seq(Param("jitter_s", "s rms", "0..1e-3"))
   val what = "sampling clock jitter, seconds rms, common to both channels"
   val shows = "noise against signal slope"
   override val claims: Seq[String] = Seq("noise against speed")
@@ -13,6 +13,8 @@ object Jitter extends Effect {
   val domain: Domain = Domain.Speed
   override val plot: PlotKind = PlotKind.Slope
 
+  override val needs: Seq[String] = Seq("jitter_s")
+  override def check(e: EffectSpec): Option[String] = Effect.within(e, "jitter_s", 0, 1e-3, "from 0 to 1e-3 s rms (1 ms)")
   override def backward(sp: ModelSpec, e: EffectSpec): ModelSpec = sp.copy(jitter = true)
   override def searches(c: Candidates): Seq[() => Seq[Cand]] = Seq(() => c.jitter().toSeq)
   override def refresh(f: Finding, e: SignalEngine): Finding = f.copy(params = f.params + ("jitter_s" -> math.sqrt(e.noise.jitter2)))

@@ -8,7 +8,7 @@ import moire.explain._
   */
 object PhaseNoise extends Effect {
   val name = "phase_noise"
-  val params = Seq(Param("phase_noise_rad", "rad rms", ">= 0"))
+  val params = Seq(Param("phase_noise_rad", "rad rms", "0..2 pi"))
   val what = "phase noise of the motion (vibration, laser phase noise), radians of fringe phase rms per sample, the same on both channels"
   val shows = "noise against signal slope, not growing with speed"
   override def example: Example = Example(EffectSpec(name, Map("phase_noise_rad" -> 0.01)), "ramp:50000:250000:0.01")
@@ -16,6 +16,9 @@ object PhaseNoise extends Effect {
   val domain: Domain = Domain.Speed
   override val plot: PlotKind = PlotKind.Slope
 
+  override val needs: Seq[String] = Seq("phase_noise_rad")
+  override def check(e: EffectSpec): Option[String] =
+    Effect.within(e, "phase_noise_rad", 0, 2 * math.Pi, "from 0 to 6.283 rad rms (one fringe period)")
   override def backward(sp: ModelSpec, e: EffectSpec): ModelSpec = sp.copy(phaseNoise = true)
   override def searches(c: Candidates): Seq[() => Seq[Cand]] = Seq(() => c.phaseNoise().toSeq)
   override def refresh(f: Finding, e: SignalEngine): Finding = f.copy(params = f.params + ("phase_noise_rad" -> math.sqrt(e.noise.jitter2)))

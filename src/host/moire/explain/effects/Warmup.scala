@@ -7,6 +7,7 @@ object Warmup extends Effect {
   val name = "warmup"
   val params = Seq(Param("offset_sin_step_fs", "full scale", "any"), Param("offset_cos_step_fs", "full scale", "any"),
     Param("gain_sin_step_rel", "relative", "> -1"), Param("gain_cos_step_rel", "relative", "> -1"), Param("time_constant_s", "s", "> 0"))
+  override val needs: Seq[String] = params.map(_.name).filter(_.contains("step"))
   val what = "offsets and gains settling by step * (1 - exp(-t / time_constant_s)) after switch-on"
   val shows = "against time"
   override val claims: Seq[String] = Seq("against time")
