@@ -41,6 +41,7 @@ class LauncherSpec extends AnyFlatSpec with Matchers {
     sim should include("--out <str>                 output CSV file (required)")
     for ((name, _, _) <- moire.explain.EffectSpec.catalogue) sim should include(s"  $name (")
     cli("help", "replay")._2 should startWith("Usage: replay")
+    cli("help", "record")._2 should include("seconds to record (required without --burst)")
   }
 
   it should "refuse an unknown command in one line" in {

@@ -229,7 +229,7 @@ object Main {
 
   @main(doc = "Record a board's UART stream for some seconds, or one full-rate burst (--burst N), into a moire-recording v1 file (docs/recording.md).")
   def record(@arg(doc = "serial port, e.g. /dev/ttyUSB0") port: String,
-             @arg(doc = "seconds to record; with --burst: seconds to wait for the trigger (default 10)") seconds: Option[Double] = None,
+             @arg(doc = "seconds to record (required without --burst); with --burst: seconds to wait for the trigger (default 10)") seconds: Option[Double] = None,
              @arg(doc = "output CSV file") out: String,
              @arg(doc = "UART baud rate (default 115200)") baud: Int = 115200,
              @arg(doc = "write this decimation D to the board first (with --listen-only: the board's D)") decimation: Option[Long] = None,
