@@ -19,8 +19,12 @@ trait Board {
   def top(p: BoardParams): RawModule
   /** The parameters `timing` places the top with (its clock from a pin, no vendor PLL primitive). */
   def placeParams(p: BoardParams): BoardParams
-  /** The board's datapaths in the design registry (`board-NAME`, `board-NAME-DESIGN`). */
+  /** The datapaths `board` writes a project with (`--design`; its help lists them): all the core has. */
+  def designs: Seq[BoardDesign] = BoardDesign.all
+  /** Those of [[designs]] whose tops are in the design registry (`board-NAME`, `board-NAME-DESIGN`) for cost and timing. */
   def registryDesigns: Seq[BoardDesign]
+  /** A top's name in the design registry: `board-NAME` (the subdivider), `board-NAME-DESIGN`. */
+  def registryName(d: BoardDesign): String = s"board-$name" + (if (d == BoardDesign.Subdiv) "" else s"-${d.name}")
 
   /** The pin table, one line per pin as the vendor's constraint file has it. */
   def pins: Seq[String]

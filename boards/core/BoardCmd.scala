@@ -17,6 +17,8 @@ object BoardCmd {
              fifoDepth: Int, glitchFilter: Int, counts: Int, clockSource: String, clockHz: Int = 50000000,
              lines: Int = 16384, harmonics: Int = 4): BoardParams = {
     val d = BoardDesign.parse(design).fold(bad, identity)
+    Boards.find(board).toOption.filterNot(_.designs.contains(d)).foreach(b =>
+      bad(s"--design: ${b.name} does not run '${d.name}'; allowed: ${b.designs.map(_.name).mkString(", ")}"))
     val f = AdcFormat.parse(adcFormat).fold(e => bad(s"--adc-format: $e"), identity)
     val c = ClockSource.parse(clockSource).fold(bad, identity)
     if (clockHz < 1000000 || clockHz > 200000000) bad(s"--clock-hz must be in 1000000..200000000, got $clockHz")

@@ -44,6 +44,13 @@ class LauncherSpec extends AnyFlatSpec with Matchers {
     cli("help", "record")._2 should include("seconds to record (required without --burst)")
   }
 
+  "help board" should "list each board's designs as the board command takes them" in {
+    val text = cli("help", "board")._2
+    for (b <- moire.board.Boards.all)
+      text should include(s"  ${b.name} (${b.title}): ${b.target.toString.toLowerCase} files, designs ${b.designs.map(_.name).mkString(", ")} (in the design registry: ")
+    text should include("ulx3s (ULX3S): verilog files, designs subdiv, corrected, compensated (in the design registry: board-ulx3s, board-ulx3s-compensated)")
+  }
+
   it should "refuse an unknown command in one line" in {
     val (code, _, err) = cli("help", "nosuch")
     code shouldBe 2; err.trim shouldBe "moire: 'nosuch' is not a command (moire --help lists them)"

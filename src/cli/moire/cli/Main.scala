@@ -300,7 +300,8 @@ object Main {
           case "simulate" => "effects (--effect NAME:key=value,...,channel=sin|cos|both):\n" +
             moire.explain.EffectSpec.catalogue.map { case (n, keys, doc) => s"  $n (${keys.mkString(", ")}): $doc" }.mkString("\n")
           case "board" => "boards:\n" + moire.board.Boards.all.map(b =>
-            s"  ${b.name} (${b.title}): ${b.target.toString.toLowerCase} files, designs ${b.registryDesigns.map(_.name).mkString(", ")}").mkString("\n")
+            s"  ${b.name} (${b.title}): ${b.target.toString.toLowerCase} files, designs ${b.designs.map(_.name).mkString(", ")}" +
+              s" (in the design registry: ${b.registryDesigns.map(b.registryName).mkString(", ")})").mkString("\n")
           case _ => ""
         }
         println(Help.command(m, this, extra)); 0

@@ -2,7 +2,7 @@ package moire.designs
 
 import chisel3.RawModule
 import moire.adapt.{AdaptParams, AdaptiveCorrector}
-import moire.board.{Board, BoardDesign, BoardParams, Boards, Mhz}
+import moire.board.{Board, BoardParams, Boards, Mhz}
 import moire.chain.{CorrectedSubdivParams, CorrectedSubdivider}
 import moire.cordic.{Cordic, CordicParams}
 import moire.emit.{Emit, Latency, Target}
@@ -79,7 +79,7 @@ object Designs {
     counter(QuadratureParams(HarmonicParams().countBits))) ++
     // every board's tops: board-NAME (the subdivider), board-NAME-DESIGN
     (for (b <- Boards.all; d <- b.registryDesigns)
-      yield boardTop(b, s"board-${b.name}" + (if (d == BoardDesign.Subdiv) "" else s"-${d.name}"), BoardParams(design = d)))
+      yield boardTop(b, b.registryName(d), BoardParams(design = d)))
 
   lazy val names: Seq[String] = all().map(_.name)
 
