@@ -264,6 +264,13 @@ class BadInputSpec extends AnyFlatSpec with Matchers {
   bad("a missing recording", "no such file")("replay", (dir / "none.csv").toString)
   bad("an unknown --design", "--design: 'nosuch' is not a replayable design")("replay", good.toString, "--design", "nosuch")
   bad("--counts 3", "--counts (M) must be a power of two")("replay", good.toString, "--counts", "3")
+  bad("an unknown option last", "Unknown argument: --bogus (see replay --help)")(
+    "replay", good.toString, "--out", (dir / "bogus.csv").toString, "--quiet", "--bogus")
+  bad("an unknown option with a value", "Unknown argument: --bogus")("replay", good.toString, "--bogus", "3")
+
+  behavior of "the launcher"
+  bad("--version with an argument", "--version takes no arguments, got 'extra'")("--version", "extra")
+  bad("--help with an argument", "--help takes no arguments, got 'extra' (moire help COMMAND for a command's help)")("--help", "extra")
   bad("an output through a file", "is a file, not a folder", Seq(aFile))("replay", good.toString, "--out", (aFile / "x.csv").toString)
 
   behavior of "explain-bench"
@@ -323,6 +330,8 @@ class BadInputSpec extends AnyFlatSpec with Matchers {
   bad("a --model that is a folder", "is a folder, not a file")("explain", good.toString, "--model", folderIn.toString)
   bad("--coefficients /dev/null", "is a character device, not a file")("board-reg", "--port", port, "--coefficients", "/dev/null")
   bad("explain-bench --recording of a folder", "is a folder, not a file")("explain-bench", "--recording", folderIn.toString)
+  bad("board-reg --load of a folder", "is a folder, not a file")("board-reg", "--port", port, "--load", folderIn.toString)
+  bad("monitor --replay of a folder", "is a folder, not a file")("monitor", "--replay", folderIn.toString)
   bad("record --port of a folder", "is a folder, not a serial port")("record", "--port", folderIn.toString, "--seconds", "1", "--out", (dir / "r.csv").toString)
   bad("record --port ''", "--port is empty")("record", "--port", "", "--seconds", "1", "--out", (dir / "r.csv").toString)
 

@@ -317,6 +317,8 @@ object Main {
     args.toSeq match {
       case Seq() | Seq("-h") | Seq("--help") | Seq("help") => println(Help.overview(mains)); return 0
       case Seq("--version") | Seq("-V") => println(s"moire ${Version.text}"); return 0
+      case Seq(o @ ("--version" | "-V" | "--help" | "-h"), extra, _*) =>
+        System.err.println(s"moire: $o takes no arguments, got '$extra'" + (if (o.startsWith("-h") || o == "--help") " (moire help COMMAND for a command's help)" else "")); return 2
       case Seq("help", cmd) => return commandHelp(mains, cmd)
       case Seq("help", _*) => System.err.println("moire: help takes one command name, e.g. moire help explain"); return 2
       case a if a.head.startsWith("-") =>

@@ -6,6 +6,10 @@ import moire.replay.{ReplayCmd, ReplayError}
   * the words to [[ReplayCmd.Options]]; every option it does not know goes, with its value, to the subdivider.
   */
 object ReplayArgs {
+  /** The subdivider's options (emit-subdiv's), as typed: `--input-bits`. */
+  private val SubdivOptions: Set[String] =
+    moire.options.SubdivConfig().productElementNames.map(n => "--" + n.replaceAll("([A-Z])", "-$1").toLowerCase).toSet
+
   def parse(args: Seq[String]): ReplayCmd.Options = {
     var o = ReplayCmd.Options(None)
     def count(opt: String, v: String, min: Int) =
@@ -20,6 +24,7 @@ object ReplayArgs {
         case "--quiet" => o = o.copy(quiet = true)
         case "--check-rows" => o = o.copy(checkRows = count("--check-rows", value("--check-rows"), 1))
         case "--check-windows" => o = o.copy(checkWindows = count("--check-windows", value("--check-windows"), 0))
+        case opt if opt.startsWith("--") && !SubdivOptions(opt) => throw new ReplayError(s"Unknown argument: $opt (see replay --help)")
         case opt if opt.startsWith("--") => rest += opt; rest += value(opt)
         case f if o.file.isEmpty => o = o.copy(file = Some(f))
         case f => throw new ReplayError(s"replay: one recording at a time, got '${o.file.get}' and '$f'")

@@ -29,7 +29,7 @@ object MonitorCmd {
     case (Some(p), _) => new BoardSource(p, o.baud, o.decimation, o.scale)
     case (_, Some(f)) =>
       val p = os.Path(f, os.pwd)
-      if (!os.isFile(p)) throw new MonitorError(s"$f: no such file")
+      moire.files.PathKind.notAFile(p).foreach(m => throw new MonitorError(m))
       val rec = Recording.read(p)
       rec.warnings.foreach(w => warn(s"WARNING: $f: $w"))
       moire.explain.ExplainCmd.checkSignals(p, rec)

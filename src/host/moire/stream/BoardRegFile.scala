@@ -38,7 +38,7 @@ object BoardRegFile {
   final case class Saved(model: Map[String, Long], writes: Seq[(Int, Long)], learned: Option[BoardRegLearned])
 
   def read(file: os.Path): Saved = {
-    if (!os.isFile(file)) throw new StreamError(s"$file: no such file")
+    moire.files.PathKind.notAFile(file).foreach(m => throw new StreamError(m))
     val j = try ujson.read(os.read(file)) catch { case e: Exception => throw new StreamError(s"$file: not valid JSON (${e.getMessage.linesIterator.next().take(80)})") }
     val o = j.objOpt.getOrElse(throw new StreamError(s"$file: expected a JSON object"))
     val fmt = o.get("format").flatMap(_.strOpt)
