@@ -554,10 +554,11 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
 
   /** The fit as it stands (spec, trajectory, data, solution, residual), to go back to when a trial refit is not kept:
     * `restore` gives the same state to the bit, where fitting the old spec again would end near it after some refits.
-    * None when the residual's copy would take more than an eighth of the heap (the heap, not `holdBytes`: whether the
-    * terms' columns are held does not change the result).
+    * None when the residual's copy would take more than a 32nd of the heap (the heap, not `holdBytes`: whether the
+    * terms' columns are held does not change the result): a long record's trial then fits the old spec again (at 20 M
+    * samples in 4 GB the copy held through every trial ran the heap out).
     */
-  def save(): Option[() => Unit] = if (16L * n > Runtime.getRuntime.maxMemory / 8) None else {
+  def save(): Option[() => Unit] = if (16L * n > Runtime.getRuntime.maxMemory / 32) None else {
     val sp = spec; val tr = _traj; val trBack = tr.keep()
     val held = _excluded != null // the data of excluded samples are held at the prediction in place: copies then
     val (rS, rC, cn) = if (held) { val a = _repS.clone(); val b = _repC.clone(); (a, b, _cens.copy(s = a, c = b)) } else (_repS, _repC, _cens)
