@@ -122,30 +122,21 @@ class BadInputSpec extends AnyFlatSpec with Matchers {
   bad("--lines-per-rev -3", "--lines-per-rev must be above 0", Seq(existing))(sim("--lines-per-rev", "-3"): _*)
   bad("an effect parameter NaN", "order 'NaN' is not a finite number", Seq(existing))(sim("--effect", "harmonic:order=NaN"): _*)
   bad("--adc-bits 99", "bits must be within 4..24", Seq(existing))(sim("--adc-bits", "99"): _*)
-  // effects and motions that make no sense (each exited 0 before)
-  bad("adc_bit_fault stuck_at=2", "--effect adc_bit_fault: stuck_at must be 0 or 1, got 2", Seq(existing))(
-    sim("--samples", "2000", "--effect", "adc_bit_fault:bit=3,stuck_at=2,channel=sin"): _*)
-  bad("adc_bit_fault without stuck_at or bridged_to", "adc_bit_fault changes nothing without stuck_at or bridged_to: give one, e.g. adc_bit_fault:bit=3,stuck_at=1,channel=cos",
-    Seq(existing))(sim("--samples", "2000", "--effect", "adc_bit_fault:bit=3,channel=sin"): _*)
-  bad("adc_bit_fault with both stuck_at and bridged_to", "give stuck_at or bridged_to, not both", Seq(existing))(
-    sim("--samples", "2000", "--effect", "adc_bit_fault:bit=3,stuck_at=1,bridged_to=4,channel=sin"): _*)
-  bad("harmonic without keys", "harmonic changes nothing without amplitude_rel: give it", Seq(existing))(sim("--samples", "2000", "--effect", "harmonic"): _*)
-  bad("harmonic order 2.5", "--effect harmonic: order must be a whole number from 2 to 100, got 2.5", Seq(existing))(
-    sim("--samples", "2000", "--effect", "harmonic:order=2.5,amplitude_rel=0.01"): _*)
-  bad("a key given twice", "--effect harmonic: key 'order' given twice", Seq(existing))(
-    sim("--samples", "2000", "--effect", "harmonic:order=3,order=4,amplitude_rel=0.01"): _*)
-  bad("a negative jitter", "--effect jitter: jitter_s must be from 0 to 1e-3 s rms (1 ms), got -1", Seq(existing))(
-    sim("--samples", "2000", "--effect", "jitter:jitter_s=-1"): _*)
-  bad("a negative phase noise", "--effect phase_noise: phase_noise_rad must be from 0 to 6.283 rad rms", Seq(existing))(
-    sim("--samples", "2000", "--effect", "phase_noise:phase_noise_rad=-1"): _*)
-  bad("clipping high below low", "--effect clipping: high_fs must be from -1 to 1 full scale, got -5", Seq(existing))(
-    sim("--samples", "2000", "--effect", "clipping:high_fs=-5,low_fs=5"): _*)
-  bad("clipping high under low within full scale", "--effect clipping: high_fs (-0.5) must be above low_fs (0.5)", Seq(existing))(
-    sim("--samples", "2000", "--effect", "clipping:high_fs=-0.5,low_fs=0.5"): _*)
-  bad("a skew of 1e300 s", "--effect channel_skew: skew_s must be from -1e-3 to 1e-3 s (1 ms either way), got 1.0E300", Seq(existing))(
-    sim("--samples", "2000", "--effect", "channel_skew:skew_s=1e300"): _*)
-  bad("a cut-off of 1e-300 Hz", "--effect bandwidth: cutoff_hz must be from 1 Hz to 1e12 Hz", Seq(existing))(
-    sim("--samples", "2000", "--effect", "bandwidth:cutoff_hz=1e-300"): _*)
+  // effects and motions that make no sense (each exited 0 before): (what, the message, --effect)
+  for ((kind, expect, effect) <- Seq(
+    ("adc_bit_fault stuck_at=2", "--effect adc_bit_fault: stuck_at must be 0 or 1, got 2", "adc_bit_fault:bit=3,stuck_at=2,channel=sin"),
+    ("adc_bit_fault without stuck_at or bridged_to", "adc_bit_fault changes nothing without stuck_at or bridged_to: give one, e.g. adc_bit_fault:bit=3,stuck_at=1,channel=cos", "adc_bit_fault:bit=3,channel=sin"),
+    ("adc_bit_fault with both stuck_at and bridged_to", "give stuck_at or bridged_to, not both", "adc_bit_fault:bit=3,stuck_at=1,bridged_to=4,channel=sin"),
+    ("harmonic without keys", "harmonic changes nothing without amplitude_rel: give it", "harmonic"),
+    ("harmonic order 2.5", "--effect harmonic: order must be a whole number from 2 to 100, got 2.5", "harmonic:order=2.5,amplitude_rel=0.01"),
+    ("a key given twice", "--effect harmonic: key 'order' given twice", "harmonic:order=3,order=4,amplitude_rel=0.01"),
+    ("a negative jitter", "--effect jitter: jitter_s must be from 0 to 1e-3 s rms (1 ms), got -1", "jitter:jitter_s=-1"),
+    ("a negative phase noise", "--effect phase_noise: phase_noise_rad must be from 0 to 6.283 rad rms", "phase_noise:phase_noise_rad=-1"),
+    ("clipping high below low", "--effect clipping: high_fs must be from -1 to 1 full scale, got -5", "clipping:high_fs=-5,low_fs=5"),
+    ("clipping high under low within full scale", "--effect clipping: high_fs (-0.5) must be above low_fs (0.5)", "clipping:high_fs=-0.5,low_fs=0.5"),
+    ("a skew of 1e300 s", "--effect channel_skew: skew_s must be from -1e-3 to 1e-3 s (1 ms either way), got 1.0E300", "channel_skew:skew_s=1e300"),
+    ("a cut-off of 1e-300 Hz", "--effect bandwidth: cutoff_hz must be from 1 Hz to 1e12 Hz", "bandwidth:cutoff_hz=1e-300")
+  )) bad(kind, expect, Seq(existing))(sim("--samples", "2000", "--effect", effect): _*)
   bad("a negative jitter in a --model", "neg.json: jitter: jitter_s must be from 0 to 1e-3 s rms", Seq(existing))(
     sim("--model", rec("neg.json", """{"effects": [{"effect": "jitter", "jitter_s": -1}]}""")): _*)
   bad("--motion constant:1:2", "--motion 'constant:1:2': too many values, expected constant:HZ", Seq(existing))(sim("--motion", "constant:1:2"): _*)
