@@ -39,7 +39,7 @@ object ExplainCmd {
   def simulate(o: SimOptions): String = {
     val m = model(o)
     val (rec, _) = try m.generate() catch { case e: IllegalArgumentException => throw new ExplainError(e.getMessage.stripPrefix("requirement failed: ")) }
-    val path = os.Path(o.out, os.pwd)
+    val path = moire.files.SafeWrite.fileArg(o.out)
     moire.files.SafeWrite.refuseInputs(path, o.model.toSeq.map(os.Path(_, os.pwd)))
     Recording.write(path, rec)
     s"wrote $path (${rec.length} samples, ${m.effects.map(_.effect).mkString(", ") match { case "" => "default model only"; case s => s }})"
@@ -52,7 +52,7 @@ object ExplainCmd {
     if (files.isEmpty) throw new ExplainError("explain: name at least one recording file")
     if (html.isDefined && files.size > 1) throw new ExplainError(s"--html names one file, but ${files.size} recordings were given; use --html-dir DIR (one DIR/<name>.html each)")
     if (html.isDefined && htmlDir.isDefined) throw new ExplainError("give --html FILE or --html-dir DIR, not both")
-    html.foreach(f => moire.files.SafeWrite.checkFile(os.Path(f, os.pwd)))
+    html.foreach(f => moire.files.SafeWrite.checkFile(moire.files.SafeWrite.fileArg(f)))
     val givenEffects = modelFile.map(f => PhysicsModel.effectsFromJson(PhysicsModel.jsonObject(readText(f), f), f, Nil)).getOrElse(Nil)
     val paths = files.map(f => os.Path(f, os.pwd))
     // the subdivider's options are checked now, not found wrong file by file in a note

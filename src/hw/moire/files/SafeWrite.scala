@@ -113,6 +113,15 @@ object SafeWrite {
     if (os.exists(target) && !Files.isWritable(target.toNIO)) throw new FileError(s"$target: the file is read-only")
   }
 
+  /** An output file's name as the user gave it: a name ending in a slash names a folder (a file of the folder's name
+    * would be written), an empty one no file at all.
+    */
+  def fileArg(given: String): os.Path = {
+    if (given.trim.isEmpty) throw new FileError("an output file's name is empty; give a file name")
+    if (given.endsWith("/")) throw new FileError(s"$given: ends with /, so it names a folder; give a file name (e.g. ${given}out.csv)")
+    os.Path(given, os.pwd)
+  }
+
   /** Refuses an output that is one of the inputs (also through links or another spelling of the path). */
   def refuseInputs(output: os.Path, inputs: Seq[os.Path]): Unit =
     inputs.find(i => i == output || (os.exists(i) && os.exists(output) && Files.isSameFile(i.toNIO, output.toNIO)))
