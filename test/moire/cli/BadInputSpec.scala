@@ -288,6 +288,7 @@ class BadInputSpec extends AnyFlatSpec with Matchers {
     "explain", good.toString, hInput.toString, "--quiet", "--no-rtl", "--html-dir", hdir.toString)
   bad("a simulate --out that ends with a slash (a folder)", "ends with /, so it names a folder", Seq(dir / "newdir"))(
     "simulate", "--out", (dir / "newdir").toString + "/", "--samples", "100")
+  bad("a recording named twice", "given 2 times; name each recording once")("explain", good.toString, good.toString, "--quiet", "--no-rtl")
   bad("an explain --html that is empty", "an output file's name is empty")("explain", good.toString, "--quiet", "--no-rtl", "--html", "")
   bad("a simulate --out that is its --model", "is an input of this command", Seq(model))(
     "simulate", "--model", model.toString, "--out", model.toString, "--samples", "100")

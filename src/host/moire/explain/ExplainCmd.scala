@@ -55,6 +55,8 @@ object ExplainCmd {
     html.foreach(f => moire.files.SafeWrite.checkFile(moire.files.SafeWrite.fileArg(f)))
     val givenEffects = modelFile.map(f => PhysicsModel.effectsFromJson(PhysicsModel.jsonObject(readText(f), f), f, Nil)).getOrElse(Nil)
     val paths = files.map(f => os.Path(f, os.pwd))
+    // one file named twice would be explained twice, the second report over the first
+    paths.groupBy(identity).collectFirst { case (p, ps) if ps.size > 1 => throw new ExplainError(s"$p: given ${ps.size} times; name each recording once") }
     // the subdivider's options are checked now, not found wrong file by file in a note
     rtl.filter(_.nonEmpty).foreach(opts => try moire.replay.ReplayDesign("subdiv", moire.replay.ReplayCmd.config(opts, Map.empty))
       catch { case e: moire.MoireError => throw new ExplainError(s"--subdiv: ${e.getMessage}") })
