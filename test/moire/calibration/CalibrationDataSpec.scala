@@ -65,4 +65,18 @@ class CalibrationDataSpec extends AnyFlatSpec {
       assert(CalibrationData.read(path).points.size % 36 == 0)
     }
   }
+
+  "A file whose last row has no line end" should "keep the row and say it may be cut short (a file ending with a line end: nothing)" in {
+    val dir = os.temp.dir()
+    val cut = dir / "cut.csv"; os.write(cut, head + "0,1\n10,2\n20,3.2")
+    val whole = dir / "whole.csv"; os.write(whole, head + "0,1\n10,2\n20,3.2\n")
+    val d = CalibrationData.read(cut)
+    assert(d.points.map(_.errorArcsec) == Seq(1.0, 2.0, 3.2) && d.cutShort.contains(6))
+    assert(d.notes.head.startsWith("line 6, the last, has no line end"))
+    val w = CalibrationData.read(whole)
+    assert(w.points == d.points && w.cutShort.isEmpty && w.notes.isEmpty)
+    // a last line that is a comment is no row
+    val com = dir / "com.csv"; os.write(com, head + "0,1\n10,2\n# end: here")
+    assert(CalibrationData.read(com).cutShort.isEmpty)
+  }
 }

@@ -38,6 +38,7 @@ object Calibrate {
     val extra = Seq.newBuilder[(String, ujson.Value)]
     extra += "analysis" -> ujson.Obj("points" -> data.points.size, "max_order" -> maxOrder, "method" -> "least squares (QR)",
       "metadata" -> ujson.Obj.from(data.meta.toSeq.sortBy(_._1).map { case (k, v) => k -> ujson.Str(v) }))
+    if (data.notes.nonEmpty) extra += "notes" -> ujson.Arr.from(data.notes.map(ujson.Str(_)))
     if (byDir.nonEmpty) extra += "directions" -> ujson.Obj.from(byDir.map { case (d, f) =>
       d -> ujson.Obj("offset_arcsec" -> f.offset, "rms_residual_arcsec" -> f.rms,
         "harmonics" -> ujson.Arr(f.harmonics.map(h => ujson.Obj("order" -> h.order, "c_arcsec" -> h.c, "phi_deg" -> h.phiDeg)): _*))
@@ -77,6 +78,7 @@ object Calibrate {
       b ++= f"  note$dir: the angles look like a $step%.6g degree grid missing ${missing.map(a => f"$a%.6g").mkString(", ")}; " +
         f"add '# step_deg: $step%.6g' to make gaps an error\n"
     }
+    r.data.notes.foreach(n => b ++= s"  note: $n\n")
     r.files.foreach(f => b ++= s"wrote $f\n")
     b.result()
   }

@@ -9,7 +9,10 @@ final class CalibrationError(msg: String) extends Exception(msg)
 final case class CalPoint(angleDeg: Double, errorArcsec: Double, direction: Option[String], line: Int)
 
 /** A parsed `moire-calibration v1` file. */
-final case class CalibrationData(file: String, meta: Map[String, String], points: Seq[CalPoint]) {
+final case class CalibrationData(file: String, meta: Map[String, String], points: Seq[CalPoint], cutShort: Option[Int] = None) {
+  /** What the reader could not tell: the last row without a line end (kept, but it may have been cut short). */
+  def notes: Seq[String] = cutShort.toSeq.map(l => s"line $l, the last, has no line end: if the file was cut short there, " +
+    "its row may be wrong (end the file with a line break if it is complete)")
   /** The directions present, in file order ("" for rows without a direction column). */
   def directions: Seq[String] = points.map(_.direction.getOrElse("")).distinct
   def of(direction: String): Seq[CalPoint] = points.filter(_.direction.getOrElse("") == direction)
@@ -50,8 +53,10 @@ object CalibrationData {
   def read(path: os.Path): CalibrationData = {
     moire.files.PathKind.notAFile(path).foreach(m => throw new CalibrationError(m))
     // through the bounded line reader: a binary file or one endless line is refused at once
-    val lines = try moire.recording.CsvText.lines(path) catch { case e: moire.recording.RecordingError => throw new CalibrationError(e.getMessage) }
-    parse(path.last, lines.mkString("\n"))
+    val (lines, ended) = try moire.recording.CsvText.linesEnded(path) catch { case e: moire.recording.RecordingError => throw new CalibrationError(e.getMessage) }
+    val d = parse(path.last, lines.mkString("\n"))
+    // a last data row without a line end is kept and said (a hand-made table often ends so; a cut file too)
+    if (!ended && d.points.lastOption.exists(_.line == lines.size)) d.copy(cutShort = Some(lines.size)) else d
   }
 
   def parse(file: String, text: String): CalibrationData = {

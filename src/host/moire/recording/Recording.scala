@@ -188,10 +188,13 @@ object CsvText {
   val MaxLineChars: Int = 1 << 20
 
   /** All lines of a (small) text file, read through the bounded reader. */
-  def lines(path: os.Path): IndexedSeq[String] = {
+  def lines(path: os.Path): IndexedSeq[String] = linesEnded(path)._1
+
+  /** All lines of a (small) text file and whether the last had a line end (false: the file may be cut short). */
+  def linesEnded(path: os.Path): (IndexedSeq[String], Boolean) = {
     checkText(path)
     val in = try reader(path) catch { case e: java.io.IOException => throw new RecordingError(s"$path: cannot read (${moire.files.SafeWrite.reason(e)})") }
-    try lineIterator(path, in).toIndexedSeq finally in.close()
+    try { val it = lineIterator(path, in); val ls = it.toIndexedSeq; (ls, it.lastEnded) } finally in.close()
   }
 
   /** Refuses, from its first bytes, a file that is no text: gzip, UTF-16, a zip archive, NUL bytes. */
