@@ -289,6 +289,8 @@ class BadInputSpec extends AnyFlatSpec with Matchers {
   bad("a simulate --out that ends with a slash (a folder)", "ends with /, so it names a folder", Seq(dir / "newdir"))(
     "simulate", "--out", (dir / "newdir").toString + "/", "--samples", "100")
   bad("a recording named twice", "given 2 times; name each recording once")("explain", good.toString, good.toString, "--quiet", "--no-rtl")
+  for (o <- Seq("--json-dir", "--plots", "--html-dir"))
+    bad(s"an explain $o that is empty", s"$o: the folder's name is empty")("explain", good.toString, "--quiet", "--no-rtl", o, "")
   bad("an explain --html that is empty", "an output file's name is empty")("explain", good.toString, "--quiet", "--no-rtl", "--html", "")
   bad("a simulate --out that is its --model", "is an input of this command", Seq(model))(
     "simulate", "--model", model.toString, "--out", model.toString, "--samples", "100")

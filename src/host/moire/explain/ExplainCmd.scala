@@ -61,7 +61,8 @@ object ExplainCmd {
     rtl.filter(_.nonEmpty).foreach(opts => try moire.replay.ReplayDesign("subdiv", moire.replay.ReplayCmd.config(opts, Map.empty))
       catch { case e: moire.MoireError => throw new ExplainError(s"--subdiv: ${e.getMessage}") })
     // Outputs are checked before the long work: writable folders, no two reports under one name.
-    val outDirs = (jsonDir ++ plotDir ++ htmlDir).map(d => os.Path(d, os.pwd))
+    val outDirs = (jsonDir.map(_ -> "--json-dir") ++ plotDir.map(_ -> "--plots") ++ htmlDir.map(_ -> "--html-dir"))
+      .map { case (d, o) => moire.files.SafeWrite.folderArg(d, o) }
     outDirs.foreach(moire.files.SafeWrite.checkFolder)
     // no report written over a recording or the model file
     val inputs = paths ++ modelFile.map(os.Path(_, os.pwd))

@@ -122,6 +122,14 @@ object SafeWrite {
     os.Path(given, os.pwd)
   }
 
+  /** An output folder's name as the user gave it (`option` names it): an empty one is refused (it would be the
+    * working folder, which the user did not name).
+    */
+  def folderArg(given: String, option: String): os.Path = {
+    if (given.trim.isEmpty) throw new FileError(s"$option: the folder's name is empty; give a folder (. for the working folder)")
+    os.Path(given, os.pwd)
+  }
+
   /** Refuses an output that is one of the inputs (also through links or another spelling of the path). */
   def refuseInputs(output: os.Path, inputs: Seq[os.Path]): Unit =
     inputs.find(i => i == output || (os.exists(i) && os.exists(output) && Files.isSameFile(i.toNIO, output.toNIO)))
