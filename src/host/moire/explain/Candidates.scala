@@ -61,15 +61,17 @@ final class Candidates(val engine: SignalEngine) {
   /** Each channel's residual sum of squares (every family's fit starts from it). */
   private lazy val yy = (sumSq(resS), sumSq(resC))
 
-  private def sub(a: Array[Double], b: Array[Double]) = { val o = new Array[Double](n); var i = 0; while (i < n) { o(i) = a(i) - b(i); i += 1 }; o }
-  /** The noise model of repaired data `r` against the prediction (ps, pc): with white noise from the sums of squares
-    * alone (no residual arrays: a long record's candidate would hold two more).
+  /** a less the prediction of the channel whose repaired data and residual are (rp, rr). */
+  private def sub(a: Array[Double], rp: Array[Double], rr: Array[Double]) = Doubles.tabulate(n)(i => a(i) - (rp(i) - rr(i)))
+  /** The noise model of repaired data `r` against the engine's prediction (read where it is needed): with white noise
+    * from the sums of squares alone (no residual arrays: a long record's candidate would hold two more).
     */
-  private def repairedNoise(r: Repaired, ps: Array[Double], pc: Array[Double]): Noise = {
+  private def repairedNoise(r: Repaired): Noise = {
     val slopes = noiseSlopes(spec)
-    if (slopes != null) return Noise.fit(sub(r.s, ps), sub(r.c, pc), slopes, r)
-    def ss(a: Array[Double], p: Array[Double]) = Par.sum(n) { (lo, hi) => var z = 0.0; var i = lo; while (i < hi) { val d = a(i) - p(i); z += d * d; i += 1 }; z }
-    Noise.fromSums(ss(r.s, ps), ss(r.c, pc), n, r)
+    if (slopes != null) return Noise.fit(sub(r.s, repS, resS), sub(r.c, repC, resC), slopes, r)
+    def ss(a: Array[Double], rp: Array[Double], rr: Array[Double]) =
+      Par.sum(n) { (lo, hi) => var z = 0.0; var i = lo; while (i < hi) { val d = a(i) - (rp(i) - rr(i)); z += d * d; i += 1 }; z }
+    Noise.fromSums(ss(r.s, repS, resS), ss(r.c, repC, resC), n, r)
   }
 
   def all(onStep: () => Unit): Seq[Cand] = {
@@ -489,9 +491,8 @@ final class Candidates(val engine: SignalEngine) {
   private def faultCand(f: Fault): Option[Cand] = {
     if (spec.faults.exists(g => g.ch == f.ch && g.bit == f.bit)) return None
     val sp = spec.copy(faults = spec.faults :+ f)
-    val (ps, pc) = (predS, predC)
-    val r = repair(sp, ps, pc)
-    val nz = repairedNoise(r, ps, pc)
+    val r = repair(sp)
+    val nz = repairedNoise(r)
     val p = Map("bit" -> f.bit.toDouble) ++ (if (f.stuckAt >= 0) Map("stuck_at" -> f.stuckAt.toDouble) else Map("bridged_to" -> f.bridgedTo.toDouble))
     val (u, where) = (p.map { case (k, _) => k -> 0.0 }, s"code histogram: ${if (f.ch == 0) "sin" else "cos"} channel, bit ${f.bit}")
     Some(Cand(AdcBitFault.name, if (f.ch == 0) "sin" else "cos", sp, nz.m2ll, 1, p, u, where))
@@ -500,9 +501,8 @@ final class Candidates(val engine: SignalEngine) {
   /** Saturation below the ADC rails: a pile-up of samples at one extreme code the model exceeds. */
   def clips(): Seq[Cand] = {
     val out = Seq.newBuilder[Cand]
-    val (ps, pc) = (predS, predC)
-    val raw = repair(spec, ps, pc, censor = false)
-    for ((y, p, ch) <- Seq((raw.s, ps, 0), (raw.c, pc, 1)) if !spec.clips.exists(_.ch == ch)) {
+    val raw = repair(spec, censor = false)
+    for ((y, rp, rr, ch) <- Seq((raw.s, repS, resS, 0), (raw.c, repC, resC, 1)) if !spec.clips.exists(_.ch == ch)) {
       var hi = Double.NegativeInfinity; var lo = Double.PositiveInfinity; var i = 0
       while (i < n) { if (y(i) > hi) hi = y(i); if (y(i) < lo) lo = y(i); i += 1 }
       // the samples at each extreme code, and those the model puts beyond it
@@ -510,7 +510,8 @@ final class Candidates(val engine: SignalEngine) {
         var i = a
         while (i < b) {
           if (y(i) >= hi - 0.5 * lsb) m(0) += 1; if (y(i) <= lo + 0.5 * lsb) m(1) += 1
-          if (p(i) > hi + lsb) m(2) += 1; if (p(i) < lo - lsb) m(3) += 1
+          val p = rp(i) - rr(i)
+          if (p > hi + lsb) m(2) += 1; if (p < lo - lsb) m(3) += 1
           i += 1
         }
       }
@@ -521,8 +522,8 @@ final class Candidates(val engine: SignalEngine) {
       if (useHi || useLo) {
         val c = Clip(ch, if (useLo) lo else Double.NegativeInfinity, if (useHi) hi else Double.PositiveInfinity)
         val sp = spec.copy(clips = spec.clips :+ c)
-        val r = repair(sp, ps, pc)
-        val nz = repairedNoise(r, ps, pc)
+        val r = repair(sp)
+        val nz = repairedNoise(r)
         // clip levels are read off the codes: uncertain by half an LSB
         val pp = Seq("low_fs" -> c.lo, "high_fs" -> c.hi).filter(!_._2.isInfinite).toMap
         val (u, where) = (pp.map { case (k, _) => k -> 0.5 * lsb }, s"code histogram: ${if (ch == 0) "sin" else "cos"} channel pile-up at the extremes")

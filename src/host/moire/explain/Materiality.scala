@@ -22,12 +22,61 @@ object Materiality {
     * regular stride would sample a line at a multiple of fs / stride at the same phase, e.g. at its zeros): the
     * `Quantile` point of |b - a|.
     */
-  def size(aS: Array[Double], aC: Array[Double], bS: Array[Double], bC: Array[Double], stride: Int): Double = {
-    val n = aS.length
-    val at = if (stride <= 1) null else Candidates.spread(n, stride)
-    val m = if (at == null) n else at.length
+  def size(aS: Array[Double], aC: Array[Double], bS: Array[Double], bC: Array[Double], stride: Int): Double =
+    size(Points(aS.length, stride, i => aS(i), i => aC(i)), Points(aS.length, stride, i => bS(i), i => bC(i)))
+
+  /** Both channels' values of a prediction at the points the size reads (one at a random place in each block of
+    * `stride`, all samples when it is 1): a trial keeps these, not two arrays of the record's length.
+    */
+  final case class Points(stride: Int, s: Array[Double], c: Array[Double])
+  object Points {
+    def apply(n: Int, stride: Int, fs: Int => Double, fc: Int => Double): Points = {
+      val at = if (stride <= 1) null else Candidates.spread(n, stride)
+      val m = if (at == null) n else at.length
+      val s = new Array[Double](m); val c = new Array[Double](m); var q = 0
+      while (q < m) { val i = if (at == null) q else at(q); s(q) = fs(i); c(q) = fc(i); q += 1 }
+      Points(stride, s, c)
+    }
+    /** A linear term's own part of the prediction (its columns times `beta`) at the size's points, its columns made
+      * a block at a time by `gen` (the blocks `ColGen.whole` makes: the same numbers, without the whole columns).
+      */
+    def ofTerm(n: Int, stride: Int, gen: ColGen, beta: Array[Double]): Points = {
+      val at = if (stride <= 1) null else Candidates.spread(n, stride)
+      val m = if (at == null) n else at.length
+      val s = new Array[Double](m); val c = new Array[Double](m)
+      Par.blocks(n, Gram.Block) { (lo, hi) =>
+        val out = Array.tabulate(2 * gen.size)(p => if ((if (p % 2 == 0) gen.sin else gen.cos)(p / 2)) new Array[Double](hi - lo) else null)
+        gen.fill(lo, hi, out, 0)
+        // the points in [lo, hi): point q lies in [q stride, (q + 1) stride)
+        var q = if (at == null) lo else lo / stride
+        val end = if (at == null) hi else math.min(m, (hi - 1) / stride + 1)
+        while (q < end) {
+          val i = if (at == null) q else at(q)
+          if (i >= lo && i < hi) {
+            var vs = 0.0; var vc = 0.0; var k = 0
+            while (k < gen.size) {
+              val b = beta(k)
+              if (b != 0) { val a = out(2 * k); val d = out(2 * k + 1); if (a != null) vs += b * a(i - lo); if (d != null) vc += b * d(i - lo) }
+              k += 1
+            }
+            s(q) = vs; c(q) = vc
+          }
+          q += 1
+        }
+      }
+      Points(stride, s, c)
+    }
+    /** The engine's prediction at the size's points for its record. */
+    def of(e: SignalEngine): Points = Points(e.n, strideOf(e.n), e.predSAt, e.predCAt)
+  }
+  /** The stride of the size's points for a record of n samples: about 200,000 points. */
+  def strideOf(n: Int): Int = math.max(1, n / 200000)
+
+  /** The size of the change from prediction `a` to `b` at the same points. */
+  def size(a: Points, b: Points): Double = {
+    val m = a.s.length
     val d = new Array[Double](2 * m); var k = 0; var q = 0
-    while (q < m) { val i = if (at == null) q else at(q); d(k) = math.abs(bS(i) - aS(i)); d(k + 1) = math.abs(bC(i) - aC(i)); k += 2; q += 1 }
+    while (q < m) { d(k) = math.abs(b.s(q) - a.s(q)); d(k + 1) = math.abs(b.c(q) - a.c(q)); k += 2; q += 1 }
     if (k == 0) 0.0 else OrderStats.of(k, d(_), Seq(math.min(k - 1, (Quantile * k).toInt)))(0)
   }
 }

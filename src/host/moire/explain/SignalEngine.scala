@@ -86,6 +86,9 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
   /** The model's prediction (not stored: the repaired data less the residual), as new arrays. */
   def predS: Array[Double] = Doubles.tabulate(n)(i => repS(i) - resS(i))
   def predC: Array[Double] = Doubles.tabulate(n)(i => repC(i) - resC(i))
+  /** The prediction at sample i, read where it is needed (no array of the record's length). */
+  @inline final def predSAt(i: Int): Double = _repS(i) - resS(i)
+  @inline final def predCAt(i: Int): Double = _repC(i) - resC(i)
   def params: Int = 6 + traj.params + 2 + spec.extraParams
   def bic: Double = noise.m2ll + params * lnN
   /** The rms of the residual over the samples in the fit. */
@@ -452,23 +455,22 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
     * (ADC rails or a clipping effect) are censored: their value is replaced by the prediction and `cens` holds
     * the distance from the prediction up to the level (NaN where not censored), for the Tobit likelihood.
     */
-  def repair(sp: ModelSpec, ps: => Array[Double], pc: => Array[Double], censor: Boolean = true): Repaired = {
+  def repair(sp: ModelSpec, censor: Boolean = true): Repaired = {
     val adc = rec.adc
-    // the predictions are made only when a channel has something to repair
-    lazy val predSin = ps; lazy val predCos = pc
-    def one(ch: Int, y: Array[Double], codes: Array[Int], pred: => Array[Double]): (Array[Double], Array[Double]) = {
+    // the prediction (the repaired data less the residual) read where it is needed, not made as an array
+    def one(ch: Int, y: Array[Double], codes: Array[Int], rp: Array[Double], rr: Array[Double]): (Array[Double], Array[Double]) = {
       val fl = sp.faults.filter(_.ch == ch); val cl = sp.clips.filter(_.ch == ch)
       val lo = (railLo +: cl.map(_.lo)).max; val hi = (railHi +: cl.map(_.hi)).min
       val ex = _excluded
       val pre = if (fl.isEmpty) null else preimages(fl)
-      // the sample's value with the faults undone (the preimage of its code closest to the prediction)
-      @inline def value(i: Int, p: Array[Double]): Double = {
+      // the sample's value with the faults undone (the preimage of its code closest to the prediction p)
+      @inline def value(i: Int, p: Double): Double = {
         var v = y(i)
         if (pre != null) {
           val c0 = codes(i)
           val cands = if (c0 >= 0 && c0 < pre.length) pre(c0) else preimagesOf(fl, c0)
           var best = c0; var bestD = Double.MaxValue; var q = 0
-          while (q < cands.length) { val c = cands(q); val d = math.abs(adc.fromPins(c) * lsb - p(i)); if (d < bestD) { bestD = d; best = c }; q += 1 }
+          while (q < cands.length) { val c = cands(q); val d = math.abs(adc.fromPins(c) * lsb - p); if (d < bestD) { bestD = d; best = c }; q += 1 }
           if (best != c0) v = adc.fromPins(best) * lsb
         }
         v
@@ -478,24 +480,34 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
       if (pre == null && ex == null && !censor) return (y, null)
       if (pre == null && ex == null && Par.sum(n) { (a, b) => var k = 0.0; var i = a; while (i < b) { if (censored(y(i))) k += 1; i += 1 }; k } == 0)
         return (y, null)
-      val p = pred
-      val out = new Array[Double](n); val cen = new Array[Double](n)
+      val out = new Array[Double](n)
+      // the censored samples' distances, NaN elsewhere: made when the first one is met (most repairs censor none)
+      var cen: Array[Double] = null
+      val lock = new Object
+      def cenArray(): Array[Double] = lock.synchronized {
+        if (cen == null) { val a = new Array[Double](n); java.util.Arrays.fill(a, Double.NaN); cen = a }
+        cen
+      }
       val counts = Par.sums(n, 2) { (a, b, m) =>
+        var mine: Array[Double] = null
         var i = a
         while (i < b) {
-          cen(i) = Double.NaN
-          if (ex != null && ex(i)) { out(i) = p(i); m(0) += 1 }
+          val p = rp(i) - rr(i)
+          if (ex != null && ex(i)) { out(i) = p; m(0) += 1 }
           else {
             val v = value(i, p)
-            if (censored(v)) { cen(i) = if (v >= hi - 0.5 * lsb) v - 0.5 * lsb - p(i) else p(i) - (v + 0.5 * lsb); out(i) = p(i); m(1) += 1 }
+            if (censored(v)) {
+              if (mine == null) mine = cenArray()
+              mine(i) = if (v >= hi - 0.5 * lsb) v - 0.5 * lsb - p else p - (v + 0.5 * lsb); out(i) = p; m(1) += 1
+            }
             else { out(i) = v; if (v != y(i)) m(0) += 1 }
           }
           i += 1
         }
       }
-      if (counts(0) == 0 && counts(1) == 0) (y, null) else (out, if (counts(1) == 0) null else cen)
+      if (counts(0) == 0 && counts(1) == 0) (y, null) else (out, if (counts(1) == 0) null else lock.synchronized(cen))
     }
-    val (a, ca) = one(0, ys, rec.sin, predSin); val (b, cb) = one(1, yc, rec.cos, predCos)
+    val (a, ca) = one(0, ys, rec.sin, _repS, resS); val (b, cb) = one(1, yc, rec.cos, _repC, resC)
     Repaired(a, b, ca, cb)
   }
 
@@ -522,7 +534,7 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
         })
         Laps("traj: evalTraj")(evalTraj())
       }
-      if (it > 0) Laps("refit: repair") { val r = repair(spec, predS, predC); _repS = r.s; _repC = r.c; _cens = r } // the predictions are garbage after
+      if (it > 0) Laps("refit: repair") { val r = repair(spec); _repS = r.s; _repC = r.c; _cens = r }
       Laps("refit: fundamentals")(setFundamentals())
       val cols = groups()
       _sol = Laps("refit: solve")(cols.solve(repS, repC))

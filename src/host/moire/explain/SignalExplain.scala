@@ -116,6 +116,7 @@ object SignalExplain {
       // identifiability are checked on the candidate; replication on the halves after the joint refit that accepts it
       // (before it, the trajectory and the default part still hold part of the effect, differently in each half).
       val passing = ok.filter(c => dbic(c) > Threshold)
+      if (SignalEngine.debug) System.err.println(s"round ${round + 1}: passing " + passing.sortBy(-dbic(_)).map(c => f"${c.effect}/${c.channel} ${dbic(c)}%.0f").mkString(", ") + s"; all ${all.size}")
       // A pile-up at one code is direct evidence in the histogram that no smooth effect makes: such repairs go first. An effect that yields to a look-alike predicting the same signal (within the
       // threshold) stands back for it: it is tried after the look-alike (when that fails its tests); the finding names it.
       def yields(c: Cand) = Effects(c.effect).exists(f => passing.exists(o => o != c && f.yieldsTo(c, o, e) && dbic(o) > dbic(c) - Threshold))
@@ -132,7 +133,7 @@ object SignalExplain {
           case None =>
             tries += 1
             val snapB = Snapshot.of(s"before ${c.effect}", e.resS, e.resC)
-            val rmsB = e.rms; val predBS = e.predS; val predBC = e.predC
+            val rmsB = e.rms; val predB = Materiality.Points.of(e)
             // the located departures the effect claims, before and after (only those tests are run)
             val claims = Effects(c.effect).map(_.claims).getOrElse(Nil)
             def claimedNow = if (claims.isEmpty) Nil else Locate.all(e, w => claims.exists(w.startsWith))
@@ -147,7 +148,7 @@ object SignalExplain {
             // smaller is too small to matter, whatever its halves say (and their refits are not needed)
             val fx = Effects(c1.effect)
             lazy val size = fx.map(_.size(c1, e)).filter(!_.isNaN).orElse(termSize(e, prev))
-              .getOrElse(Materiality.size(predBS, predBC, e.predS, e.predC, math.max(1, e.n / 200000)))
+              .getOrElse(Materiality.size(predB, Materiality.Points.of(e)))
             // the noise is the floor from neighbouring samples: the model's residual still holds the effects not yet fitted
             lazy val floor = materiality.floor(e.lsb, Adequacy.floor(e))
             // no finding when the joint refit does not lower the criterion, the effect is negligible or does not replicate
@@ -212,13 +213,25 @@ object SignalExplain {
     Result(report, e, before, shown, rerun)
   }
 
-  /** A new linear term's own part of the prediction (its columns times its coefficients): its size. */
+  /** A new linear term's own part of the prediction (its columns times its coefficients): its size. Read at the
+    * size's points only; a term made a block at a time is never made whole (at 20 M samples its columns and the two
+    * parts took 1.3 GB).
+    */
   private def termSize(e: SignalEngine, prev: ModelSpec): Option[Double] =
     e.spec.terms.diff(prev.terms).headOption.filter(e.termIndex.contains).map { t =>
-      val cols = e.termCols(t); val at = e.termIndex(t); val b = e.sol.beta.slice(at, at + cols.size)
-      val ps = new Array[Double](e.n); val pc = new Array[Double](e.n)
-      LinearFit.addTo(ps, cols, b, sinCh = true, 1.0); LinearFit.addTo(pc, cols, b, sinCh = false, 1.0)
-      Materiality.size(new Array[Double](e.n), new Array[Double](e.n), ps, pc, math.max(1, e.n / 200000))
+      val st = Materiality.strideOf(e.n); val at = e.termIndex(t)
+      val part = e.termGen(t).filter(_ => !FitPath.isReference) match {
+        case Some(g) => Materiality.Points.ofTerm(e.n, st, g, e.sol.beta.slice(at, at + g.size))
+        case None =>
+          val cols = e.termCols(t); val b = e.sol.beta.slice(at, at + cols.size)
+          def of(sinCh: Boolean)(i: Int): Double = {
+            var v = 0.0; var k = 0
+            while (k < cols.size) { val a = if (sinCh) cols(k).s else cols(k).c; if (a != null && b(k) != 0) v += b(k) * a(i); k += 1 }
+            v
+          }
+          Materiality.Points(e.n, st, of(sinCh = true), of(sinCh = false))
+      }
+      Materiality.size(Materiality.Points(st, new Array[Double](part.s.length), new Array[Double](part.c.length)), part)
     }
 
   /** None when the located departures an effect claims (their chi-square or peak-to-mean, summed) fell from `before`
