@@ -47,6 +47,21 @@ final class Candidates(val engine: SignalEngine) {
       val made = LinearFamily(baseCols(s1, s2, c1, c2) ++ termCols(f), resS, resC, yy._1, yy._2)
       Option(families.putIfAbsent(f, made)).getOrElse(made)
     }
+    fromFamily(t, fam, ch)
+  }
+
+  /** A term that is linear once its nonlinear parameter is searched (a warm-up's time constant, a pickup's frequency)
+    * fitted with the default part: on a long record from the screening subsample's sums (`LinearSweep`), to be fitted
+    * again on all samples when it is significant there (`confirmed`); else on all samples.
+    */
+  def screenedLinear(t: Term): Option[Cand] = {
+    val idx = screenIdx
+    if (idx == null) linear(t).map(_._1)
+    else LinearSweep.of(e, Seq(t), yy._1, yy._2, idx).get(t).flatMap(f => fromFamily(t, f, "both")).map(_._1)
+  }
+
+  /** Term t, the variant on channel `ch`, from its family's sums. */
+  private def fromFamily(t: Term, fam: LinearFamily, ch: String): Option[(Cand, LinSol)] = {
     // the default part's columns as they are, the family's with the parts on the variant's channel
     def sin(j: Int) = j < 6 || ch != "cos"; def cos(j: Int) = j < 6 || ch != "sin"
     val use = fam.hasSin.indices.filter(j => (sin(j) && fam.hasSin(j)) || (cos(j) && fam.hasCos(j)))
@@ -81,9 +96,10 @@ final class Candidates(val engine: SignalEngine) {
     val white = !spec.slopeNoise && cens.censS == null && cens.censC == null && !FitPath.isReference
     val screen = white && n > Candidates.ScreenAbove
     yy // made here, not in a search side by side (a lazy value's lock held across work on all cores: see `binned`)
+    screenIdx = if (screen) Candidates.spread(n, n / Candidates.ScreenSamples) else null
     if (white) {
       val t0 = System.nanoTime()
-      val idx = if (screen) Candidates.spread(n, n / Candidates.ScreenSamples) else null
+      val idx = screenIdx
       LinearSweep.of(e, LinearSweep.terms(effects.Harmonic.Orders), yy._1, yy._2, idx).foreach { case (t, f) => families.put(t, f) }
       if (timing) System.err.println(f"candidate linear-sweep ${(System.nanoTime() - t0) / 1e6}%.0f ms")
     }
@@ -105,26 +121,32 @@ final class Candidates(val engine: SignalEngine) {
     if (screen) confirmed(found.toSeq.flatten, (n / Candidates.ScreenSamples).toDouble) else found.toSeq.flatten
   }
 
+  /** The screening subsample of a long record's round (null: candidates are fitted on all samples). */
+  @volatile private var screenIdx: Array[Int] = null
+
   /** The linear candidates screened on a subsample of every `st`-th sample's worth: those that lower BIC there (on the
-    * subsample's own count) fitted again on all samples (their families in one more pass), the rest dropped (kept
-    * with no gain: not significant on a million samples, they are not material on more). Others as they are.
+    * subsample's own count) fitted again on all samples (their families in one more pass; a warm-up or a pickup line
+    * at its searched time constant or frequency on its own), the rest dropped (kept with no gain: not significant on a
+    * million samples, they are not material on more). Others as they are.
     */
   private def confirmed(cands: Seq[Cand], st: Double): Seq[Cand] = {
     val base = e.noise.m2ll
-    def term(c: Cand) = c.spec.terms.lastOption.filter(t => c.spec.terms.size == spec.terms.size + 1 && LinearFamily.of(t).isDefined)
+    def term(c: Cand) = c.spec.terms.lastOption.filter(t => c.spec.terms.size == spec.terms.size + 1 && Candidates.screened(t))
     // the candidate's gain on the subsample (its estimate is the subsample's scaled by st) against its own criterion there
     def significant(c: Cand) = (base - c.m2ll) / st - c.extraK * math.log(2.0 * n / st) > SignalExplain.Threshold
     val need = cands.filter(c => term(c).isDefined && significant(c)).flatMap(term)
     // the subsample's families go (a later `linear` makes its own on all samples); those needed, from all samples
     families.clear()
     if (need.nonEmpty) Laps("candidates: confirmed on all samples") {
-      val fams = need.map(t => LinearFamily.of(t).get._1).distinct
-      if (sys.props.contains("moire.timing")) System.err.println(s"candidate confirm ${fams.mkString(", ")}")
-      LinearSweep.of(e, fams, yy._1, yy._2).foreach { case (t, f) => families.put(t, f) }
+      val fams = need.flatMap(t => LinearFamily.of(t).map(_._1)).distinct
+      if (sys.props.contains("moire.timing")) System.err.println(s"candidate confirm ${need.distinct.mkString(", ")}")
+      if (fams.nonEmpty) LinearSweep.of(e, fams, yy._1, yy._2).foreach { case (t, f) => families.put(t, f) }
     }
     cands.map { c =>
       term(c) match {
-        case Some(t) if need.contains(t) => linear(t).map(_._1).getOrElse(c.copy(m2ll = base))
+        // the fit on all samples; what only the search knows (a warm-up's time constant's uncertainty) is kept
+        case Some(t) if need.contains(t) => Laps("candidates: confirmed on all samples")(linear(t)).map(x => if (LinearFamily.of(t).isDefined) x._1 else x._1.copy(unc = c.unc ++ x._1.unc.filter(!_._2.isNaN)))
+          .getOrElse(c.copy(m2ll = base))
         case Some(_) => c.copy(m2ll = base)
         case None => c
       }
@@ -409,7 +431,7 @@ final class Candidates(val engine: SignalEngine) {
     val lt = minimize(search, lo, hi, grid = 12, golden = 12)
     val sdLog = curvatureSd(search, lt, 0.05)
     val tau = math.pow(10, lt)
-    linear(Term.Warmup(tau)).map { case (c, _) => c.copy(unc = c.unc + ("time_constant_s" -> tau * math.log(10) * sdLog)) }
+    screenedLinear(Term.Warmup(tau)).map(c => c.copy(unc = c.unc + ("time_constant_s" -> tau * math.log(10) * sdLog)))
   }
 
   /** Fixed-frequency pickup: strongest line of the residual spectrum, refined by least squares. */
@@ -437,7 +459,7 @@ final class Candidates(val engine: SignalEngine) {
       -(a * a + b * b + c * c + d * d)
     }
     val hz = minimize(power, (k0 - 1) * bin, (k0 + 1) * bin, grid = 8, golden = 16)
-    linear(Term.Interference(hz)).map(_._1)
+    screenedLinear(Term.Interference(hz))
   }
 
   def faults(): Seq[Cand] = {
@@ -561,6 +583,11 @@ object Candidates {
   private val screen = new scala.util.DynamicVariable((1 << 22, 1 << 20))
   /** Runs `body` with screening above `above` samples on `samples` (a test's short records). */
   def screening[A](above: Int, samples: Int)(body: => A): A = screen.withValue((above, samples))(body)
+
+  /** Terms a long record's round fits on the screening subsample first: the linear families' and those linear once
+    * searched (a warm-up, a pickup line).
+    */
+  def screened(t: Term): Boolean = LinearFamily.of(t).isDefined || (t match { case _: Term.Warmup | _: Term.Interference => true; case _ => false })
 
   /** Samples up to which the searches run side by side (beyond, their columns would hold too much of the heap at once). */
   val SideBySide: Int = 1 << 22

@@ -1,7 +1,8 @@
 package moire.explain
 
 /** The linear candidates whose columns are a function of the sample (the harmonics of the fringe, the ADCs'
-  * nonlinearity, crosstalk, drift, a contrast change along the travel) fitted from one pass over the samples: at each
+  * nonlinearity, crosstalk, drift, a contrast change along the travel; a warm-up or a pickup line once its time constant
+  * or frequency is searched) fitted from one pass over the samples: at each
   * sample every family's columns are made, laid out by rows for a chunk of samples, and their products with the default
   * part's columns, with each other and with the residual summed per channel, in blocks on all cores. No column of the
   * record's length is made. Each family's sums are the ones `LinearFamily` takes from its columns (`LinearSweepSpec`:
@@ -18,7 +19,8 @@ object LinearSweep {
     case _: Term.Harm => (Array(true, true, false, false), Array(false, false, true, true))
     case _: Term.Inl => (Array(true, true), Array(true, true))
     case Term.Crosstalk => (Array(true, false), Array(false, true))
-    case _ => (Array(true, false, true, false), Array(false, true, false, true)) // drift, contrast
+    case _: Term.Interference => (Array(true, true, false, false), Array(false, false, true, true))
+    case _ => (Array(true, false, true, false), Array(false, true, false, true)) // drift, contrast, warm-up
   }
 
   /** Samples laid out row by row before their products are summed (rows of a chunk stay in the core's cache). */
@@ -87,6 +89,7 @@ object LinearSweep {
     val rows = if (idx == null) n else idx.length
     val sums = Par.sums(rows, mS + mC + 2, Gram.Block) { (lo, hi, acc) =>
       val v = new Array[Double](2 * colAt(nf)) // the families' column values at a sample: (sin part, cos part) per column
+      val sc = new Array[Double](2)
       val bufS = Array.ofDim[Double](4 + fromS.length, Chunk); val bufC = Array.ofDim[Double](4 + fromC.length, Chunk)
       var c0 = lo
       while (c0 < hi) {
@@ -121,6 +124,11 @@ object LinearSweep {
                 v(at + 2) = (4 * p * p * p - 3 * p) * lsb; v(at + 3) = (4 * q * q * q - 3 * q) * lsb
               case Term.Crosstalk =>
                 val w = twoPi * freq(i); v(at) = vci * w; v(at + 3) = vsi * w
+              case Term.Interference(hz) =>
+                val t = hz * i / fs; Turns.sinCos(t - math.floor(t), sc, 0)
+                v(at) = sc(0); v(at + 2) = sc(1); v(at + 5) = sc(0); v(at + 7) = sc(1)
+              case Term.Warmup(tau) =>
+                val w = math.exp(-i / fs / tau); v(at) = w; v(at + 3) = w; v(at + 4) = usi * w; v(at + 7) = uci * w
               case t =>
                 val x = if (t == Term.Drift) (i - drift) / fs else phase(i) - meanPhase
                 v(at) = x; v(at + 3) = x; v(at + 4) = usi * x; v(at + 7) = uci * x
