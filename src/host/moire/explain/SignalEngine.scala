@@ -425,10 +425,11 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
   }
 
   /** Position along the travel in fringe periods, centred on the record's mean position. */
-  def travel: Array[Double] = {
-    val m = Par.sum(n) { (lo, hi) => var s = 0.0; var i = lo; while (i < hi) { s += phase(i); i += 1 }; s } / n
-    Doubles.tabulate(n)(i => phase(i) - m)
-  }
+  def travel: Array[Double] = { val m = travelMean; Doubles.tabulate(n)(i => phase(i) - m) }
+  /** The record's mean position (fringe periods): `travel` is the phase less it. */
+  def travelMean: Double = Par.sum(n) { (lo, hi) => var s = 0.0; var i = lo; while (i < hi) { s += phase(i); i += 1 }; s } / n
+  /** The lowest and highest value of `travel`, read where it is needed (no array of the record's length). */
+  def travelRange: (Double, Double) = { val m = travelMean; Doubles.range(n)(i => phase(i) - m) }
 
   /** exp(-t / tau) from the first sample: the part of a warm-up still to come. */
   def warmupBasis(tau: Double): Array[Double] = Doubles.tabulate(n)(i => math.exp(-i / fs / tau))

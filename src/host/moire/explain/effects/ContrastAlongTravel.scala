@@ -36,16 +36,15 @@ object ContrastAlongTravel extends Effect {
     * (what a linear contrast change or a low-pass on a ramp makes), as a chi-square in sd: local structure only.
     */
   def amplitudeAlongTravel(e: SignalEngine): Double = {
-    val x = e.travel; var lo = Double.MaxValue; var hi = -Double.MaxValue
-    var i = 0
-    while (i < x.length) { val v = x(i); if (v < lo) lo = v; if (v > hi) hi = v; i += 1 }
+    // the position along the travel read where it is needed (`e.travel` without its array)
+    val mean = e.travelMean; val (lo, hi) = e.travelRange
     if (!(hi > lo)) return 0.0
     val vS = e.noise.varS; val vC = e.noise.varC
     // per bin of the position: sum r u / var and sum u^2 / var of both channels, in blocks on all cores
     val sums = Par.sums(e.n, 2 * Bins) { (a, z, m) =>
       var i = a
       while (i < z) {
-        val b = math.min(Bins - 1, ((x(i) - lo) / (hi - lo) * Bins).toInt)
+        val b = math.min(Bins - 1, ((e.phase(i) - mean - lo) / (hi - lo) * Bins).toInt)
         m(b) += e.resS(i) * e.us(i) / vS + e.resC(i) * e.uc(i) / vC; m(Bins + b) += e.us(i) * e.us(i) / vS + e.uc(i) * e.uc(i) / vC; i += 1
       }
     }
@@ -74,7 +73,7 @@ object ContrastAlongTravel extends Effect {
        else Seq(() => knots(c.engine).toSeq.flatMap(k => c.linear(Term.ContrastSpline(k)).map(_._1))))
 
   /** The span of positions the record covers (fringe periods). */
-  def travelSpan(e: SignalEngine): Double = { val x = e.travel; x.max - x.min }
+  def travelSpan(e: SignalEngine): Double = { val (lo, hi) = e.travelRange; hi - lo }
 
   /** The position along the travel as a fraction 0..1 of its range, and the range (fringe periods). */
   private def unit(e: SignalEngine): (Array[Double], Double) = {
@@ -191,7 +190,7 @@ object ContrastAlongTravel extends Effect {
         s"against position: amplitude, ${k.size} knots", "both")
     case _ =>
       val names = params.map(_.name)
-      val span = { val x = e.travel; x.max - x.min }
+      val span = travelSpan(e)
       (names.zip(b).toMap + ("travel_periods" -> span), names.zip(sd).toMap + ("travel_periods" -> 0.0), "against position: offset and amplitude", "both")
   }
   override def lookAlikes(f: Finding, e: SignalEngine): Seq[String] = TimeOrTravel.lookAlikes(e, Warmup.name + " or " + Drift.name)
