@@ -708,8 +708,12 @@ object Noise {
     def count(c: Array[Double]) = if (c == null) 0 else c.count(!_.isNaN)
     if (slope == null) return fromSums(ss(rs), ss(rc), n, cens)
     val (ds, dc) = slope
-    var vs = ss(rs) / n; var vc = ss(rc) / n; var j2 = 0.0
-    // scoring steps until the estimates stop changing (at most 8; the reference path takes all 8)
+    val white0 = (ss(rs) / n, ss(rc) / n)
+    var vs = white0._1; var vc = white0._2; var j2 = 0.0
+    // scoring steps until the estimates stop changing (at most 8; the reference path takes all 8): the white variances
+    // by their own size, the slope's by the variance it adds at the mean square slope against the white one's (near
+    // zero its own relative change is noise and never settles)
+    val dd = if (FitPath.isReference) 0.0 else (ss(ds) + ss(dc)) / (2.0 * n)
     var it = 0; var moved = true
     while (it < 8 && (moved || FitPath.isReference)) {
       it += 1
@@ -733,9 +737,13 @@ object Noise {
         Array(m(2)(0), m(2)(1), m(2)(2), 0, m(2)(3)), Array(0.0, 0, 0, 1, 0))
       val x = Trajectory.solve4(a)
       vs = math.max(floor, x(0)); vc = math.max(floor, x(1)); j2 = math.max(0, x(2))
+      // a slope term the data want negative: the fit on the boundary is white noise (with nothing censored, each
+      // channel's mean square), not the intercepts of the negative slope's fit (it went back and forth about zero)
+      if (!(x(2) > 0) && cs == null && cc == null && !FitPath.isReference) { vs = math.max(floor, white0._1); vc = math.max(floor, white0._2) }
       def rel(a: Double, b: Double) = math.abs(a - b) > 1e-13 * math.max(math.abs(a), math.abs(b))
-      moved = rel(vs, vs0) || rel(vc, vc0) || rel(j2, j20)
+      moved = rel(vs, vs0) || rel(vc, vc0) || math.abs(j2 - j20) * dd > 1e-13 * math.max(vs, vc)
     }
+    if (SignalEngine.debug) System.err.println(f"noise fit: $it scoring steps, jitter2 $j2%.4g")
     var m2 = Par.sum(n) { (lo, hi) =>
       var m = 0.0; var i = lo
       while (i < hi) {
