@@ -713,7 +713,7 @@ object Noise {
     // scoring steps until the estimates stop changing (at most 8; the reference path takes all 8): the white variances
     // by their own size, the slope's by the variance it adds at the mean square slope against the white one's (near
     // zero its own relative change is noise and never settles)
-    val dd = if (FitPath.isReference) 0.0 else (ss(ds) + ss(dc)) / (2.0 * n)
+    lazy val dd = if (FitPath.isReference) 0.0 else (ss(ds) + ss(dc)) / (2.0 * n)
     var it = 0; var moved = true
     while (it < 8 && (moved || FitPath.isReference)) {
       it += 1
@@ -741,8 +741,11 @@ object Noise {
       // channel's mean square), not the intercepts of the negative slope's fit (it went back and forth about zero)
       if (!(x(2) > 0) && cs == null && cc == null && !FitPath.isReference) { vs = math.max(floor, white0._1); vc = math.max(floor, white0._2) }
       def rel(a: Double, b: Double) = math.abs(a - b) > 1e-13 * math.max(math.abs(a), math.abs(b))
-      moved = rel(vs, vs0) || rel(vc, vc0) || math.abs(j2 - j20) * dd > 1e-13 * math.max(vs, vc)
+      moved = rel(vs, vs0) || rel(vc, vc0) || (j2 != j20 && math.abs(j2 - j20) * dd > 1e-13 * math.max(vs, vc))
     }
+    // white noise on the boundary, nothing censored: -2 ln L from the sums (the pass below would add the same)
+    if (j2 == 0 && vs == white0._1 && vc == white0._2 && cs == null && cc == null && !FitPath.isReference)
+      return Noise(vs, vc, 0, n * (math.log(2 * math.Pi * vs) + 1) + n * (math.log(2 * math.Pi * vc) + 1))
     if (SignalEngine.debug) System.err.println(f"noise fit: $it scoring steps, jitter2 $j2%.4g")
     var m2 = Par.sum(n) { (lo, hi) =>
       var m = 0.0; var i = lo
