@@ -8,10 +8,10 @@ import java.util.concurrent.{ExecutionException, Executors, Future, ThreadFactor
   * and the ones before it are done.
   */
 object Batch {
-  /** The fit's peak heap per sample of a long recording (docs/explain.md "Speed and memory": 232 MB per million at
-    * 4 M samples, 163 at 20 M; a short one's fixed part is small beside the heap).
+  /** The fit's peak heap per sample of a long recording (docs/explain.md "Speed and memory": 239-255 MB per million
+    * at 4 M samples, 137 at 20 M; a short one's fixed part is small beside the heap).
     */
-  val HeapPerSample = 240L
+  val HeapPerSample = 260L
   /** The share of the heap (`Runtime.maxMemory`) the running files may take together. */
   val HeapShare = 0.7
 
