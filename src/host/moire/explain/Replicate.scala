@@ -89,19 +89,11 @@ object Replicate {
   private def target(e: SignalEngine, t: Term): (Array[Double], Array[Double]) = {
     val ts = e.resS.clone(); val tc = e.resC.clone(); val at = e.termIndex(t)
     e.termGen(t).filter(_ => !FitPath.isReference) match {
-      // the term made a block at a time (its whole columns would take two or four more arrays of the record's length),
-      // each sample getting the columns' parts in column order as `LinearFit.addTo` adds them
+      // the term made a block at a time where it is added (its whole columns would take two or four more arrays of
+      // the record's length), as the fit adds a streamed group: the same numbers as `LinearFit.addTo`
       case Some(g) =>
-        val b = e.sol.beta.slice(at, at + g.size)
-        Par.blocks(e.n, Gram.Block) { (lo, hi) =>
-          val out = Array.tabulate(2 * g.size)(p => if ((if (p % 2 == 0) g.sin else g.cos)(p / 2)) new Array[Double](hi - lo) else null)
-          g.fill(lo, hi, out, 0)
-          var k = 0
-          while (k < g.size) {
-            for ((o, a) <- Seq((ts, out(2 * k)), (tc, out(2 * k + 1))) if a != null && b(k) != 0) { var i = lo; while (i < hi) { o(i) += b(k) * a(i - lo); i += 1 } }
-            k += 1
-          }
-        }
+        new ColGroups(IndexedSeq(() => IndexedSeq.empty[Col], () => e.termCols(t)), keep = false, IndexedSeq(false, false), IndexedSeq(null, g))
+          .addToBoth(ts, tc, e.sol.beta.slice(at, at + g.size), 1.0)
       case None =>
         val cols = e.termCols(t); val b = e.sol.beta.slice(at, at + cols.size)
         LinearFit.addTo(ts, cols, b, sinCh = true, 1.0); LinearFit.addTo(tc, cols, b, sinCh = false, 1.0)
