@@ -101,9 +101,12 @@ object LinearFit {
   */
 final class ColGen(val sin: Array[Boolean], val cos: Array[Boolean], val fill: (Int, Int, Array[Array[Double]], Int) => Unit) {
   def size: Int = sin.length
+  /** Arrays `fill` writes `len` samples into: column j's sin part at 2 j, its cos part at 2 j + 1 (null where none). */
+  def buffers(len: Int): Array[Array[Double]] =
+    Array.tabulate(2 * size)(p => if ((if (p % 2 == 0) sin else cos)(p / 2)) new Array[Double](len) else null)
   /** The columns over all n samples, as arrays (the blocks on all cores). */
   def whole(n: Int): IndexedSeq[Col] = {
-    val out = Array.tabulate(2 * size)(p => if ((if (p % 2 == 0) sin else cos)(p / 2)) new Array[Double](n) else null)
+    val out = buffers(n)
     Par.blocks(n, Gram.Block)((lo, hi) => fill(lo, hi, out, lo))
     (0 until size).map(j => Col(out(2 * j), out(2 * j + 1)))
   }
@@ -156,7 +159,7 @@ final class ColGroups(make: IndexedSeq[() => IndexedSeq[Col]], keep: Boolean, he
       if (gn == null) for ((col, j) <- all(g).zipWithIndex) {
         if (sinCh) s(at(g) + j) = slice(col.s, lo, hi); if (cosCh) c(at(g) + j) = slice(col.c, lo, hi)
       } else {
-        val out = Array.tabulate(2 * gn.size)(p => if ((if (p % 2 == 0) gn.sin else gn.cos)(p / 2)) new Array[Double](hi - lo) else null)
+        val out = gn.buffers(hi - lo)
         gn.fill(lo, hi, out, 0)
         for (j <- 0 until gn.size) { if (sinCh) s(at(g) + j) = out(2 * j); if (cosCh) c(at(g) + j) = out(2 * j + 1) }
       }

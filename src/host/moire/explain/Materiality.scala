@@ -18,13 +18,6 @@ object Materiality {
   /** The quantile of |change of the prediction| that is the effect's size (robust to a few samples). */
   val Quantile = 0.99
 
-  /** The size of the change from prediction `a` to `b` (from one sample at a random place in each block of `stride`: a
-    * regular stride would sample a line at a multiple of fs / stride at the same phase, e.g. at its zeros): the
-    * `Quantile` point of |b - a|.
-    */
-  def size(aS: Array[Double], aC: Array[Double], bS: Array[Double], bC: Array[Double], stride: Int): Double =
-    size(Points(aS.length, stride, i => aS(i), i => aC(i)), Points(aS.length, stride, i => bS(i), i => bC(i)))
-
   /** Both channels' values of a prediction at the points the size reads (one at a random place in each block of
     * `stride`, all samples when it is 1): a trial keeps these, not two arrays of the record's length.
     */
@@ -45,7 +38,7 @@ object Materiality {
       val m = if (at == null) n else at.length
       val s = new Array[Double](m); val c = new Array[Double](m)
       Par.blocks(n, Gram.Block) { (lo, hi) =>
-        val out = Array.tabulate(2 * gen.size)(p => if ((if (p % 2 == 0) gen.sin else gen.cos)(p / 2)) new Array[Double](hi - lo) else null)
+        val out = gen.buffers(hi - lo)
         gen.fill(lo, hi, out, 0)
         // the points in [lo, hi): point q lies in [q stride, (q + 1) stride)
         var q = if (at == null) lo else lo / stride
@@ -72,7 +65,10 @@ object Materiality {
   /** The stride of the size's points for a record of n samples: about 200,000 points. */
   def strideOf(n: Int): Int = math.max(1, n / 200000)
 
-  /** The size of the change from prediction `a` to `b` at the same points. */
+  /** The size of the change from prediction `a` to `b` at the same points (one sample at a random place in each block
+    * of the stride: a regular stride would sample a line at a multiple of fs / stride at the same phase, e.g. at its
+    * zeros): the `Quantile` point of |b - a|.
+    */
   def size(a: Points, b: Points): Double = {
     val m = a.s.length
     val d = new Array[Double](2 * m); var k = 0; var q = 0
