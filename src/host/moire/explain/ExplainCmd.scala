@@ -249,8 +249,7 @@ object ExplainCmd {
     }.getOrElse(benchRecording(samples, dir / "bench.csv"))
     val mb = os.size(file) / 1048576.0
     val maxMb = Runtime.getRuntime.maxMemory / 1048576.0
-    // the recording is returned, so that the collection at the end counts it
-    val (n, readS, readPeak) = { val (r, s, p) = peakHeap { val r = Recording.read(file); checkSignals(file, r); r }; (r.length, s, p) }
+    val (n, readS, readPeak) = readChecked(file)
     def perM(peak: Double) = peak / (n / 1e6)
     say(f"explain-bench: read and checked $n rows ($mb%.0f MB file) in $readS%.1f s; peak heap in use $readPeak%.0f MB of $maxMb%.0f MB " +
       f"(${perM(readPeak)}%.1f MB per million samples)")
@@ -262,6 +261,15 @@ object ExplainCmd {
       f"peak heap in use $peak%.0f MB of $maxMb%.0f MB (${perM(peak)}%.1f MB per million samples); ${Runtime.getRuntime.availableProcessors} cores; " +
       s"findings: ${rep.findings.map(_.effect).mkString(", ")}")
     Laps.lines.foreach(l => say(s"explain-bench: $l"))
+  }
+
+  /** The rows of a recording read and checked, the seconds and the peak heap it took. The recording is returned to
+    * `peakHeap`, so that the collection at the end counts it, and dropped with this method's frame (a local of the
+    * caller's frame would hold it, its heap counted again in the explain that follows).
+    */
+  private def readChecked(file: os.Path): (Int, Double, Double) = {
+    val (r, s, p) = peakHeap { val r = Recording.read(file); checkSignals(file, r); r }
+    (r.length, s, p)
   }
 
   /** CPU seconds this process has used (all threads), NaN where the JVM does not say. */

@@ -72,9 +72,10 @@ object Identify {
 
   /** Correlation of the position along the travel with time. */
   def correlation(e: SignalEngine): Double = {
-    val x = e.travel; val tc = e.tc
+    // the travel and the time from the record's middle (`e.travel`, `e.tc`) read where they are needed
+    val m = e.travelMean; val mid = 0.5 * (e.n - 1)
     var sxy = 0.0; var sxx = 0.0; var syy = 0.0; var i = 0
-    while (i < e.n) { sxy += x(i) * tc(i); sxx += x(i) * x(i); syy += tc(i) * tc(i); i += 1 }
+    while (i < e.n) { val x = e.phase(i) - m; val t = (i - mid) / e.fs; sxy += x * t; sxx += x * x; syy += t * t; i += 1 }
     if (sxx > 0 && syy > 0) sxy / math.sqrt(sxx * syy) else 0.0
   }
 }

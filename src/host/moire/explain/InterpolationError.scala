@@ -36,7 +36,8 @@ object InterpolationError {
 
   def of(rec: Recording, e: SignalEngine): InterpolationError = {
     val n = rec.length; val stride = math.max(1, n / MaxPoints); val m = (n + stride - 1) / stride
-    val ys = rec.values(rec.sin); val yc = rec.values(rec.cos)
+    // the engine's measured values when it fitted this recording (two arrays of the record's length fewer)
+    val (ys, yc) = if (e.rec eq rec) (e.ys, e.yc) else (rec.values(rec.sin), rec.values(rec.cos))
     val el = EllipseFit.fit(yc, ys, n)
     val cpp = rec.meta.get("counts_per_period").flatMap(_.toDoubleOption).filter(_ > 0)
     val (unit, per) = cpp.fold(("milliperiod", 1000.0))(c => ("counts", c))

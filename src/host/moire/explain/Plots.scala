@@ -146,10 +146,12 @@ object Plots {
         save(c, path)
       case effects.PlotKind.Slope =>
         val c = chart(title, "|signal slope| (full scale per microsecond)", "residual rms (LSB)")
-        val (ds, dc) = e.slopes(); val hi = (ds.map(math.abs).max max dc.map(math.abs).max) * 1e-6 + 1e-12
+        // each channel's slope against time (as `SignalEngine.slopes`), read where it is needed
+        def ds(i: Int) = math.abs(e.vs(i) * 2 * math.Pi * e.freq(i)); def dc(i: Int) = math.abs(e.vc(i) * 2 * math.Pi * e.freq(i))
+        val hi = Doubles.range(n)(i => math.max(ds(i), dc(i)))._2 * 1e-6 + 1e-12
         for (s <- Seq(b, a)) {
-          val (x, y) = binned(j => math.abs(ds(j * s.stride)) * 1e-6, j => s.resS(j) / lsb, s.size, 0, hi, 24, rms = true); line(c, s"sin, ${s.label}", x, y)
-          val (x2, y2) = binned(j => math.abs(dc(j * s.stride)) * 1e-6, j => s.resC(j) / lsb, s.size, 0, hi, 24, rms = true); line(c, s"cos, ${s.label}", x2, y2)
+          val (x, y) = binned(j => ds(j * s.stride) * 1e-6, j => s.resS(j) / lsb, s.size, 0, hi, 24, rms = true); line(c, s"sin, ${s.label}", x, y)
+          val (x2, y2) = binned(j => dc(j * s.stride) * 1e-6, j => s.resC(j) / lsb, s.size, 0, hi, 24, rms = true); line(c, s"cos, ${s.label}", x2, y2)
         }
         save(c, path)
       case kind @ (effects.PlotKind.Time | effects.PlotKind.Position) =>
@@ -181,8 +183,7 @@ object Plots {
         save(c, path)
       case effects.PlotKind.Level =>
         val c = chart(title, "predicted value (full scale)", "mean residual (LSB)")
-        val (ps, pc) = (e.predS, e.predC)
-        for (s <- Seq(b, a); (r, p, ch) <- Seq((s.resS, ps, "sin"), (s.resC, pc, "cos"))) {
+        for (s <- Seq(b, a); (r, p, ch) <- Seq[(Array[Double], Int => Double, String)]((s.resS, e.predSAt(_), "sin"), (s.resC, e.predCAt(_), "cos"))) {
           val (x, y) = binned(j => p(j * s.stride), j => r(j) / lsb, s.size, -1, 1, 128); line(c, s"$ch, ${s.label}", x, y)
         }
         save(c, path)

@@ -85,47 +85,33 @@ object Replicate {
     Seq(java.util.Arrays.copyOf(out(0), k(0)), java.util.Arrays.copyOf(out(1), k(1)))
   }
 
-  /** The residual with the term's own fitted part added back (what the term alone has to explain). */
-  private def target(e: SignalEngine, t: Term): (Array[Double], Array[Double]) = {
-    val ts = e.resS.clone(); val tc = e.resC.clone(); val at = e.termIndex(t)
-    e.termGen(t).filter(_ => !FitPath.isReference) match {
-      // the term made a block at a time where it is added (its whole columns would take two or four more arrays of
-      // the record's length), as the fit adds a streamed group: the same numbers as `LinearFit.addTo`
-      case Some(g) =>
-        new ColGroups(IndexedSeq(() => IndexedSeq.empty[Col], () => e.termCols(t)), keep = false, IndexedSeq(false, false), IndexedSeq(null, g))
-          .addToBoth(ts, tc, e.sol.beta.slice(at, at + g.size), 1.0)
-      case None =>
-        val cols = e.termCols(t); val b = e.sol.beta.slice(at, at + cols.size)
-        LinearFit.addTo(ts, cols, b, sinCh = true, 1.0); LinearFit.addTo(tc, cols, b, sinCh = false, 1.0)
-    }
-    (ts, tc)
-  }
-
   /** An interference line: on each half its frequency (searched near the full-record value) and its amplitude on each
     * channel. A line whose frequency or amplitude differs between the halves is not a fixed-frequency pickup.
     */
   def interferenceWhy(e: SignalEngine, t: Term.Interference, halves: Seq[Array[Int]], what: String): Option[String] = {
-    val (ys, yc) = target(e, t)
     val cands = new Candidates(e)
     val at = e.termIndex(t); val b = e.sol.beta
     val floorA = ModelRel * 0.5 * (math.hypot(b(at), b(at + 1)) + math.hypot(b(at + 2), b(at + 3)))
     val ests = halves.map { idx =>
       val m = idx.length; val pts = Candidates.spread(m, math.max(1, m / 50000))
+      // the target (the residual with the line's fitted part added back) at the search's points
+      val (ys, yc) = { val w = 2 * math.Pi * t.hz / e.fs; val k = pts.length; val a = new Array[Double](k); val c = new Array[Double](k); var q = 0
+        while (q < k) { val i = idx(pts(q)); val sx = math.sin(w * i); val cx = math.cos(w * i); a(q) = e.resS(i) + b(at) * sx + b(at + 1) * cx; c(q) = e.resC(i) + b(at + 2) * sx + b(at + 3) * cx; q += 1 }
+        (a, c) }
       def power(hz: Double): Double = {
         var a = 0.0; var b = 0.0; var c = 0.0; var d = 0.0; var k = 0
         while (k < pts.length) {
           val i = idx(pts(k)); val x = 2 * math.Pi * hz * i / e.fs; val sx = math.sin(x); val cx = math.cos(x)
-          a += ys(i) * sx; b += ys(i) * cx; c += yc(i) * sx; d += yc(i) * cx; k += 1
+          a += ys(k) * sx; b += ys(k) * cx; c += yc(k) * sx; d += yc(k) * cx; k += 1
         }
         -(a * a + b * b + c * c + d * d)
       }
       val half = e.fs / m
       val hz = cands.minimize(power, t.hz - half, t.hz + half, grid = 8, golden = 16)
-      val cols = e.baseCols(e.s1, e.s2, e.c1, e.c2) ++ e.termCols(Term.Interference(hz))
-      val sol = LinearFit.solve(cols, ys, yc, idx)
+      val (sol, rss) = lineFit(e, t, hz, idx)
       if (!sol.ok) None
       else {
-        val v = LinearFit.rss(cols, sol.beta, ys, yc, idx) / (2.0 * m)
+        val v = rss / (2.0 * m)
         val as = math.hypot(sol.beta(6), sol.beta(7)); val ac = math.hypot(sol.beta(8), sol.beta(9))
         // Cramer-Rao bound of a sinusoid's frequency in white noise, both channels' power together, for the samples the
         // search used (its subsample spans the half, so the bound grows as the root of m over their number)
@@ -135,6 +121,47 @@ object Replicate {
       }
     }
     agree(ests, what, "frequency (Hz) and amplitudes (full scale)")
+  }
+
+  /** The default part and a line at hz fitted on the samples idx to the residual with the pickup t's fitted part added
+    * back, and the fit's residual sum of squares: the columns and the target made a block of samples at a time where
+    * they are read (whole, they took four arrays of the record's length: at 20 M samples the run's peak heap).
+    */
+  private def lineFit(e: SignalEngine, t: Term.Interference, hz: Double, idx: Array[Int]): (LinSol, Double) = {
+    val at = e.termIndex(t); val b = e.sol.beta; val k = 10; val gs = k * (k + 1) / 2 + k
+    val w0 = 2 * math.Pi * t.hz / e.fs; val w = 2 * math.Pi * hz / e.fs
+    val sums = Par.sums(idx.length, gs + 1, Gram.Block) { (lo, hi, out) =>
+      val len = hi - lo
+      val one = Array.fill(len)(1.0); val a1 = new Array[Double](len); val a2 = new Array[Double](len); val b1 = new Array[Double](len)
+      val b2 = new Array[Double](len); val ls = new Array[Double](len); val lc = new Array[Double](len)
+      val y1 = new Array[Double](len); val y2 = new Array[Double](len)
+      // both lines by rotation along a run of consecutive samples, from sin and cos at its first
+      val r0 = (math.sin(w0), math.cos(w0)); val r = (math.sin(w), math.cos(w))
+      var s0 = 0.0; var c0 = 0.0; var s1 = 0.0; var c1 = 0.0; var q = 0
+      while (q < len) {
+        val i = idx(lo + q)
+        if (q == 0 || i != idx(lo + q - 1) + 1) { s0 = math.sin(w0 * i); c0 = math.cos(w0 * i); s1 = math.sin(w * i); c1 = math.cos(w * i) }
+        else {
+          val t0 = s0 * r0._2 + c0 * r0._1; c0 = c0 * r0._2 - s0 * r0._1; s0 = t0
+          val t1 = s1 * r._2 + c1 * r._1; c1 = c1 * r._2 - s1 * r._1; s1 = t1
+        }
+        a1(q) = e.s1(i); a2(q) = e.s2(i); b1(q) = e.c1(i); b2(q) = e.c2(i); ls(q) = s1; lc(q) = c1
+        y1(q) = e.resS(i) + b(at) * s0 + b(at + 1) * c0; y2(q) = e.resC(i) + b(at + 2) * s0 + b(at + 3) * c0
+        q += 1
+      }
+      // the columns as `baseCols` and the pickup's `termCols` order them
+      Gram.block(Array(one, a1, a2, null, null, null, ls, lc, null, null), Array(null, null, null, one, b1, b2, null, null, ls, lc),
+        y1, y2, null, 0, len, out)
+      var yy = 0.0; q = 0
+      while (q < len) { yy += y1(q) * y1(q) + y2(q) * y2(q); q += 1 }
+      out(gs) = yy
+    }
+    val (g, r) = Gram.unpack(sums.take(gs), k)
+    val sol = LinearFit.normal(g, r)
+    // y'y - 2 b'X'y + b'X'X b
+    var rss = sums(gs)
+    for (i <- 0 until k) { rss -= 2 * sol.beta(i) * r(i); for (j <- 0 until k) rss += sol.beta(i) * g(i)(j) * sol.beta(j) }
+    (sol, math.max(0.0, rss))
   }
 
   /** Contiguous halves of the record. */
