@@ -104,7 +104,7 @@ object LinearSweep {
             def harm(u: Double, w: Double, part: Int): Unit = {
               val a = math.sqrt(u * u + w * w)
               if (a > 0) {
-                val s = u / a; val c = w / a; var re = 1.0; var im = 0.0; var j = 0
+                val ia = 1 / a; val s = u * ia; val c = w * ia; var re = 1.0; var im = 0.0; var j = 0
                 while (j < maxOrder) {
                   val r2 = re * c - im * s; im = re * s + im * c; re = r2; j += 1
                   val f = orderAt(j)

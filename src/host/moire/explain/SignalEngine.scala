@@ -18,8 +18,14 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
     */
   val coarseBits: Int = {
     val m = (1 << rec.adc.bits) - 1
-    var or = 0; var i = 0
-    while (i < n) { or |= (rec.adc.fromPins(rec.sin(i)) & m) | (rec.adc.fromPins(rec.cos(i)) & m); i += 1 }
+    // the codes' bits OR-ed per block on all cores, then the blocks'
+    val k = (n + Par.Block - 1) / Par.Block; val ors = new Array[Int](k)
+    Par.blocks(n) { (lo, hi) =>
+      var or = 0; var i = lo
+      while (i < hi) { or |= (rec.adc.fromPins(rec.sin(i)) & m) | (rec.adc.fromPins(rec.cos(i)) & m); i += 1 }
+      ors(lo / Par.Block) = or
+    }
+    val or = ors.foldLeft(0)(_ | _)
     if (or == 0) 0 else math.min(rec.adc.bits - 4, Integer.numberOfTrailingZeros(or))
   }
   /** The quantization step in full-scale units. */
@@ -237,7 +243,12 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
     range
   }
   /** Fringe periods travelled over the record (both directions counted). */
-  def travelPeriods: Double = { var s = 0.0; var i = 0; while (i < n) { s += math.abs(freq(i)); i += 1 }; s / fs }
+  def travelPeriods: Double = {
+    if (travelAt != phaseCount) { var s = 0.0; var i = 0; while (i < n) { s += math.abs(freq(i)); i += 1 }; travel0 = s / fs; travelAt = phaseCount }
+    travel0
+  }
+  // made once per phase (a round's candidates each ask)
+  private var travel0 = 0.0; private var travelAt = -1L
   def fMin: Double = speedRange._1
   def fMax: Double = speedRange._2
 
@@ -336,7 +347,7 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
         @inline def harm(ui: Double, vi: Double, o1: Array[Double], o2: Array[Double], q: Int): Unit = {
           val a = math.sqrt(ui * ui + vi * vi)
           if (a > 0) {
-            val s = ui / a; val c = vi / a; var re = 1.0; var im = 0.0; var j = 0
+            val ia = 1 / a; val s = ui * ia; val c = vi * ia; var re = 1.0; var im = 0.0; var j = 0
             while (j < k) { val r2 = re * c - im * s; im = re * s + im * c; re = r2; j += 1 }
             o1(q) = a * im; o2(q) = a * re
           } else { o1(q) = 0; o2(q) = 0 }
@@ -450,6 +461,8 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
     preTables.getOrElseUpdate(fl, Array.tabulate(if (rec.adc.bits <= 16) 1 << rec.adc.bits else 0)(c => preimagesOf(fl, c)))
   }
   private val preTables = scala.collection.mutable.Map.empty[Seq[Fault], Array[Array[Int]]]
+  /** Each code's value (full scale), for the codes the preimage tables cover. */
+  private lazy val codeValues: Array[Double] = Array.tabulate(if (rec.adc.bits <= 16) 1 << rec.adc.bits else 0)(c => rec.adc.fromPins(c) * lsb)
   private def preimagesOf(fl: Seq[Fault], code: Int): Array[Int] = fl.foldLeft(Seq(code))((cs, f) => cs.flatMap(f.preimages)).distinct.toArray
 
   /** Measured values with faults undone (closest preimage to the prediction); samples at a saturation level
@@ -464,15 +477,18 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
       val lo = (railLo +: cl.map(_.lo)).max; val hi = (railHi +: cl.map(_.hi)).min
       val ex = _excluded
       val pre = if (fl.isEmpty) null else preimages(fl)
+      val vals = if (pre == null) null else codeValues
       // the sample's value with the faults undone (the preimage of its code closest to the prediction p)
       @inline def value(i: Int, p: Double): Double = {
         var v = y(i)
         if (pre != null) {
           val c0 = codes(i)
-          val cands = if (c0 >= 0 && c0 < pre.length) pre(c0) else preimagesOf(fl, c0)
-          var best = c0; var bestD = Double.MaxValue; var q = 0
-          while (q < cands.length) { val c = cands(q); val d = math.abs(adc.fromPins(c) * lsb - p); if (d < bestD) { bestD = d; best = c }; q += 1 }
-          if (best != c0) v = adc.fromPins(best) * lsb
+          val table = c0 >= 0 && c0 < pre.length
+          val cands = if (table) pre(c0) else preimagesOf(fl, c0)
+          @inline def of(c: Int) = if (table) vals(c) else adc.fromPins(c) * lsb
+          var best = c0; var bestV = 0.0; var bestD = Double.MaxValue; var q = 0
+          while (q < cands.length) { val c = cands(q); val cv = of(c); val d = math.abs(cv - p); if (d < bestD) { bestD = d; best = c; bestV = cv }; q += 1 }
+          if (best != c0) v = bestV
         }
         v
       }
@@ -530,7 +546,10 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
         def w(i: Int): Double = { val ww = gS(i) * gS(i) + gC(i) * gC(i); if (ww > 0) ww else 0.0 }
         def d(i: Int): Double = (resS(i) * gS(i) + resC(i) * gC(i)) / w(i) / (2 * math.Pi)
         Laps("traj: addFit")(traj match {
-          case t: Trajectory => t.addFitBy(d, w)
+          case t: Trajectory => t.addFitBy { (i, o) =>
+            val gs = gS(i); val gc = gC(i); val ww = gs * gs + gc * gc
+            if (ww > 0) { o(0) = (resS(i) * gs + resC(i) * gc) / ww / (2 * math.Pi); o(1) = ww } else { o(0) = 0.0; o(1) = 0.0 }
+          }
           case t => t.addFit(Doubles.tabulate(n)(i => if (w(i) > 0) d(i) else 0.0), Doubles.tabulate(n)(w))
         })
         Laps("traj: evalTraj")(evalTraj())

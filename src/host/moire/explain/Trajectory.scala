@@ -36,12 +36,15 @@ final class Trajectory(val n: Int, val len: Int, val fs: Double) extends PhaseTr
     }
 
   /** Adds the weighted least-squares cubic of `d` (periods) per segment; weight w (null = 1). */
-  def addFit(d: Array[Double], w: Array[Double]): Unit = addFitBy(d(_), if (w == null) _ => 1.0 else w(_))
+  def addFit(d: Array[Double], w: Array[Double]): Unit =
+    addFitBy { (i, o) => val p = if (w == null) 1.0 else w(i); o(1) = p; o(0) = if (p == 0) 0.0 else d(i) }
 
-  /** `addFit` of d(i) with weight w(i), read where they are needed (no arrays of the record's length). */
-  def addFitBy(d: Int => Double, w: Int => Double): Unit =
+  /** `addFit` of the phase difference and weight that `dw` writes for sample i into o(0) and o(1) (the difference is
+    * not read where the weight is 0), made where they are needed (no arrays of the record's length).
+    */
+  def addFitBy(dw: Trajectory.Residual): Unit =
     Par.each(nseg, n) { s =>
-      val m = Array.ofDim[Double](4, 5)
+      val m = Array.ofDim[Double](4, 5); val o = new Array[Double](2)
       val (a, b) = seg(s); val mid = 0.5 * (a + b - 1); val half = math.max(0.5, 0.5 * (b - a - 1))
       // the weighted sums of x^0..x^6 and of d x^0..x^3
       var x0 = 0.0; var x1 = 0.0; var x2 = 0.0; var x3 = 0.0; var x4 = 0.0; var x5 = 0.0; var x6 = 0.0
@@ -49,8 +52,9 @@ final class Trajectory(val n: Int, val len: Int, val fs: Double) extends PhaseTr
       val inv = 1 / half
       var i = a
       while (i < b) {
-        val x = (i - mid) * inv; val p0 = w(i)
-        val p1 = p0 * x; val p2 = p1 * x; val p3 = p2 * x; val p4 = p3 * x; val p5 = p4 * x; val p6 = p5 * x; val di = if (p0 == 0) 0.0 else d(i)
+        dw.at(i, o)
+        val x = (i - mid) * inv; val p0 = o(1)
+        val p1 = p0 * x; val p2 = p1 * x; val p3 = p2 * x; val p4 = p3 * x; val p5 = p4 * x; val p6 = p5 * x; val di = if (p0 == 0) 0.0 else o(0)
         x0 += p0; x1 += p1; x2 += p2; x3 += p3; x4 += p4; x5 += p5; x6 += p6
         y0 += p0 * di; y1 += p1 * di; y2 += p2 * di; y3 += p3 * di
         i += 1
@@ -66,6 +70,9 @@ final class Trajectory(val n: Int, val len: Int, val fs: Double) extends PhaseTr
 }
 
 object Trajectory {
+  /** A sample's phase difference (periods) and weight, written to o(0) and o(1). */
+  trait Residual { def at(i: Int, o: Array[Double]): Unit }
+
   /** Gaussian elimination with partial pivoting of a 4x5 augmented matrix (zero where singular). */
   def solve4(m: Array[Array[Double]]): Array[Double] = {
     val a = m.map(_.clone()); val n = 4
