@@ -292,6 +292,11 @@ class BadInputSpec extends AnyFlatSpec with Matchers {
   for (o <- Seq("--json-dir", "--plots", "--html-dir"))
     bad(s"an explain $o that is empty", s"$o: the folder's name is empty")("explain", good.toString, "--quiet", "--no-rtl", o, "")
   bad("an explain --html that is empty", "an output file's name is empty")("explain", good.toString, "--quiet", "--no-rtl", "--html", "")
+  // an empty output folder would be the working folder, which the user did not name
+  for (cmd <- Seq(Seq("emit"), Seq("emit-subdiv"), Seq("emit-datapath", "--design", "quadcomp"), Seq("emit-harmonic"), Seq("board", "de2-115"),
+                  Seq("cost", "--sweep"), Seq("explain-bench", "--samples", "250000"), Seq("calibrate", "--input", good.toString)))
+    bad(s"a ${cmd.head} --out that is empty", "--out: the folder's name is empty")(cmd ++ Seq("--out", ""): _*)
+  bad("a cost --keep that is empty", "--keep: the folder's name is empty")("cost", "--keep", "")
   bad("a simulate --out that is its --model", "is an input of this command", Seq(model))(
     "simulate", "--model", model.toString, "--out", model.toString, "--samples", "100")
   private val portLink = dir / "ttyLink"

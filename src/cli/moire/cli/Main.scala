@@ -48,7 +48,7 @@ object Main {
   @main(doc = "Write the SystemVerilog of one CORDIC configuration into a folder.")
   def emit(config: CordicConfig, @arg(doc = "output folder") out: String = "generated"): Unit = {
     val d = moire.designs.Designs.cordic(config.params)
-    val file = d.write(os.Path(out, os.pwd), Target.SystemVerilog).head
+    val file = d.write(folder(out), Target.SystemVerilog).head
     println(s"wrote $file (${d.topName}, latency ${d.latency.get} clocks)")
   }
 
@@ -65,8 +65,8 @@ object Main {
            @arg(doc = "sweep: comma-separated widths (default 12,16,20)") sweepWidths: String = "12,16,20",
            @arg(doc = "sweep: keep (n, b) with b - spread <= n <= b (default 4)") spread: Int = 4,
            @arg(doc = "sweep: skip the measured error of the bit-accurate model") noMeasure: Flag = Flag()): Unit =
-    if (sweep.value) CostCmd.sweep(variants, sweepIterations, sweepWidths, spread, out, timeout, !noMeasure.value, json)
-    else CostCmd.run(config, design, json, timeout, keep)
+    if (sweep.value) CostCmd.sweep(variants, sweepIterations, sweepWidths, spread, folderName(out), timeout, !noMeasure.value, json)
+    else CostCmd.run(config, design, json, timeout, keep.map(folderName(_, "--keep")))
 
   @main(doc = "Fmax, utilisation and critical path on the LFE5U-85F (yosys synth_ecp5, nextpnr-ecp5) at speed grades 6 and 8; exit code 1 when a design misses its target.")
   def timing(config: CordicConfig,
@@ -83,7 +83,7 @@ object Main {
     if (!TimingCmd.run(config, design, all.value, speeds, targetMhz, router, inContext.value, json, markdown, cache, timeout)) sys.exit(1)
 
   @main(doc = "Write the SystemVerilog of the subdivider with its ADC front end into a folder.")
-  def emitSubdiv(config: SubdivConfig, @arg(doc = "output folder") out: String = "generated"): Unit = println(SubdivCmd.run(config, out))
+  def emitSubdiv(config: SubdivConfig, @arg(doc = "output folder") out: String = "generated"): Unit = println(SubdivCmd.run(config, folderName(out)))
 
   @main(doc = "Reproduce the papers' accuracy tables; exit code 0 only when every row holds.")
   def accuracy(@arg(doc = "also write the rows as JSON to this file") json: Option[String] = None): Unit = {
@@ -143,12 +143,12 @@ object Main {
                    @arg(doc = "CORDIC iterations n (default 16)") iterations: Int = 16,
                    @arg(doc = "CORDIC data bits b, the fraction of the sine (default 18)") dataBits: Int = 18,
                    @arg(doc = "output folder (default generated)") out: String = "generated"): Unit =
-    CalibrateCmd.emit(lines, subdivision, harmonics, iterations, dataBits, out)
+    CalibrateCmd.emit(lines, subdivision, harmonics, iterations, dataBits, folderName(out))
 
   @main(doc = "Write the SystemVerilog of a registered design at its default parameters (see designs).")
   def emitDatapath(@arg(doc = "a design name: quadcomp | adapt | corrected | harmonic | ... (see designs)") design: String,
                    @arg(doc = "output folder (default generated)") out: String = "generated"): Unit =
-    println(DatapathCmd.run(design, out))
+    println(DatapathCmd.run(design, folderName(out)))
 
   @main(doc = "List the registered designs (emit-datapath, cost, timing, replay and board read this registry).")
   def designs(): Unit = DatapathCmd.list.foreach(println)
@@ -162,7 +162,7 @@ object Main {
                 @arg(doc = "output folder (default calibration)") out: String = "calibration"): Unit =
     CalibrateCmd.run(input, harmonics, maxOrder.map { k =>
       if (k < 0) throw new UsageError(s"--max-order must be at least 1 (or left out for the default), got $k"); k
-    }.getOrElse(-1), lines, subdivision, out)
+    }.getOrElse(-1), lines, subdivision, folderName(out))
 
   @main(doc = "Write a moire-recording v1 file from the physics model (default part plus named effects).")
   def simulate(@arg(doc = "output CSV file") out: String,
@@ -200,7 +200,7 @@ object Main {
   def explainBench(@arg(doc = "samples in the recording (default 1000000)") samples: Int = 1000000,
                    @arg(doc = "folder for the recording, JSON and plots (default: a temporary folder)") out: Option[String] = None,
                    @arg(doc = "explain this moire-recording v1 file instead of a simulated one (--samples is then ignored)") recording: Option[String] = None): Unit =
-    moire.explain.ExplainCmd.bench(samples, out, recording, println(_))
+    moire.explain.ExplainCmd.bench(samples, out.map(folderName(_)), recording, println(_))
 
   @main(doc = "Write a board project: the board's top in Verilog inside its vendor project, and the command to run next.")
   def board(@arg(doc = "board name, one of the boards below (also accepted as the first word after board)") name: String,
@@ -223,7 +223,7 @@ object Main {
       BoardCmd.checkBoard(name)
       val p = BoardCmd.params(name, design, adcClockHz, adcFormat, decimation, baud, frameRecords, fifoDepth, glitchFilter, counts, clockSource,
         clockHz, lines, harmonics)
-      moire.designs.BoardProject.run(name, p, os.Path(out.getOrElse(s"generated/$name"), os.pwd)).foreach(println)
+      moire.designs.BoardProject.run(name, p, out.fold(os.Path(s"generated/$name", os.pwd))(folder(_))).foreach(println)
     } catch { case e: BoardCmd.BadOption => throw new UsageError(e.getMessage) }
   }
 
@@ -278,7 +278,7 @@ object Main {
               @arg(doc = "grating period in um: positions and speeds in um") periodUm: Option[Double] = None,
               @arg(doc = "grating lines per revolution: positions in degrees and arcsec") linesPerRev: Option[Double] = None,
               @arg(doc = "volts at ADC full scale 1.0 (AD9226 at 2 Vpp span: 1): amplitudes in volts") fullScaleV: Option[Double] = None): Unit =
-    moire.monitor.MonitorCmd.run(moire.monitor.MonitorCmd.Options(port, replay, simulate.value, effect, baud, decimation, bind, httpPort, out,
+    moire.monitor.MonitorCmd.run(moire.monitor.MonitorCmd.Options(port, replay, simulate.value, effect, baud, decimation, bind, httpPort, folderName(out),
       moire.monitor.Scale(countsPerPeriod, periodUm, linesPerRev, fullScaleV)), println(_), System.err.println(_))
 
   @main(doc = "Run a recording's ADC codes through the generated RTL (Verilator); see replay --help.")
@@ -291,6 +291,10 @@ object Main {
   def commandNames: Seq[String] = ParserForMethods(this).mains.value.map(_.name(mainargs.Util.kebabCaseNameMapper))
 
   /** `help CMD` and `CMD --help`: the command's options with their defaults. */
+  /** An output folder option as given: an empty name is refused (it would be the working folder, not named). */
+  private def folder(given: String, option: String = "--out"): os.Path = moire.files.SafeWrite.folderArg(given, option)
+  private def folderName(given: String, option: String = "--out"): String = { folder(given, option); given }
+
   private def commandHelp(mains: Seq[mainargs.MainData[Any, Main.type]], cmd: String): Int =
     mains.find(_.name(mainargs.Util.kebabCaseNameMapper) == cmd) match {
       case None => System.err.println(s"moire: '$cmd' is not a command (moire --help lists them)"); 2

@@ -13,11 +13,7 @@ object Identifiable {
   val Confounded: Set[String] = effects.Effects.signals.filter(e => e.confoundedWithMotion && e.searched).map(_.name).toSet
 
   /** Fringe periods one trajectory segment spans (the travel over the record divided by the segments). */
-  def periodsPerSegment(e: SignalEngine): Double = {
-    var s = 0.0; var i = 0
-    while (i < e.n) { s += math.abs(e.freq(i)); i += 1 }
-    s / e.fs / e.traj.nseg
-  }
+  def periodsPerSegment(e: SignalEngine): Double = e.travelPeriods / e.traj.nseg
 
   /** True when the motion is free and too flexible within a period to tell distortion from it. */
   def motionConfounded(e: SignalEngine): Boolean = e.reference.isEmpty && periodsPerSegment(e) < MinPeriodsPerSegment
