@@ -189,9 +189,10 @@ final class Candidates(val engine: SignalEngine) {
       }
     } else Par.sums(cnt, 20) { (lo, hi, m) =>
       val o = new Array[Double](4); val sc = new Array[Double](2); var q = lo
+      val ref = FitPath.isReference // a thread-local lookup: once a block, not at every sample
       while (q < hi) {
         val k = q * stride; val i = if (idx == null) k else idx(k)
-        if (FitPath.isReference) { val a = angle(i); sc(0) = math.sin(a); sc(1) = math.cos(a) } else Turns.sinCos(turn(i), sc, 0)
+        if (ref) { val a = angle(i); sc(0) = math.sin(a); sc(1) = math.cos(a) } else Turns.sinCos(turn(i), sc, 0)
         resp(freq(i), sc(0), sc(1), o)
         acc(m, 0, o(0), o(1), repS(i) - termS(i))
         acc(m, 10, o(2), o(3), repC(i) - termC(i))

@@ -87,6 +87,7 @@ object LinearSweep {
     }
     val (fromS, pairsS) = plan(onS, 0); val (fromC, pairsC) = plan(onC, 1)
     val rows = if (idx == null) n else idx.length
+    val nOrders = orders.size // a list's size is a walk along it: not at every sample
     val sums = Par.sums(rows, mS + mC + 2, Gram.Block) { (lo, hi, acc) =>
       val v = new Array[Double](2 * colAt(nf)) // the families' column values at a sample: (sin part, cos part) per column
       val sc = new Array[Double](2)
@@ -110,11 +111,11 @@ object LinearSweep {
                   val f = orderAt(j)
                   if (f >= 0) { val at = 2 * colAt(f) + 4 * part; v(at + part) = a * im; v(at + 2 + part) = a * re }
                 }
-              } else { var f = 0; while (f < orders.size) { val at = 2 * colAt(f) + 4 * part; v(at + part) = 0; v(at + 2 + part) = 0; f += 1 } }
+              } else { var f = 0; while (f < nOrders) { val at = 2 * colAt(f) + 4 * part; v(at + part) = 0; v(at + 2 + part) = 0; f += 1 } }
             }
             harm(usi, vsi, 0); harm(uci, vci, 1)
           }
-          var f = orders.size
+          var f = nOrders
           while (f < nf) {
             val at = 2 * colAt(f)
             fams(f) match {
