@@ -46,6 +46,32 @@ object Gram {
     }
   }
 
+  /** `block`'s sums over the rows [lo, hi) of columns read where they are: column k's row i at as(k)(i - sa(k)) (and
+    * ac, sc for the cos channel), the data at ys(i), yc(i). The same numbers as `block` on copies of the rows.
+    */
+  private[explain] def blockAt(as: Array[Array[Double]], sa: Array[Int], ac: Array[Array[Double]], sc: Array[Int], ys: Array[Double],
+                               yc: Array[Double], lo: Int, hi: Int, out: Array[Double]): Unit = {
+    val k = as.length
+    var q = 0; var i = 0
+    while (i < k) {
+      var j = 0
+      while (j <= i) { out(q) = dotAt(as(i), sa(i), as(j), sa(j), lo, hi) + dotAt(ac(i), sc(i), ac(j), sc(j), lo, hi); q += 1; j += 1 }
+      out(q) = dotAt(as(i), sa(i), ys, 0, lo, hi) + dotAt(ac(i), sc(i), yc, 0, lo, hi); q += 1
+      i += 1
+    }
+  }
+
+  /** `dot` of a and b over the rows [from, to), row t at a(t - sa) and b(t - sb). */
+  private def dotAt(a: Array[Double], sa: Int, b: Array[Double], sb: Int, from: Int, to: Int): Double = {
+    if (a == null || b == null) return 0.0
+    var s0 = 0.0; var s1 = 0.0; var s2 = 0.0; var s3 = 0.0
+    // the rows as indices of a; b's are a's shifted by d
+    var t = from - sa; val end = to - sa; val end4 = t + ((to - from) & ~3); val d = sa - sb
+    while (t < end4) { s0 += a(t) * b(t + d); s1 += a(t + 1) * b(t + 1 + d); s2 += a(t + 2) * b(t + 2 + d); s3 += a(t + 3) * b(t + 3 + d); t += 4 }
+    while (t < end) { s0 += a(t) * b(t + d); t += 1 }
+    (s0 + s1) + (s2 + s3)
+  }
+
   /** The reference path: each pair's products over all rows in turn, on one thread. */
   private def plain(cols: IndexedSeq[Col], ys: Array[Double], yc: Array[Double], idx: Array[Int]): (Array[Array[Double]], Array[Double]) = {
     def dot(a: Array[Double], b: Array[Double]): Double =

@@ -104,6 +104,14 @@ final class ColGen(val sin: Array[Boolean], val cos: Array[Boolean], val fill: (
   /** Arrays `fill` writes `len` samples into: column j's sin part at 2 j, its cos part at 2 j + 1 (null where none). */
   def buffers(len: Int): Array[Array[Double]] =
     Array.tabulate(2 * size)(p => if ((if (p % 2 == 0) sin else cos)(p / 2)) new Array[Double](len) else null)
+  /** `buffers` for a block that is read before the thread makes its next one: the thread's last ones when of the same
+    * length (`fill` writes all of them), else new ones.
+    */
+  def blockBuffers(len: Int): Array[Array[Double]] = {
+    val b = pool.get()
+    if (b != null && b.exists(a => a != null && a.length == len)) b else { val m = buffers(len); pool.set(m); m }
+  }
+  private val pool = new ThreadLocal[Array[Array[Double]]]
   /** The columns over all n samples, as arrays (the blocks on all cores). */
   def whole(n: Int): IndexedSeq[Col] = {
     val out = buffers(n)
@@ -140,31 +148,36 @@ final class ColGroups(make: IndexedSeq[() => IndexedSeq[Col]], keep: Boolean, he
   def solve(ys: Array[Double], yc: Array[Double]): LinSol = {
     val all = layout()
     if (!streamed) { val (g, r) = Gram.of(all.flatten, ys, yc); return LinearFit.normal(g, r) }
-    // the held columns' block copied beside the made ones: the same block sums as `Gram.of` on whole columns
+    // the held columns read in place beside the made ones' block: the same block sums as `Gram.of` on whole columns
     val k = at(size)
     val sum = Par.sums(ys.length, k * (k + 1) / 2 + k, Gram.Block) { (lo, hi, out) =>
-      val (s, c) = block(all, lo, hi, sinCh = true, cosCh = true)
-      Gram.block(s, c, slice(ys, lo, hi), slice(yc, lo, hi), null, 0, hi - lo, out)
+      val b = block(all, lo, hi, sinCh = true, cosCh = true)
+      Gram.blockAt(b.s, b.sFrom, b.c, b.cFrom, ys, yc, lo, hi, out)
     }
     val (g, r) = Gram.unpack(sum, k)
     LinearFit.normal(g, r)
   }
 
-  private def slice(a: Array[Double], lo: Int, hi: Int): Array[Double] = if (a == null) null else java.util.Arrays.copyOfRange(a, lo, hi)
-  /** Every column's samples [lo, hi) (at 0 until hi - lo) on the channels asked for: held ones copied, the rest made. */
-  private def block(all: IndexedSeq[IndexedSeq[Col]], lo: Int, hi: Int, sinCh: Boolean, cosCh: Boolean): (Array[Array[Double]], Array[Array[Double]]) = {
-    val k = at(size); val s = new Array[Array[Double]](k); val c = new Array[Array[Double]](k)
+  /** Every column's samples [lo, hi) on the channels asked for: column k's sample i at s(k)(i - sFrom(k)) (held
+    * columns whole, sFrom 0; made ones a block, sFrom lo), and the same for c.
+    */
+  private final class Block(val s: Array[Array[Double]], val sFrom: Array[Int], val c: Array[Array[Double]], val cFrom: Array[Int])
+  private def block(all: IndexedSeq[IndexedSeq[Col]], lo: Int, hi: Int, sinCh: Boolean, cosCh: Boolean): Block = {
+    val k = at(size); val b = new Block(new Array[Array[Double]](k), new Array[Int](k), new Array[Array[Double]](k), new Array[Int](k))
     for (g <- 0 until size) {
       val gn = gen(g)
       if (gn == null) for ((col, j) <- all(g).zipWithIndex) {
-        if (sinCh) s(at(g) + j) = slice(col.s, lo, hi); if (cosCh) c(at(g) + j) = slice(col.c, lo, hi)
+        if (sinCh) b.s(at(g) + j) = col.s; if (cosCh) b.c(at(g) + j) = col.c
       } else {
-        val out = gn.buffers(hi - lo)
+        val out = gn.blockBuffers(hi - lo)
         gn.fill(lo, hi, out, 0)
-        for (j <- 0 until gn.size) { if (sinCh) s(at(g) + j) = out(2 * j); if (cosCh) c(at(g) + j) = out(2 * j + 1) }
+        for (j <- 0 until gn.size) {
+          if (sinCh) { b.s(at(g) + j) = out(2 * j); b.sFrom(at(g) + j) = lo }
+          if (cosCh) { b.c(at(g) + j) = out(2 * j + 1); b.cFrom(at(g) + j) = lo }
+        }
       }
     }
-    (s, c)
+    b
   }
 
   /** Each channel's residual sum of squares of ys, yc less the columns times beta (no residual arrays). */
@@ -172,10 +185,14 @@ final class ColGroups(make: IndexedSeq[() => IndexedSeq[Col]], keep: Boolean, he
     val all = layout()
     if (!streamed) { val cols = all.flatten; return (LinearFit.rss(cols, beta, ys, sinCh = true), LinearFit.rss(cols, beta, yc, sinCh = false)) }
     val q = Par.sums(ys.length, 2, Gram.Block) { (lo, hi, out) =>
-      val (s, c) = block(all, lo, hi, sinCh = true, cosCh = true)
-      for ((y, a, o) <- Seq((ys, s, 0), (yc, c, 1))) {
+      val bl = block(all, lo, hi, sinCh = true, cosCh = true)
+      for ((y, a, from, o) <- Seq((ys, bl.s, bl.sFrom, 0), (yc, bl.c, bl.cFrom, 1))) {
         val r = java.util.Arrays.copyOfRange(y, lo, hi); var k = 0
-        while (k < a.length) { val x = a(k); val b = beta(k); if (x != null && b != 0) { var i = 0; while (i < r.length) { r(i) -= b * x(i); i += 1 } }; k += 1 }
+        while (k < a.length) {
+          val x = a(k); val b = beta(k); val d = lo - from(k)
+          if (x != null && b != 0) { var i = 0; while (i < r.length) { r(i) -= b * x(i + d); i += 1 } }
+          k += 1
+        }
         var z = 0.0; var i = 0; while (i < r.length) { z += r(i) * r(i); i += 1 }
         out(o) += z
       }
@@ -194,12 +211,12 @@ final class ColGroups(make: IndexedSeq[() => IndexedSeq[Col]], keep: Boolean, he
     }
     val n = if (outS != null) outS.length else outC.length
     Par.blocks(n, Gram.Block) { (lo, hi) =>
-      val (s, c) = block(all, lo, hi, outS != null, outC != null)
-      for ((o, a) <- Seq((outS, s), (outC, c)) if o != null) {
+      val bl = block(all, lo, hi, outS != null, outC != null)
+      for ((o, a, from) <- Seq((outS, bl.s, bl.sFrom), (outC, bl.c, bl.cFrom)) if o != null) {
         var k = 0
         while (k < a.length) {
-          val x = a(k); val b = sign * beta(k)
-          if (x != null && b != 0) { var i = lo; while (i < hi) { o(i) += b * x(i - lo); i += 1 } }
+          val x = a(k); val b = sign * beta(k); val d = from(k)
+          if (x != null && b != 0) { var i = lo; while (i < hi) { o(i) += b * x(i - d); i += 1 } }
           k += 1
         }
       }

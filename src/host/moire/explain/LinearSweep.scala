@@ -88,10 +88,13 @@ object LinearSweep {
     val (fromS, pairsS) = plan(onS, 0); val (fromC, pairsC) = plan(onC, 1)
     val rows = if (idx == null) n else idx.length
     val nOrders = orders.size // a list's size is a walk along it: not at every sample
+    // each thread's chunk buffers, made once per pass (not per block of rows)
+    val bufs = ThreadLocal.withInitial[(Array[Array[Double]], Array[Array[Double]])](() =>
+      (Array.ofDim[Double](4 + fromS.length, Chunk), Array.ofDim[Double](4 + fromC.length, Chunk)))
     val sums = Par.sums(rows, mS + mC + 2, Gram.Block) { (lo, hi, acc) =>
       val v = new Array[Double](2 * colAt(nf)) // the families' column values at a sample: (sin part, cos part) per column
       val sc = new Array[Double](2)
-      val bufS = Array.ofDim[Double](4 + fromS.length, Chunk); val bufC = Array.ofDim[Double](4 + fromC.length, Chunk)
+      val (bufS, bufC) = bufs.get() // every row of a chunk is written before it is read
       var c0 = lo
       while (c0 < hi) {
         val m = math.min(Chunk, hi - c0)
