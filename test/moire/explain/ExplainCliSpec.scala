@@ -36,6 +36,10 @@ class ExplainCliSpec extends AnyFlatSpec with Matchers {
     val Seq(read, all) = lines.result()
     read should fullyMatch regex """explain-bench: read and checked 40000 rows \([0-9]+ MB file\) in [0-9.]+ s; peak heap in use [0-9]+ MB of [0-9]+ MB \([0-9.]+ MB per million samples\)"""
     all should fullyMatch regex """explain-bench: 40000 samples explained in [0-9.]+ s .* = [0-9]+ samples/s, [0-9.]+ us per sample; CPU [0-9.]+ s \([0-9.]+ cores busy\); peak heap in use [0-9]+ MB of [0-9]+ MB \([0-9.]+ MB per million samples\); .*findings: .*"""
+    // without --out its temporary folder (recording, JSON, plots) does not outlive it
+    val before = os.list(os.temp.dir() / os.up).count(_.last.startsWith("moire-bench"))
+    ExplainCmd.bench(20000, None, None, _ => ())
+    os.list(os.temp.dir() / os.up).count(_.last.startsWith("moire-bench")) shouldBe before
     // the peak is what the heap held at one time: never more than the heap itself, never nothing
     for (l <- Seq(read, all)) {
       val Seq(peak, max) = """heap in use ([0-9]+) MB of ([0-9]+) MB""".r.findFirstMatchIn(l).get.subgroups.map(_.toDouble)

@@ -241,7 +241,13 @@ object ExplainCmd {
     if (recording.isEmpty && (samples < BenchMinSamples || samples > BenchMaxSamples))
       throw new ExplainError(s"--samples must be in $BenchMinSamples..$BenchMaxSamples, got $samples")
     out.foreach(d => moire.files.SafeWrite.checkFolder(os.Path(d, os.pwd)))
-    val dir = out.map(os.Path(_, os.pwd)).getOrElse(os.temp.dir(prefix = "moire-bench"))
+    // without --out the recording, JSON and plots go to a temporary folder, removed at the end (a 20 M recording is 180 MB)
+    val temp = if (out.isEmpty) Some(os.temp.dir(prefix = "moire-bench", deleteOnExit = false)) else None
+    try benchIn(out.map(os.Path(_, os.pwd)).orElse(temp).get, samples, recording, say)
+    finally temp.foreach(d => try os.remove.all(d) catch { case _: java.io.IOException => () })
+  }
+
+  private def benchIn(dir: os.Path, samples: Int, recording: Option[String], say: String => Unit): Unit = {
     val file = recording.map { f =>
       val p = os.Path(f, os.pwd)
       moire.files.PathKind.notAFile(p).foreach(m => throw new ExplainError(m))
