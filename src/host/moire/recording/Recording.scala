@@ -117,6 +117,23 @@ object Recording {
     val si = header.indexOf("sin"); val ci = header.indexOf("cos")
     if (si < 0 || ci < 0) bad(headerAt + 1, s"header must name columns sin and cos, got '${Shown.text(headerLine)}'")
     val extraIdx = header.indices.filter(i => i != si && i != ci).toArray
+    val plainTwo = header.length == 2
+    // a row "a,b" of two integers of at most 9 digits (a minus sign allowed, nothing else): Array(a, b), else null
+    val pair = new Array[Int](2)
+    def twoInts(line: String): Array[Int] = {
+      val len = line.length; var p = 0
+      def digit(q: Int) = q < len && line.charAt(q) >= '0' && line.charAt(q) <= '9'
+      def int(k: Int): Boolean = {
+        val neg = p < len && line.charAt(p) == '-'; if (neg) p += 1
+        val d0 = p; var v = 0
+        while (p - d0 < 9 && digit(p)) { v = v * 10 + (line.charAt(p) - '0'); p += 1 }
+        pair(k) = if (neg) -v else v
+        p > d0 && !digit(p)
+      }
+      if (!int(0) || p >= len || line.charAt(p) != ',') return null
+      p += 1
+      if (!int(1) || p != len) null else pair
+    }
     // the `samples` line sizes the arrays when it is there (checked against the rows at the end)
     val expect = meta.get("samples").flatMap(_.toIntOption).filter(n => n > 0 && n < Int.MaxValue - 8)
     // a hint only, never trusted for more than 4 Mi rows: a wrong `samples` line must not size the arrays
@@ -143,11 +160,8 @@ object Recording {
           var e = 0
           while (e < extra.length) { extra(e) = java.util.Arrays.copyOf(extra(e), cap); e += 1 }
         }
-        if (line.startsWith("#")) badRow("a '#' line among the data rows (comments and metadata go before the header row)")
-        val cells = line.split(",", -1)
-        if (cells.length != header.length) badRow(s"${cells.length} cells, the header has ${header.length}")
-        def code(c: Int, col: String): Int = {
-          val v = cells(c).trim.toIntOption.getOrElse(badRow(s"$col '${Shown.text(cells(c).trim)}' is not an integer ADC code"))
+        // the code v of column col, checked: within the converter's range, signed codes and pin patterns not mixed
+        def checked(v: Int, col: String): Int = {
           if (v < minCode || v > maxCode)
             badRow(s"$col code $v is outside the $bits-bit ADC range ${if (signedOk) s"$minCode..$maxCode (signed codes or pin patterns)" else s"0..$maxCode"}")
           if (v < 0) { if (firstNegative == 0) firstNegative = ln }
@@ -157,13 +171,24 @@ object Recording {
               "a two's-complement file holds one or the other")
           v & maxCode
         }
-        sin(n) = code(si, "sin"); cos(n) = code(ci, "cos")
-        var e = 0
-        while (e < extraIdx.length) {
-          val c = extraIdx(e)
-          extra(e)(n) = moire.numbers.Decimal.double(cells(c)).filter(v => !v.isNaN && !v.isInfinite)
-            .getOrElse(badRow(s"${Shown.text(header(c))} '${Shown.text(cells(c).trim)}' is not a finite number"))
-          e += 1
+        // the common row, two plain integers and a comma, read without splitting it; any other the general way
+        // (which also words what is wrong)
+        val two = if (plainTwo) twoInts(line) else null
+        if (two != null) { sin(n) = checked(two(si), "sin"); cos(n) = checked(two(ci), "cos") }
+        else {
+          if (line.startsWith("#")) badRow("a '#' line among the data rows (comments and metadata go before the header row)")
+          val cells = line.split(",", -1)
+          if (cells.length != header.length) badRow(s"${cells.length} cells, the header has ${header.length}")
+          def code(c: Int, col: String): Int =
+            checked(cells(c).trim.toIntOption.getOrElse(badRow(s"$col '${Shown.text(cells(c).trim)}' is not an integer ADC code")), col)
+          sin(n) = code(si, "sin"); cos(n) = code(ci, "cos")
+          var e = 0
+          while (e < extraIdx.length) {
+            val c = extraIdx(e)
+            extra(e)(n) = moire.numbers.Decimal.double(cells(c)).filter(v => !v.isNaN && !v.isInfinite)
+              .getOrElse(badRow(s"${Shown.text(header(c))} '${Shown.text(cells(c).trim)}' is not a finite number"))
+            e += 1
+          }
         }
         n += 1
       }
