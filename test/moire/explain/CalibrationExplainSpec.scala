@@ -34,6 +34,15 @@ class CalibrationExplainSpec extends AnyFlatSpec with Matchers {
     for (seed <- 1 to 5) CalibrationExplain.run("cal", cal(0, 0, seed)).report.findings shouldBe empty
   }
 
+  it should "note a last row without a line end (kept: a hand-made table often ends so, a cut file too)" in {
+    val p = os.temp(suffix = ".csv"); Calibration.write(p, cal(0, 0, 2))
+    CalibrationExplain.run("cal", Calibration.read(p)).report.notes shouldBe empty
+    val text = os.read(p); os.write.over(p, text.stripSuffix("\n"))
+    val c = Calibration.read(p)
+    c.length shouldBe 1440
+    CalibrationExplain.run("cal", c).report.notes.mkString should include("the last, has no line end")
+  }
+
   it should "read back what it writes" in {
     val c = cal(0.3, 0.4, 1)
     val p = os.temp(suffix = ".csv"); Calibration.write(p, c)

@@ -82,7 +82,7 @@ object CalibrationExplain {
     val baseParams = Map("offset_arcsec" -> sol.beta(0), "default_harmonics" -> math.min(k0, kMax).toDouble, "noise_arcsec" -> rms(res))
     val fitted = y.indices.map(i => y(i) - res(i)).toArray
     val report = Report(file, "calibration", baseRms, baseBic, baseParams, located, fins.map(_._1), unexplained, rms(res), bic(terms, res), n,
-      (System.nanoTime() - t0) / 1e9)
+      (System.nanoTime() - t0) / 1e9, c.notes)
     Result(report, c, before, res, fitted, fins)
   }
   private def name(t: T) = t match { case H(_) => effects.HarmonicOrder.name; case Rev => effects.Reversal.name }

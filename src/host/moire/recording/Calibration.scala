@@ -6,7 +6,7 @@ import moire.calibration.{CalibrationData, CalibrationError}
   * direction: +1 = cw, -1 = ccw, 0 = not given.
   */
 final case class Calibration(angleDeg: Array[Double], errorArcsec: Array[Double], direction: Array[Int],
-                             meta: Map[String, String] = Map.empty) {
+                             meta: Map[String, String] = Map.empty, notes: Seq[String] = Nil) {
   def length: Int = angleDeg.length
   def hasDirection: Boolean = direction.exists(_ != 0)
 }
@@ -16,7 +16,13 @@ object Calibration {
 
   def read(path: os.Path): Calibration = {
     moire.files.PathKind.notAFile(path).foreach(m => throw new RecordingError(m))
-    parse(path.toString, CsvText.lines(path))
+    // through the bounded line reader, which also tells whether the last line had a line end (a cut file's may not)
+    val (lines, ended) = CsvText.linesEnded(path)
+    val c = parse(path.toString, lines)
+    if (!ended && lines.lastOption.exists(_.trim.nonEmpty))
+      c.copy(notes = Seq(s"line ${lines.size}, the last, has no line end: if the file was cut short there, its row may be wrong " +
+        "(end the file with a line break if it is complete)"))
+    else c
   }
 
   def write(path: os.Path, c: Calibration): Unit = {
