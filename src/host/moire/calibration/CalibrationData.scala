@@ -11,8 +11,7 @@ final case class CalPoint(angleDeg: Double, errorArcsec: Double, direction: Opti
 /** A parsed `moire-calibration v1` file. */
 final case class CalibrationData(file: String, meta: Map[String, String], points: Seq[CalPoint], cutShort: Option[Int] = None) {
   /** What the reader could not tell: the last row without a line end (kept, but it may have been cut short). */
-  def notes: Seq[String] = cutShort.toSeq.map(l => s"line $l, the last, has no line end: if the file was cut short there, " +
-    "its row may be wrong (end the file with a line break if it is complete)")
+  def notes: Seq[String] = cutShort.toSeq.map(CalibrationData.cutShortNote)
   /** The directions present, in file order ("" for rows without a direction column). */
   def directions: Seq[String] = points.map(_.direction.getOrElse("")).distinct
   def of(direction: String): Seq[CalPoint] = points.filter(_.direction.getOrElse("") == direction)
@@ -44,6 +43,10 @@ final case class CalibrationData(file: String, meta: Map[String, String], points
   * Angles in [0, 360] degrees (360 is the same point as 0), errors in arcsec, direction cw or ccw.
   */
 object CalibrationData {
+  /** The note on a last data row (on line `line`) without a line end: kept, but it may have been cut short. */
+  def cutShortNote(line: Int): String =
+    s"line $line, the last, has no line end: if the file was cut short there, its row may be wrong (end the file with a line break if it is complete)"
+
   /** The largest angle error a row may state: one turn. */
   val MaxErrorArcsec = 1296000.0
   val magic = "# moire-calibration v1"

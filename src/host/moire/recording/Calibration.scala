@@ -19,10 +19,7 @@ object Calibration {
     // through the bounded line reader, which also tells whether the last line had a line end (a cut file's may not)
     val (lines, ended) = CsvText.linesEnded(path)
     val c = parse(path.toString, lines)
-    if (!ended && lines.lastOption.exists(_.trim.nonEmpty))
-      c.copy(notes = Seq(s"line ${lines.size}, the last, has no line end: if the file was cut short there, its row may be wrong " +
-        "(end the file with a line break if it is complete)"))
-    else c
+    if (!ended && lines.lastOption.exists(_.trim.nonEmpty)) c.copy(notes = Seq(CalibrationData.cutShortNote(lines.size))) else c
   }
 
   def write(path: os.Path, c: Calibration): Unit = {
