@@ -380,7 +380,7 @@ final class Candidates(val engine: SignalEngine) {
     if (spec.terms.exists(_.isInstanceOf[Term.Warmup])) return None
     val span = n / fs; val st = stride
     val idx = (0 until n by st).toArray
-    def pick(a: Array[Double]) = if (a == null) null else Doubles.tabulate(idx.length)(q => a(idx(q)))
+    def pick(a: Array[Double]) = if (a == null || (a eq Col.Ones)) a else Doubles.tabulate(idx.length)(q => a(idx(q)))
     val ys = pick(resS); val yc = pick(resC); val base = baseCols(s1, s2, c1, c2).map(c => Col(pick(c.s), pick(c.c)))
     val uS = Doubles.tabulate(idx.length)(q => us(idx(q))); val uC = Doubles.tabulate(idx.length)(q => uc(idx(q)))
     // -2 ln L (white noise) of the warm-up at log10(tau), from the subsample (its columns built there), scaled to all samples

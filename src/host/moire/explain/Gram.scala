@@ -12,7 +12,9 @@ object Gram {
   def of(cols: IndexedSeq[Col], ys: Array[Double], yc: Array[Double], idx: Array[Int] = null): (Array[Array[Double]], Array[Double]) = {
     if (FitPath.isReference) return plain(cols, ys, yc, idx)
     val k = cols.length
-    val rows = if (idx != null) idx.length else if (ys != null) ys.length else cols.find(_.s != null).map(_.s.length).getOrElse(cols.head.c.length)
+    def stored(a: Array[Double]) = a != null && !(a eq Col.Ones)
+    val rows = if (idx != null) idx.length else if (ys != null) ys.length
+      else cols.find(c => stored(c.s)).map(_.s.length).orElse(cols.find(c => stored(c.c)).map(_.c.length)).getOrElse(0)
     val as = cols.map(_.s).toArray; val ac = cols.map(_.c).toArray
     val sum = Par.sums(rows, k * (k + 1) / 2 + k, Block)((lo, hi, out) => block(as, ac, ys, yc, idx, lo, hi, out))
     unpack(sum, k)
@@ -32,7 +34,7 @@ object Gram {
     val k = as.length
     // a block's rows gathered when they are a fold (`idx`): the products then run over contiguous copies
     def rows(a: Array[Double]): Array[Double] =
-      if (a == null) null
+      if (a == null || (a eq Col.Ones)) a
       else if (idx == null) a
       else { val o = new Array[Double](hi - lo); var t = lo; while (t < hi) { o(t - lo) = a(idx(t)); t += 1 }; o }
     val s = as.map(rows); val c = ac.map(rows); val y1 = rows(ys); val y2 = rows(yc)
@@ -64,6 +66,8 @@ object Gram {
   /** `dot` of a and b over the rows [from, to), row t at a(t - sa) and b(t - sb). */
   private def dotAt(a: Array[Double], sa: Int, b: Array[Double], sb: Int, from: Int, to: Int): Double = {
     if (a == null || b == null) return 0.0
+    if (a eq Col.Ones) return if (b eq Col.Ones) (to - from).toDouble else sum(b, from - sb, to - sb)
+    if (b eq Col.Ones) return sum(a, from - sa, to - sa)
     var s0 = 0.0; var s1 = 0.0; var s2 = 0.0; var s3 = 0.0
     // the rows as indices of a; b's are a's shifted by d
     var t = from - sa; val end = to - sa; val end4 = t + ((to - from) & ~3); val d = sa - sb
@@ -74,8 +78,13 @@ object Gram {
 
   /** The reference path: each pair's products over all rows in turn, on one thread. */
   private def plain(cols: IndexedSeq[Col], ys: Array[Double], yc: Array[Double], idx: Array[Int]): (Array[Array[Double]], Array[Double]) = {
+    val n = if (idx != null) idx.length else if (ys != null) ys.length else 0
+    def one(a: Array[Double]) = a eq Col.Ones
     def dot(a: Array[Double], b: Array[Double]): Double =
       if (a == null || b == null) 0.0
+      else if (one(a) && one(b)) n.toDouble
+      else if (one(a)) dot(b, Ones(b))
+      else if (one(b)) dot(a, Ones(a))
       else if (idx == null) { var s = 0.0; var i = 0; while (i < a.length) { s += a(i) * b(i); i += 1 }; s }
       else { var s = 0.0; var i = 0; while (i < idx.length) { val j = idx(i); s += a(j) * b(j); i += 1 }; s }
     val k = cols.length
@@ -87,9 +96,23 @@ object Gram {
     (g, r)
   }
 
+  /** An array of ones as long as a (the reference path's stand-in for `Col.Ones`). */
+  private def Ones(a: Array[Double]): Array[Double] = Array.fill(a.length)(1.0)
+
+  /** The sum of a over [from, to) as `dot` adds it (`Col.Ones` times a: the same numbers, a times 1 is a). */
+  private def sum(a: Array[Double], from: Int, to: Int): Double = {
+    var s0 = 0.0; var s1 = 0.0; var s2 = 0.0; var s3 = 0.0; var t = from
+    val end4 = from + ((to - from) & ~3)
+    while (t < end4) { s0 += a(t); s1 += a(t + 1); s2 += a(t + 2); s3 += a(t + 3); t += 4 }
+    while (t < to) { s0 += a(t); t += 1 }
+    (s0 + s1) + (s2 + s3)
+  }
+
   /** Four running sums (one would wait on each addition), added at the end. */
   private def dot(a: Array[Double], b: Array[Double], from: Int, to: Int): Double = {
     if (a == null || b == null) return 0.0
+    if (a eq Col.Ones) return if (b eq Col.Ones) (to - from).toDouble else sum(b, from, to)
+    if (b eq Col.Ones) return sum(a, from, to)
     var s0 = 0.0; var s1 = 0.0; var s2 = 0.0; var s3 = 0.0; var t = from
     val end4 = from + ((to - from) & ~3)
     while (t < end4) { s0 += a(t) * b(t); s1 += a(t + 1) * b(t + 1); s2 += a(t + 2) * b(t + 2); s3 += a(t + 3) * b(t + 3); t += 4 }

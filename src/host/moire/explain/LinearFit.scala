@@ -2,8 +2,18 @@ package moire.explain
 
 import org.hipparchus.linear.{Array2DRowRealMatrix, LUDecomposition}
 
-/** A column of a least-squares design over both channels; null where it is zero on a channel. */
+/** A column of a least-squares design over both channels; null where it is zero on a channel, `Col.Ones` where it is
+  * one at every sample.
+  */
 final case class Col(s: Array[Double], c: Array[Double])
+object Col {
+  /** The column of ones (a channel's offset), not stored: every reader of a column treats this array as 1 at each
+    * sample (an array of the record's length, 160 MB at 20 M samples, fewer).
+    */
+  val Ones: Array[Double] = new Array[Double](0)
+  /** a(i), with `Ones` read as 1. */
+  @inline def at(a: Array[Double], i: Int): Double = if (a eq Ones) 1.0 else a(i)
+}
 
 /** Linear least squares on the stacked (sin, cos) samples via normal equations with column scaling.
   * `inv` is (X'X)^-1 (unscaled covariance); `ok` is false when the columns are (nearly) dependent.
@@ -37,8 +47,8 @@ object LinearFit {
       val i = idx(m); var ps = ys(i); var pc = yc(i); var k = 0
       while (k < cols.length) {
         val c = cols(k)
-        if (c.s != null) ps -= beta(k) * c.s(i)
-        if (c.c != null) pc -= beta(k) * c.c(i)
+        if (c.s != null) ps -= beta(k) * Col.at(c.s, i)
+        if (c.c != null) pc -= beta(k) * Col.at(c.c, i)
         k += 1
       }
       sum += ps * ps + pc * pc; m += 1
@@ -54,7 +64,7 @@ object LinearFit {
       var sum = 0.0; var i = lo
       while (i < hi) {
         var r = y(i); var k = 0
-        while (k < a.length) { r -= b(k) * a(k)(i); k += 1 }
+        while (k < a.length) { r -= b(k) * Col.at(a(k), i); k += 1 }
         sum += r * r; i += 1
       }
       sum
@@ -88,7 +98,8 @@ object LinearFit {
       var k = 0
       while (k < cols.length) {
         val a = if (sinCh) cols(k).s else cols(k).c; val b = sign * beta(k)
-        if (a != null && b != 0) { var i = lo; while (i < hi) { out(i) += b * a(i); i += 1 } }
+        if (a eq Col.Ones) { if (b != 0) { var i = lo; while (i < hi) { out(i) += b; i += 1 } } }
+        else if (a != null && b != 0) { var i = lo; while (i < hi) { out(i) += b * a(i); i += 1 } }
         k += 1
       }
     }
@@ -190,7 +201,8 @@ final class ColGroups(make: IndexedSeq[() => IndexedSeq[Col]], keep: Boolean, he
         val r = java.util.Arrays.copyOfRange(y, lo, hi); var k = 0
         while (k < a.length) {
           val x = a(k); val b = beta(k); val d = lo - from(k)
-          if (x != null && b != 0) { var i = 0; while (i < r.length) { r(i) -= b * x(i + d); i += 1 } }
+          if (x eq Col.Ones) { if (b != 0) { var i = 0; while (i < r.length) { r(i) -= b; i += 1 } } }
+          else if (x != null && b != 0) { var i = 0; while (i < r.length) { r(i) -= b * x(i + d); i += 1 } }
           k += 1
         }
         var z = 0.0; var i = 0; while (i < r.length) { z += r(i) * r(i); i += 1 }
@@ -216,7 +228,8 @@ final class ColGroups(make: IndexedSeq[() => IndexedSeq[Col]], keep: Boolean, he
         var k = 0
         while (k < a.length) {
           val x = a(k); val b = sign * beta(k); val d = from(k)
-          if (x != null && b != 0) { var i = lo; while (i < hi) { o(i) += b * x(i - d); i += 1 } }
+          if (x eq Col.Ones) { if (b != 0) { var i = lo; while (i < hi) { o(i) += b; i += 1 } } }
+          else if (x != null && b != 0) { var i = lo; while (i < hi) { o(i) += b * x(i - d); i += 1 } }
           k += 1
         }
       }

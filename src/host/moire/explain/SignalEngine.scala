@@ -34,7 +34,8 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
   val railHi: Double = (rec.adc.half - (1 << coarseBits)) * lsb
   /** Time from the record's middle (s), made when a term needs it. */
   def tc: Array[Double] = Doubles.tabulate(n)(i => (i - 0.5 * (n - 1)) / fs)
-  val ones: Array[Double] = Array.fill(n)(1.0)
+  /** The offsets' column: ones, not stored (`Col.Ones`). */
+  def ones: Array[Double] = Col.Ones
   val lnN: Double = math.log(2.0 * n)
 
   val phase = new Array[Double](n); val freq = new Array[Double](n)
