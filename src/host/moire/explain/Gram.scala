@@ -83,8 +83,8 @@ object Gram {
     def dot(a: Array[Double], b: Array[Double]): Double =
       if (a == null || b == null) 0.0
       else if (one(a) && one(b)) n.toDouble
-      else if (one(a)) dot(b, Ones(b))
-      else if (one(b)) dot(a, Ones(a))
+      else if (one(a)) dot(b, onesLike(b))
+      else if (one(b)) dot(a, onesLike(a))
       else if (idx == null) { var s = 0.0; var i = 0; while (i < a.length) { s += a(i) * b(i); i += 1 }; s }
       else { var s = 0.0; var i = 0; while (i < idx.length) { val j = idx(i); s += a(j) * b(j); i += 1 }; s }
     val k = cols.length
@@ -97,7 +97,7 @@ object Gram {
   }
 
   /** An array of ones as long as a (the reference path's stand-in for `Col.Ones`). */
-  private def Ones(a: Array[Double]): Array[Double] = Array.fill(a.length)(1.0)
+  private def onesLike(a: Array[Double]): Array[Double] = Array.fill(a.length)(1.0)
 
   /** The sum of a over [from, to) as `dot` adds it (`Col.Ones` times a: the same numbers, a times 1 is a). */
   private def sum(a: Array[Double], from: Int, to: Int): Double = {
