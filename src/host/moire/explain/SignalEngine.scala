@@ -740,18 +740,19 @@ object Noise {
       val (vs0, vc0, j20) = (vs, vc, j2)
       // weighted least squares of r^2 on (1_sin, 1_cos, d^2) with weights 1 / var_i^2 (Gaussian ML scoring)
       val m = Array.ofDim[Double](3, 4)
-      def acc(r: Array[Double], d: Array[Double], v0: Double, ch: Int): Unit = {
-        val q = Par.sums(n, 5) { (lo, hi, a) =>
+      // both channels' sums in one pass (each channel's in the same order as a pass of its own)
+      val q = Par.sums(n, 10) { (lo, hi, a) =>
+        def acc(r: Array[Double], d: Array[Double], v0: Double, o: Int): Unit = {
           var i = lo
           while (i < hi) {
             val d2 = d(i) * d(i); val v = math.max(floor, v0 + j2 * d2); val w = 1 / (v * v); val y = r(i) * r(i)
-            a(0) += w; a(1) += w * d2; a(2) += w * d2 * d2; a(3) += w * y; a(4) += w * d2 * y
+            a(o) += w; a(o + 1) += w * d2; a(o + 2) += w * d2 * d2; a(o + 3) += w * y; a(o + 4) += w * d2 * y
             i += 1
           }
         }
-        m(ch)(ch) += q(0); m(ch)(2) += q(1); m(2)(2) += q(2); m(ch)(3) += q(3); m(2)(3) += q(4)
+        acc(rs, ds, vs, 0); acc(rc, dc, vc, 5)
       }
-      acc(rs, ds, vs, 0); acc(rc, dc, vc, 1)
+      for (ch <- 0 to 1) { val o = 5 * ch; m(ch)(ch) += q(o); m(ch)(2) += q(o + 1); m(2)(2) += q(o + 2); m(ch)(3) += q(o + 3); m(2)(3) += q(o + 4) }
       m(2)(0) = m(0)(2); m(2)(1) = m(1)(2)
       val a = Array(Array(m(0)(0), 0, m(0)(2), 0, m(0)(3)), Array(0, m(1)(1), m(1)(2), 0, m(1)(3)),
         Array(m(2)(0), m(2)(1), m(2)(2), 0, m(2)(3)), Array(0.0, 0, 0, 1, 0))
