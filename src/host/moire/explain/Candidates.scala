@@ -401,18 +401,25 @@ final class Candidates(val engine: SignalEngine) {
       // exp(-t / tau) at the subsample's regular times: each block from its first point, then by its ratio
       val ratio = math.exp(-st / fs / tau)
       val q = Par.sums(m, 22, Gram.Block) { (a, b, o) =>
+        // the sums in local variables (in the array, each sample's 22 additions waited on its stores)
+        var z0 = 0.0; var z1 = 0.0; var z2 = 0.0; var z3 = 0.0; var z4 = 0.0; var z5 = 0.0; var z6 = 0.0; var z7 = 0.0
+        var z8 = 0.0; var z9 = 0.0; var z10 = 0.0; var z11 = 0.0; var z12 = 0.0; var z13 = 0.0; var z14 = 0.0; var z15 = 0.0
+        var z16 = 0.0; var z17 = 0.0; var z18 = 0.0; var z19 = 0.0; var z20 = 0.0; var z21 = 0.0
         var k = a; var w = math.exp(-idx(a) / fs / tau)
         while (k < b) {
           val ws = uS(k) * w; val wc = uC(k) * w
           val s1k = bs1(k); val s2k = bs2(k); val c1k = bc1(k); val c2k = bc2(k); val y1 = ys(k); val y2 = yc(k)
-          o(0) += w; o(1) += w * s1k; o(2) += w * s2k; o(3) += w * y1
-          o(4) += ws; o(5) += ws * s1k; o(6) += ws * s2k; o(7) += ws * y1
-          o(8) += w * w; o(9) += w * ws; o(10) += ws * ws
-          o(11) += w; o(12) += w * c1k; o(13) += w * c2k; o(14) += w * y2
-          o(15) += wc; o(16) += wc * c1k; o(17) += wc * c2k; o(18) += wc * y2
-          o(19) += w * w; o(20) += w * wc; o(21) += wc * wc
+          z0 += w; z1 += w * s1k; z2 += w * s2k; z3 += w * y1
+          z4 += ws; z5 += ws * s1k; z6 += ws * s2k; z7 += ws * y1
+          z8 += w * w; z9 += w * ws; z10 += ws * ws
+          z11 += w; z12 += w * c1k; z13 += w * c2k; z14 += w * y2
+          z15 += wc; z16 += wc * c1k; z17 += wc * c2k; z18 += wc * y2
+          z19 += w * w; z20 += w * wc; z21 += wc * wc
           w *= ratio; k += 1
         }
+        o(0) += z0; o(1) += z1; o(2) += z2; o(3) += z3; o(4) += z4; o(5) += z5; o(6) += z6; o(7) += z7
+        o(8) += z8; o(9) += z9; o(10) += z10; o(11) += z11; o(12) += z12; o(13) += z13; o(14) += z14; o(15) += z15
+        o(16) += z16; o(17) += z17; o(18) += z18; o(19) += z19; o(20) += z20; o(21) += z21
       }
       // columns: the default part's 6 (sin: 0-2, cos: 3-5), then w on sin (6), w on cos (7), u w on sin (8), u w on cos (9)
       val g = Array.ofDim[Double](10, 10); val r = new Array[Double](10)

@@ -743,12 +743,13 @@ object Noise {
       // both channels' sums in one pass (each channel's in the same order as a pass of its own)
       val q = Par.sums(n, 10) { (lo, hi, a) =>
         def acc(r: Array[Double], d: Array[Double], v0: Double, o: Int): Unit = {
-          var i = lo
+          var s0 = 0.0; var s1 = 0.0; var s2 = 0.0; var s3 = 0.0; var s4 = 0.0; var i = lo
           while (i < hi) {
             val d2 = d(i) * d(i); val v = math.max(floor, v0 + j2 * d2); val w = 1 / (v * v); val y = r(i) * r(i)
-            a(o) += w; a(o + 1) += w * d2; a(o + 2) += w * d2 * d2; a(o + 3) += w * y; a(o + 4) += w * d2 * y
+            s0 += w; s1 += w * d2; s2 += w * d2 * d2; s3 += w * y; s4 += w * d2 * y
             i += 1
           }
+          a(o) += s0; a(o + 1) += s1; a(o + 2) += s2; a(o + 3) += s3; a(o + 4) += s4
         }
         acc(rs, ds, vs, 0); acc(rc, dc, vc, 5)
       }
