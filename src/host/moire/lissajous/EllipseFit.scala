@@ -38,15 +38,25 @@ object EllipseFit {
     var sc = 0.0; i = 0
     while (i < n) { sc = math.max(sc, math.max(math.abs(xs(i) - mx), math.abs(ys(i) - my))); i += 1 }
     if (!(sc > 0)) return None
-    val ata = Array.ofDim[Double](5, 5); val atb = new Array[Double](5); val row = new Array[Double](5)
+    // the normal equations' 15 distinct sums and the right side's 5, in local variables (row r times row c: x^2, xy,
+    // y^2, x, y)
+    var s00 = 0.0; var s01 = 0.0; var s02 = 0.0; var s03 = 0.0; var s04 = 0.0; var s11 = 0.0; var s12 = 0.0; var s13 = 0.0
+    var s14 = 0.0; var s22 = 0.0; var s23 = 0.0; var s24 = 0.0; var s33 = 0.0; var s34 = 0.0; var s44 = 0.0
+    var b0 = 0.0; var b1 = 0.0; var b2 = 0.0; var b3 = 0.0; var b4 = 0.0
     i = 0
     while (i < n) {
       val x = (xs(i) - mx) / sc; val y = (ys(i) - my) / sc
-      row(0) = x * x; row(1) = x * y; row(2) = y * y; row(3) = x; row(4) = y
-      var r = 0
-      while (r < 5) { var c = 0; while (c < 5) { ata(r)(c) += row(r) * row(c); c += 1 }; atb(r) += row(r); r += 1 }
+      val r0 = x * x; val r1 = x * y; val r2 = y * y
+      s00 += r0 * r0; s01 += r0 * r1; s02 += r0 * r2; s03 += r0 * x; s04 += r0 * y
+      s11 += r1 * r1; s12 += r1 * r2; s13 += r1 * x; s14 += r1 * y
+      s22 += r2 * r2; s23 += r2 * x; s24 += r2 * y
+      s33 += x * x; s34 += x * y; s44 += y * y
+      b0 += r0; b1 += r1; b2 += r2; b3 += x; b4 += y
       i += 1
     }
+    val ata = Array(Array(s00, s01, s02, s03, s04), Array(s01, s11, s12, s13, s14), Array(s02, s12, s22, s23, s24),
+      Array(s03, s13, s23, s33, s34), Array(s04, s14, s24, s34, s44))
+    val atb = Array(b0, b1, b2, b3, b4)
     val sol = try new org.hipparchus.linear.LUDecomposition(new org.hipparchus.linear.Array2DRowRealMatrix(ata), 1e-14).getSolver
       .solve(new org.hipparchus.linear.ArrayRealVector(atb)).toArray catch { case _: org.hipparchus.exception.MathRuntimeException => return None }
     val Array(a, b, c, d, e) = sol
