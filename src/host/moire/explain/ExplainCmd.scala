@@ -264,10 +264,16 @@ object ExplainCmd {
     val cpu = cpuSeconds - cpu0
     say(f"explain-bench: $n samples explained in $s%.1f s (read, fit, JSON, plots) = ${n / s}%.0f samples/s, ${1e6 * s / n}%.1f us per sample; " +
       f"CPU $cpu%.1f s (${cpu / s}%.2f cores busy); " +
-      f"peak heap in use $peak%.0f MB of $maxMb%.0f MB (${perM(peak)}%.1f MB per million samples); ${Runtime.getRuntime.availableProcessors} cores; " +
-      s"findings: ${rep.findings.map(_.effect).mkString(", ")}")
+      f"peak heap in use $peak%.0f MB of $maxMb%.0f MB (${perM(peak)}%.1f MB per million samples); ${Runtime.getRuntime.availableProcessors} cores" +
+      processor.fold("")(m => s" ($m)") + s"; findings: ${rep.findings.map(_.effect).mkString(", ")}")
     Laps.lines.foreach(l => say(s"explain-bench: $l"))
   }
+
+  /** The processor's model (Linux's /proc/cpuinfo), so that figures from different machines are told apart. */
+  private def processor: Option[String] =
+    try os.read.lines(os.root / "proc" / "cpuinfo").collectFirst { case l if l.startsWith("model name") && l.contains(":") => l.split(":", 2)(1).trim }
+      .filter(_.nonEmpty)
+    catch { case _: Exception => None }
 
   /** The rows of a recording read and checked, the seconds and the peak heap it took. The recording is returned to
     * `peakHeap`, so that the collection at the end counts it, and dropped with this method's frame (a local of the
