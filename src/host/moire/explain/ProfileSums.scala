@@ -38,52 +38,39 @@ private[explain] final class ProfileSums(e: SignalEngine, idx: Array[Int]) {
       val sc = new Array[Double](2)
       val b0 = e.base(0); val b1 = e.base(1); val b2 = e.base(2); val b3 = e.base(3); val b4 = e.base(4); val b5 = e.base(5)
       val rs = e.resS; val rc = e.resC; val s1 = e.s1; val s2 = e.s2; val c1 = e.c1; val c2 = e.c2
-      // a bin's sums in local variables while the points stay in it (the fringe frequency moves slowly), then added to
-      // its place (in an array, each sample's 27 additions waited on the array's last store)
-      var a00 = 0.0; var a01 = 0.0; var a02 = 0.0; var a10 = 0.0; var a11 = 0.0; var a12 = 0.0; var a20 = 0.0; var a21 = 0.0; var a22 = 0.0
-      var a30 = 0.0; var a31 = 0.0; var a32 = 0.0; var a40 = 0.0; var a41 = 0.0; var a42 = 0.0; var a50 = 0.0; var a51 = 0.0; var a52 = 0.0
-      var a60 = 0.0; var a61 = 0.0; var a62 = 0.0; var a70 = 0.0; var a71 = 0.0; var a72 = 0.0; var a80 = 0.0; var a81 = 0.0; var a82 = 0.0
-      var t0 = 0.0; var t1 = 0.0; var t2 = 0.0; var t3 = 0.0; var cur = -1
+      @inline def binOf(f: Double): Int = if (width > 0) math.min(bins - 1, ((f - lo) * inv).toInt) else 0
+      var t0 = 0.0; var t1 = 0.0; var t2 = 0.0; var t3 = 0.0
       var q = c * per; val end = math.min(count, (c + 1) * per)
+      // a run of points in one bin at a time (the fringe frequency moves slowly): its sums in local variables, then
+      // added to the bin's place (in an array, each sample's 27 additions waited on the array's last store)
       while (q < end) {
-        val i = at(q); val f = e.freq(i)
-        val b = if (width > 0) math.min(bins - 1, ((f - lo) * inv).toInt) else 0
-        val u = if (width > 0) (f - lo) * inv - b - 0.5 else 0.0
-        if (b != cur) {
-          if (cur >= 0) {
-            val o = cur * ProfileSums.Stride
-            s(o + 0) += a00; s(o + 1) += a01; s(o + 2) += a02
-            s(o + 3) += a10; s(o + 4) += a11; s(o + 5) += a12
-            s(o + 6) += a20; s(o + 7) += a21; s(o + 8) += a22
-            s(o + 9) += a30; s(o + 10) += a31; s(o + 11) += a32
-            s(o + 12) += a40; s(o + 13) += a41; s(o + 14) += a42
-            s(o + 15) += a50; s(o + 16) += a51; s(o + 17) += a52
-            s(o + 18) += a60; s(o + 19) += a61; s(o + 20) += a62
-            s(o + 21) += a70; s(o + 22) += a71; s(o + 23) += a72
-            s(o + 24) += a80; s(o + 25) += a81; s(o + 26) += a82
+        val cur = binOf(e.freq(at(q)))
+        var a00 = 0.0; var a01 = 0.0; var a02 = 0.0; var a10 = 0.0; var a11 = 0.0; var a12 = 0.0; var a20 = 0.0; var a21 = 0.0; var a22 = 0.0
+        var a30 = 0.0; var a31 = 0.0; var a32 = 0.0; var a40 = 0.0; var a41 = 0.0; var a42 = 0.0; var a50 = 0.0; var a51 = 0.0; var a52 = 0.0
+        var a60 = 0.0; var a61 = 0.0; var a62 = 0.0; var a70 = 0.0; var a71 = 0.0; var a72 = 0.0; var a80 = 0.0; var a81 = 0.0; var a82 = 0.0
+        var going = true
+        while (going) {
+          val i = at(q); val f = e.freq(i)
+          if (binOf(f) != cur) going = false
+          else {
+            val u = if (width > 0) (f - lo) * inv - cur - 0.5 else 0.0
+            Turns.sinCos(e.turn(i), sc, 0); val sn = sc(0); val cs = sc(1)
+            // the data less the terms: the residual plus the default part
+            val ys = rs(i) + b0 + b1 * s1(i) + b2 * s2(i); val yc = rc(i) + b3 + b4 * c1(i) + b5 * c2(i)
+            t0 += ys; t1 += ys * ys; t2 += yc; t3 += yc * yc
+            val u2 = u * u;
+            { val p = sn; a00 += p; a01 += u * p; a02 += u2 * p }
+            { val p = cs; a10 += p; a11 += u * p; a12 += u2 * p }
+            { val p = sn * sn; a20 += p; a21 += u * p; a22 += u2 * p }
+            { val p = sn * cs; a30 += p; a31 += u * p; a32 += u2 * p }
+            { val p = cs * cs; a40 += p; a41 += u * p; a42 += u2 * p }
+            { val p = ys * sn; a50 += p; a51 += u * p; a52 += u2 * p }
+            { val p = ys * cs; a60 += p; a61 += u * p; a62 += u2 * p }
+            { val p = yc * sn; a70 += p; a71 += u * p; a72 += u2 * p }
+            { val p = yc * cs; a80 += p; a81 += u * p; a82 += u2 * p }
+            q += 1; going = q < end
           }
-          a00 = 0.0; a01 = 0.0; a02 = 0.0; a10 = 0.0; a11 = 0.0; a12 = 0.0; a20 = 0.0; a21 = 0.0; a22 = 0.0
-          a30 = 0.0; a31 = 0.0; a32 = 0.0; a40 = 0.0; a41 = 0.0; a42 = 0.0; a50 = 0.0; a51 = 0.0; a52 = 0.0
-          a60 = 0.0; a61 = 0.0; a62 = 0.0; a70 = 0.0; a71 = 0.0; a72 = 0.0; a80 = 0.0; a81 = 0.0; a82 = 0.0
-          cur = b
         }
-        Turns.sinCos(e.turn(i), sc, 0); val sn = sc(0); val cs = sc(1)
-        // the data less the terms: the residual plus the default part
-        val ys = rs(i) + b0 + b1 * s1(i) + b2 * s2(i); val yc = rc(i) + b3 + b4 * c1(i) + b5 * c2(i)
-        t0 += ys; t1 += ys * ys; t2 += yc; t3 += yc * yc
-        val u2 = u * u;
-        { val p = sn; a00 += p; a01 += u * p; a02 += u2 * p }
-        { val p = cs; a10 += p; a11 += u * p; a12 += u2 * p }
-        { val p = sn * sn; a20 += p; a21 += u * p; a22 += u2 * p }
-        { val p = sn * cs; a30 += p; a31 += u * p; a32 += u2 * p }
-        { val p = cs * cs; a40 += p; a41 += u * p; a42 += u2 * p }
-        { val p = ys * sn; a50 += p; a51 += u * p; a52 += u2 * p }
-        { val p = ys * cs; a60 += p; a61 += u * p; a62 += u2 * p }
-        { val p = yc * sn; a70 += p; a71 += u * p; a72 += u2 * p }
-        { val p = yc * cs; a80 += p; a81 += u * p; a82 += u2 * p }
-        q += 1
-      }
-      if (cur >= 0) {
         val o = cur * ProfileSums.Stride
         s(o + 0) += a00; s(o + 1) += a01; s(o + 2) += a02
         s(o + 3) += a10; s(o + 4) += a11; s(o + 5) += a12
