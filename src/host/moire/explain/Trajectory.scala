@@ -26,12 +26,13 @@ final class Trajectory(val n: Int, val len: Int, val fs: Double) extends PhaseTr
       val (a, b) = seg(s); val mid = 0.5 * (a + b - 1); val half = math.max(0.5, 0.5 * (b - a - 1))
       val c0 = coef(4 * s); val c1 = coef(4 * s + 1); val c2 = coef(4 * s + 2); val c3 = coef(4 * s + 3)
       val inv = 1 / half; val hz = fs / half
-      var i = a
+      // i as a double counted along (exact): converting the int at every sample took six times the loop's time
+      var i = a; var id = a.toDouble
       while (i < b) {
-        val x = (i - mid) * inv
+        val x = (id - mid) * inv
         phase(i) = c0 + x * (c1 + x * (c2 + x * c3))
         freq(i) = (c1 + x * (2 * c2 + x * 3 * c3)) * hz
-        i += 1
+        i += 1; id += 1.0
       }
     }
 
@@ -50,14 +51,14 @@ final class Trajectory(val n: Int, val len: Int, val fs: Double) extends PhaseTr
       var x0 = 0.0; var x1 = 0.0; var x2 = 0.0; var x3 = 0.0; var x4 = 0.0; var x5 = 0.0; var x6 = 0.0
       var y0 = 0.0; var y1 = 0.0; var y2 = 0.0; var y3 = 0.0
       val inv = 1 / half
-      var i = a
+      var i = a; var id = a.toDouble // i as a double, counted along (exact; see eval)
       while (i < b) {
         dw.at(i, o)
-        val x = (i - mid) * inv; val p0 = o(1)
+        val x = (id - mid) * inv; val p0 = o(1)
         val p1 = p0 * x; val p2 = p1 * x; val p3 = p2 * x; val p4 = p3 * x; val p5 = p4 * x; val p6 = p5 * x; val di = if (p0 == 0) 0.0 else o(0)
         x0 += p0; x1 += p1; x2 += p2; x3 += p3; x4 += p4; x5 += p5; x6 += p6
         y0 += p0 * di; y1 += p1 * di; y2 += p2 * di; y3 += p3 * di
-        i += 1
+        i += 1; id += 1.0
       }
       val sx = Array(x0, x1, x2, x3, x4, x5, x6); val sy = Array(y0, y1, y2, y3)
       val deg = math.min(3, b - a - 1)
