@@ -44,6 +44,26 @@ class ScreenSpec extends AnyFlatSpec with Matchers {
     for ((_, f) <- dropped) withClue(f.where) { e.bic - (f.m2ll + (e.params + f.extraK) * e.lnN) should be < SignalExplain.Threshold }
   }
 
+  "the slope-noise candidates" should "be fitted on all samples when the subsample shows them, and left out when it does not" in {
+    // jitter of 300 ps: its variance is a fifth of the white noise's at 200 kHz, plain on the subsample too; of 100 ps,
+    // the search on all samples fits some but it does not lower BIC there, nor on the subsample
+    for ((rec, shown) <- Seq(300e-12 -> true, 100e-12 -> false).map { case (j, s) => (sim(Seq(EffectSpec("jitter", Map("jitter_s" -> j))), n = 300000), s) }) {
+      val e = new SignalEngine(rec); e.init()
+      def noise(cs: Seq[Cand]) = cs.filter(c => Seq("jitter", "phase_noise").contains(c.effect)).map(c => c.effect -> c).toMap
+      val full = noise(new Candidates(e).all(() => ()))
+      val screened = noise(Candidates.screening(100000, 30000)(new Candidates(e).all(() => ())))
+      def gain(c: Cand) = e.bic - (c.m2ll + (e.params + c.extraK) * e.lnN)
+      withClue(s"shown $shown: full ${full.view.mapValues(gain).toMap}, screened ${screened.view.mapValues(gain).toMap}: ") {
+        // what the screen passes is the search on all samples, to the bit
+        for ((k, c) <- screened) c.m2ll shouldBe full(k).m2ll
+        if (shown) { screened.keySet should contain ("jitter"); gain(screened("jitter")) should be > 100.0 }
+        // what it leaves out does not lower BIC on all samples either
+        for ((k, c) <- full if !screened.contains(k)) gain(c) should be < SignalExplain.Threshold
+        if (!shown) { full should not be empty; screened shouldBe empty }
+      }
+    }
+  }
+
   "explain" should "find the same effects with the linear candidates screened on a subsample" in {
     val rec = sim(Seq(EffectSpec("harmonic", Map("order" -> 3, "amplitude_rel" -> 1e-3), "sin"),
       EffectSpec("harmonic", Map("order" -> 2, "amplitude_rel" -> 4e-4), "both"),

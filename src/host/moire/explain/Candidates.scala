@@ -356,8 +356,23 @@ final class Candidates(val engine: SignalEngine) {
     Some((r, (1 / math.sqrt(info)) / (2 * r), math.sqrt(0.5 * (nz.varS + nz.varC)), nz.m2ll))
   }
 
+  /** A long record's slope noise screened on the round's subsample (as its linear candidates): false when the slope's
+    * variance does not lower BIC there on the subsample's own count, and the search on all samples is left out (not
+    * significant on a million samples, it is not material on more).
+    */
+  private def passesScreen(ds: Int => Double, dc: Int => Double): Boolean = {
+    val idx = screenIdx
+    if (idx == null) return true
+    val m = idx.length
+    def pick(f: Int => Double) = Doubles.tabulate(m)(q => f(idx(q)))
+    val rs = pick(resS(_)); val rc = pick(resC(_))
+    val white = Noise.fit(rs, rc, null); val sloped = Noise.fit(rs, rc, (pick(ds), pick(dc)))
+    sloped.jitter2 > 0 && white.m2ll - sloped.m2ll - math.log(2.0 * m) > SignalExplain.Threshold
+  }
+
   def jitter(): Option[Cand] = {
     if (spec.slopeNoise || fMax <= 0) return None
+    if (!passesScreen(i => vs(i) * 2 * math.Pi * freq(i), i => vc(i) * 2 * math.Pi * freq(i))) return None
     val (ds, dc) = slopes()
     slopeNoise(ds, dc).map { case (j, sdj, white, m2ll) =>
       Cand(Jitter.name, "both", spec.copy(jitter = true), m2ll, 1, Map("jitter_s" -> j, "white_noise_fs" -> white),
@@ -368,6 +383,7 @@ final class Candidates(val engine: SignalEngine) {
   /** Phase noise of the motion: noise variance growing with the slope against the fringe phase (radians rms). */
   def phaseNoise(): Option[Cand] = {
     if (spec.slopeNoise) return None
+    if (!passesScreen(vs(_), vc(_))) return None
     val (ds, dc) = phaseSlopes()
     slopeNoise(ds, dc).map { case (r, sd, white, m2ll) =>
       Cand(PhaseNoise.name, "both", spec.copy(phaseNoise = true), m2ll, 1, Map("phase_noise_rad" -> r, "white_noise_fs" -> white),
