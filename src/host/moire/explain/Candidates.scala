@@ -372,7 +372,7 @@ final class Candidates(val engine: SignalEngine) {
 
   def jitter(): Option[Cand] = {
     if (spec.slopeNoise || fMax <= 0) return None
-    if (!passesScreen(i => vs(i) * 2 * math.Pi * freq(i), i => vc(i) * 2 * math.Pi * freq(i))) return None
+    if (!passesScreen(timeSlopeS, timeSlopeC)) return None
     val (ds, dc) = slopes()
     slopeNoise(ds, dc).map { case (j, sdj, white, m2ll) =>
       Cand(Jitter.name, "both", spec.copy(jitter = true), m2ll, 1, Map("jitter_s" -> j, "white_noise_fs" -> white),

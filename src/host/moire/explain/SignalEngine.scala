@@ -674,8 +674,10 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
   /** Slope of each channel against the fringe phase (full scale per radian), for the phase-noise model. */
   def phaseSlopes(): (Array[Double], Array[Double]) = (Doubles.tabulate(n)(i => vs(i)), Doubles.tabulate(n)(i => vc(i)))
   /** Slope of each channel against time (full scale per second), for the jitter noise model. */
-  def slopes(): (Array[Double], Array[Double]) =
-    (Doubles.tabulate(n)(i => vs(i) * 2 * math.Pi * freq(i)), Doubles.tabulate(n)(i => vc(i) * 2 * math.Pi * freq(i)))
+  def slopes(): (Array[Double], Array[Double]) = (Doubles.tabulate(n)(timeSlopeS), Doubles.tabulate(n)(timeSlopeC))
+  /** The slopes against time at sample i (`slopes`, read where they are needed). */
+  @inline final def timeSlopeS(i: Int): Double = vs(i) * 2 * math.Pi * freq(i)
+  @inline final def timeSlopeC(i: Int): Double = vc(i) * 2 * math.Pi * freq(i)
 
   def sumSq(a: Array[Double]): Double =
     Par.sum(a.length) { (lo, hi) => var s = 0.0; var i = lo; while (i < hi) { s += a(i) * a(i); i += 1 }; s }
