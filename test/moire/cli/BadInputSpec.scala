@@ -266,6 +266,7 @@ class BadInputSpec extends AnyFlatSpec with Matchers {
 
   behavior of "explain-bench"
   bad("--samples 0", "--samples must be in 10000..")("explain-bench", "--samples", "0")
+  bad("--runs 0", "--runs must be in 1..10, got 0")("explain-bench", "--runs", "0")
 
   behavior of "outputs (never over an input, a link, a pipe or a device)"
   private val model = dir / "m.json"

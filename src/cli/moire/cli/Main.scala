@@ -199,8 +199,9 @@ object Main {
   @main(doc = "Benchmark: simulate and explain one recording; print the time, samples per second and peak heap (also per million samples) of reading and of the whole explain.")
   def explainBench(@arg(doc = "samples in the recording (default 1000000)") samples: Int = 1000000,
                    @arg(doc = "folder for the recording, JSON and plots (default: a temporary folder)") out: Option[String] = None,
-                   @arg(doc = "explain this moire-recording v1 file instead of a simulated one (--samples is then ignored)") recording: Option[String] = None): Unit =
-    moire.explain.ExplainCmd.bench(samples, out.map(folderName(_)), recording, println(_))
+                   @arg(doc = "explain this moire-recording v1 file instead of a simulated one (--samples is then ignored)") recording: Option[String] = None,
+                   @arg(doc = "explain the file this many times in one JVM, each run's figures printed: the first includes the JIT's compiling, the others show the fit alone (1..10, default 1)") runs: Int = 1): Unit =
+    moire.explain.ExplainCmd.bench(samples, out.map(folderName(_)), recording, println(_), runs)
 
   @main(doc = "Write a board project: the board's top in Verilog inside its vendor project, and the command to run next.")
   def board(@arg(doc = "board name, one of the boards below (also accepted as the first word after board)") name: String,

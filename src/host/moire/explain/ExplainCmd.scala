@@ -232,22 +232,25 @@ object ExplainCmd {
   /** explain-bench's range of --samples: a few fringe periods of the ramp up to the 2^31-sample limit of an array. */
   val BenchMinSamples = 10000
   val BenchMaxSamples = 1 << 30
+  /** explain-bench's range of --runs (the same file explained again in the same JVM). */
+  val BenchMaxRuns = 10
 
   /** Simulates a recording with five effects (skew, bandwidth, harmonic, stuck bit, interference), or takes
     * `recording`, and explains it; `say` gets two lines: reading (with the per-file checks) and the whole
     * explain, each with its time, the peak heap and the peak heap per million samples.
     */
-  def bench(samples: Int, out: Option[String], recording: Option[String], say: String => Unit): Unit = {
+  def bench(samples: Int, out: Option[String], recording: Option[String], say: String => Unit, runs: Int = 1): Unit = {
     if (recording.isEmpty && (samples < BenchMinSamples || samples > BenchMaxSamples))
       throw new ExplainError(s"--samples must be in $BenchMinSamples..$BenchMaxSamples, got $samples")
+    if (runs < 1 || runs > BenchMaxRuns) throw new ExplainError(s"--runs must be in 1..$BenchMaxRuns, got $runs")
     out.foreach(d => moire.files.SafeWrite.checkFolder(os.Path(d, os.pwd)))
     // without --out the recording, JSON and plots go to a temporary folder, removed at the end (a 20 M recording is 180 MB)
     val temp = if (out.isEmpty) Some(os.temp.dir(prefix = "moire-bench", deleteOnExit = false)) else None
-    try benchIn(out.map(os.Path(_, os.pwd)).orElse(temp).get, samples, recording, say)
+    try benchIn(out.map(os.Path(_, os.pwd)).orElse(temp).get, samples, recording, say, runs)
     finally temp.foreach(d => try os.remove.all(d) catch { case _: java.io.IOException => () })
   }
 
-  private def benchIn(dir: os.Path, samples: Int, recording: Option[String], say: String => Unit): Unit = {
+  private def benchIn(dir: os.Path, samples: Int, recording: Option[String], say: String => Unit, runs: Int): Unit = {
     val file = recording.map { f =>
       val p = os.Path(f, os.pwd)
       moire.files.PathKind.notAFile(p).foreach(m => throw new ExplainError(m))
@@ -259,13 +262,17 @@ object ExplainCmd {
     def perM(peak: Double) = peak / (n / 1e6)
     say(f"explain-bench: read and checked $n rows ($mb%.0f MB file) in $readS%.1f s; peak heap in use $readPeak%.0f MB of $maxMb%.0f MB " +
       f"(${perM(readPeak)}%.1f MB per million samples)")
-    val cpu0 = cpuSeconds
-    val (rep, s, peak) = peakHeap(explain(Seq(file.toString), Some((dir / "json").toString), Some((dir / "plots").toString), None, quiet = false).head)
-    val cpu = cpuSeconds - cpu0
-    say(f"explain-bench: $n samples explained in $s%.1f s (read, fit, JSON, plots) = ${n / s}%.0f samples/s, ${1e6 * s / n}%.1f us per sample; " +
-      f"CPU $cpu%.1f s (${cpu / s}%.2f cores busy); " +
-      f"peak heap in use $peak%.0f MB of $maxMb%.0f MB (${perM(peak)}%.1f MB per million samples); ${Runtime.getRuntime.availableProcessors} cores" +
-      processor.fold("")(m => s" ($m)") + s"; findings: ${rep.findings.map(_.effect).mkString(", ")}")
+    // the first run in a new JVM (its JIT compiles the code as it runs), then the same file again in the same JVM
+    for (k <- 1 to runs) {
+      val cpu0 = cpuSeconds
+      val (rep, s, peak) = peakHeap(explain(Seq(file.toString), Some((dir / "json").toString), Some((dir / "plots").toString), None, quiet = runs > 1 && k > 1).head)
+      val cpu = cpuSeconds - cpu0
+      val which = if (runs == 1) "" else if (k == 1) s"run 1 of $runs (new JVM): " else s"run $k of $runs (same JVM): "
+      say(f"explain-bench: $which$n samples explained in $s%.1f s (read, fit, JSON, plots) = ${n / s}%.0f samples/s, ${1e6 * s / n}%.1f us per sample; " +
+        f"CPU $cpu%.1f s (${cpu / s}%.2f cores busy); " +
+        f"peak heap in use $peak%.0f MB of $maxMb%.0f MB (${perM(peak)}%.1f MB per million samples); ${Runtime.getRuntime.availableProcessors} cores" +
+        processor.fold("")(m => s" ($m)") + s"; findings: ${rep.findings.map(_.effect).mkString(", ")}")
+    }
     Laps.lines.foreach(l => say(s"explain-bench: $l"))
   }
 
