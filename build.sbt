@@ -128,16 +128,37 @@ lazy val root = (project in file("."))
       // -h is moire's, not the launcher script's (whose usage text would exit 1)
       """_moire_args=(); for a in "$@"; do [[ "$a" == "-h" ]] && a=--help; _moire_args+=("$a"); done; set -- "${_moire_args[@]}"""",
       "no_version_check=1",
-      // a stage copied elsewhere (its jars at other paths) starts without the archive, and says nothing of it
-      """[[ -f "$lib_dir/moire.jsa" ]] && { addJava "-XX:SharedArchiveFile=$lib_dir/moire.jsa"; addJava "-Xlog:cds*=off"; }""",
+      // the major version of the java this script runs (JAVA_HOME's, else PATH's), from its release file: no second JVM
+      """_moire_jv=$(j="$JAVA_HOME"; [[ -n "$j" && -x "$j/bin/java" ]] || j=$(dirname "$(dirname "$(readlink -f "$(command -v java)" 2>/dev/null)")"); sed -n 's/^JAVA_VERSION="\([0-9]*\).*/\1/p' "$j/release" 2>/dev/null)""",
+      // on JDK 25 and later an AOT cache (lib/moire.aot, written by `stage` on such a JDK: classes loaded and linked,
+      // the explain's method profiles) starts the JIT on the hot code at once; else the CDS archive of the classes a
+      // start loads. Another JDK than the one staged with (or, for the CDS archive, the jars at other paths) starts
+      // without them, and says nothing of it
+      """if [[ -f "$lib_dir/moire.aot" && "${_moire_jv:-0}" -ge 25 ]]; then addJava "-XX:AOTCache=$lib_dir/moire.aot"; addJava "-Xlog:aot*=off"; addJava "-Xlog:cds*=off"""" +
+        """; elif [[ -f "$lib_dir/moire.jsa" && "${_moire_jv:-0}" -lt 25 ]]; then addJava "-XX:SharedArchiveFile=$lib_dir/moire.jsa"; addJava "-Xlog:cds*=off"; fi""",
       """case " $* " in *" --help "*) addJava "-XX:TieredStopAtLevel=1"; addJava "-XX:+UseSerialGC";; esac"""),
     stage := {
       val dir = stage.value
-      val jsa = dir / "lib" / "moire.jsa"
-      IO.delete(jsa)
-      val code = scala.sys.process.Process(Seq((dir / "bin" / "moire").getPath, "--help"), None,
-        "JAVA_OPTS" -> s"-XX:ArchiveClassesAtExit=$jsa").!(scala.sys.process.ProcessLogger(_ => ()))
-      streams.value.log.info(if (code == 0 && jsa.exists) s"wrote $jsa (class data sharing: a faster start)" else s"no $jsa (exit $code); the launcher starts without it")
+      val jsa = dir / "lib" / "moire.jsa"; val aot = dir / "lib" / "moire.aot"
+      IO.delete(Seq(jsa, aot))
+      val log = streams.value.log
+      // the java the launcher will run, found as it finds it (JAVA_HOME, else PATH), and its major version
+      val javaHome = sys.env.get("JAVA_HOME").map(file).filter(h => (h / "bin" / "java").canExecute).orElse(
+        sys.env.getOrElse("PATH", "").split(java.io.File.pathSeparator).map(d => file(d) / "java").find(_.canExecute)
+          .map(j => j.getCanonicalFile.getParentFile.getParentFile))
+      val major = javaHome.flatMap(h => scala.util.Try(IO.readLines(h / "release")).toOption).getOrElse(Nil)
+        .collectFirst { case l if l.startsWith("JAVA_VERSION=") => l.drop(14).takeWhile(_.isDigit) }.filter(_.nonEmpty).map(_.toInt).getOrElse(0)
+      val quiet = scala.sys.process.ProcessLogger(_ => ())
+      val launcher = (dir / "bin" / "moire").getPath
+      if (major >= 25) {
+        // a training run: a short explain loads what explain loads and records its methods' profiles
+        val code = scala.sys.process.Process(Seq(launcher, "explain-bench", "--samples", "250000"), None,
+          "JAVA_OPTS" -> s"-XX:AOTCacheOutput=$aot").!(quiet)
+        log.info(if (code == 0 && aot.exists) s"wrote $aot (JDK $major: classes and the explain's profiles ahead of time)" else s"no $aot (exit $code); the launcher starts without it")
+      } else {
+        val code = scala.sys.process.Process(Seq(launcher, "--help"), None, "JAVA_OPTS" -> s"-XX:ArchiveClassesAtExit=$jsa").!(quiet)
+        log.info(if (code == 0 && jsa.exists) s"wrote $jsa (class data sharing: a faster start)" else s"no $jsa (exit $code); the launcher starts without it")
+      }
       dir
     },
     // the layers' own launchers are not wanted: stage the root only
