@@ -41,38 +41,60 @@ object Adequacy {
     */
   def floorOf(rs: Array[Double], rc: Array[Double], a: Int, b: Int, k: Int, skip: Array[Boolean], minCount: Int = 0): Double = {
     val c = coef(k); val norm = c.map(x => x * x).sum
-    val d2 = new Array[Double](2 * math.max(0, b - a)); var m = 0; var i = math.max(0, a)
+    // the squared differences are made again in each of three passes (count, sample, sum) instead of kept: an array
+    // of twice the record's length less (320 MB at 20 M samples), the same numbers in the same order
+    val m = squares(rs, rc, a, b, k, skip, c, Count, 1, 0.0, null)
+    if (m < minCount) return Double.NaN
+    if (m == 0) return 0.0
+    // the mean of the smallest (1 - Trim) of the squares, scaled to the full mean of a Gaussian's squares; the
+    // threshold from a strided sample of them, the correction from the fraction actually kept
+    val stride = math.max(1, m / 40000)
+    val smp = new Array[Double]((m + stride - 1) / stride)
+    squares(rs, rc, a, b, k, skip, c, Sample, stride, 0.0, smp); java.util.Arrays.sort(smp)
+    val thr = smp(math.min(smp.length - 1, ((1 - Trim) * smp.length).toInt))
+    val acc = new Array[Double](2)
+    squares(rs, rc, a, b, k, skip, c, Sum, 1, thr, acc)
+    val s = acc(0); val kept = acc(1).toLong
+    val p = kept.toDouble / m
+    val ms = if (kept == 0) 0.0
+      else if (p >= 1) s / kept
+      else {
+        // E[z^2 | |z| < q] = 1 - 2 q phi(q) / p, with P(|z| < q) = p
+        val q = normal.inverseCumulativeProbability(0.5 + 0.5 * p)
+        val cc = 1 - 2 * q * math.exp(-0.5 * q * q) / math.sqrt(2 * math.Pi) / p
+        if (cc > 0) s / kept / cc else s / kept
+      }
+    math.sqrt(ms / norm)
+  }
+
+  private final val Count = 0; private final val Sample = 1; private final val Sum = 2
+  /** One pass over the k-th differences' squares of rs (and rc, interleaved) over [a, b), skipping those that touch a
+    * sample where `skip` is true, in their order q = 0, 1, ...: `Count` counts them; `Sample` puts square q into
+    * out(q / stride) where q is a multiple of `stride`; `Sum` adds those at most `thr` into out(0) and counts them in
+    * out(1). Returns the count.
+    */
+  private def squares(rs: Array[Double], rc: Array[Double], a: Int, b: Int, k: Int, skip: Array[Boolean], c: Array[Double],
+                      mode: Int, stride: Int, thr: Double, out: Array[Double]): Int = {
+    var m = 0; var i = math.max(0, a); var sum = 0.0; var kept = 0L
     var bad = -1 // the last skipped sample at or before i + k
+    val per = if (rc != null) 2 else 1
     while (i + k < b) {
       if (skip != null) { var j = math.max(i, bad + 1); while (j <= i + k) { if (skip(j)) bad = j; j += 1 } }
       if (bad < i) {
         var s = 0.0; var t = 0.0; var j = 0
         while (j <= k) { s += c(j) * rs(i + j); if (rc != null) t += c(j) * rc(i + j); j += 1 }
-        d2(m) = s * s; m += 1
-        if (rc != null) { d2(m) = t * t; m += 1 }
+        var h = 0
+        while (h < per) {
+          val v = if (h == 0) s * s else t * t
+          if (mode == Sample) { if (m % stride == 0) out(m / stride) = v }
+          else if (mode == Sum) { if (v <= thr) { sum += v; kept += 1 } }
+          m += 1; h += 1
+        }
       }
       i += 1
     }
-    if (m < minCount) Double.NaN else if (m == 0) 0.0 else math.sqrt(trimmedMeanSquare(d2, m) / norm)
-  }
-
-  /** The mean of the smallest (1 - Trim) of d2(0 until m), scaled to the full mean of a Gaussian's squares. */
-  private def trimmedMeanSquare(d2: Array[Double], m: Int): Double = {
-    // the threshold from (a strided sample of) the values; the correction from the fraction actually kept
-    val stride = math.max(1, m / 40000)
-    val smp = Array.tabulate((m + stride - 1) / stride)(j => d2(j * stride)); java.util.Arrays.sort(smp)
-    val thr = smp(math.min(smp.length - 1, ((1 - Trim) * smp.length).toInt))
-    var s = 0.0; var kept = 0; var i = 0
-    while (i < m) { if (d2(i) <= thr) { s += d2(i); kept += 1 }; i += 1 }
-    val p = kept.toDouble / m
-    if (kept == 0) 0.0
-    else if (p >= 1) s / kept
-    else {
-      // E[z^2 | |z| < q] = 1 - 2 q phi(q) / p, with P(|z| < q) = p
-      val q = normal.inverseCumulativeProbability(0.5 + 0.5 * p)
-      val c = 1 - 2 * q * math.exp(-0.5 * q * q) / math.sqrt(2 * math.Pi) / p
-      if (c > 0) s / kept / c else s / kept
-    }
+    if (mode == Sum) { out(0) = sum; out(1) = kept.toDouble }
+    m
   }
   private val normal = new org.hipparchus.distribution.continuous.NormalDistribution(0, 1)
 

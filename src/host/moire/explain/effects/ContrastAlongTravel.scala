@@ -110,13 +110,14 @@ object ContrastAlongTravel extends Effect {
     * None when no inner knot pays for itself.
     */
   def knots(e: SignalEngine): Option[Vector[Double]] = {
-    val (z, span) = unit(e)
+    // `unit`'s position at each sample, made where it is read (not an array of the record's length: 160 MB at 20 M)
+    val m = e.travelMean; val (lo, hi) = e.travelRange; val zSpan = math.max(1e-12, hi - lo); val span = hi - lo
     val nb = math.max(8, math.min(MaxSearchBins, (span / MinKnotPeriods).toInt))
     val num = Array.ofDim[Double](2, nb); val den = Array.ofDim[Double](2, nb)
     // the noise floor from neighbouring samples (the model's residual still holds the change being looked for)
     val vS = math.max(1e-30, math.pow(Adequacy.floor(e), 2)); val vC = vS; var i = 0
     while (i < e.n) {
-      val b = math.min(nb - 1, (z(i) * nb).toInt)
+      val b = math.min(nb - 1, ((e.phase(i) - m - lo) / zSpan * nb).toInt)
       num(0)(b) += e.resS(i) * e.us(i) / vS; den(0)(b) += e.us(i) * e.us(i) / vS
       num(1)(b) += e.resC(i) * e.uc(i) / vC; den(1)(b) += e.uc(i) * e.uc(i) / vC
       i += 1
