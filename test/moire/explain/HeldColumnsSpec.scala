@@ -44,6 +44,21 @@ class HeldColumnsSpec extends AnyFlatSpec with Matchers {
     }
   }
 
+  "A contrast spline's columns" should "be made a block at a time as `splineCols` makes them whole, to the bit" in {
+    val e = new SignalEngine(sim(Seq(EffectSpec("contrast_along_travel", Map("gain_sin_per_period" -> 2e-5))), n = 30000)); e.init()
+    val k = Vector(0.0, 0.25, 0.6, 1.0)
+    val whole = effects.ContrastAlongTravel.splineCols(e, k)
+    val g = e.termGen(Term.ContrastSpline(k)).get
+    g.size shouldBe whole.size
+    // two blocks into the same buffers: the second at its offset
+    val o = g.buffers(e.n); g.fill(0, 12345, o, 0); g.fill(12345, e.n, o, 12345)
+    for ((col, j) <- whole.zipWithIndex) {
+      Option(o(2 * j)).map(_.toSeq) shouldBe Option(col.s).map(_.toSeq)
+      Option(o(2 * j + 1)).map(_.toSeq) shouldBe Option(col.c).map(_.toSeq)
+    }
+    whole.exists(c => c.s != null && c.s.exists(_ != 0)) shouldBe true
+  }
+
   "explain" should "give the same report with its terms' columns made again as with them held" in {
     val rec = sim(Seq(EffectSpec("harmonic", Map("order" -> 3, "amplitude_rel" -> 5e-4), "sin"),
       EffectSpec("drift", Map("offset_sin_per_s" -> 0.02, "gain_cos_per_s" -> 0.05)),

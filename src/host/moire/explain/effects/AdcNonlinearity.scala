@@ -37,12 +37,13 @@ object AdcNonlinearity extends Effect {
     * its mean, times the root of 2), relative to its mean.
     */
   def amplitudeRange(e: SignalEngine, ch: String): Double = {
-    val p = if (ch == "sin") e.predS else e.predC
+    // the prediction read where it is needed (not an array of the record's length)
+    val sin = ch == "sin"
     val m = e.n / Parts
     if (m < 16) return 0.0
     val a = (0 until Parts).map { k =>
       var s = 0.0; var q = 0.0; var i = k * m
-      while (i < (k + 1) * m) { s += p(i); q += p(i) * p(i); i += 1 }
+      while (i < (k + 1) * m) { val p = if (sin) e.predSAt(i) else e.predCAt(i); s += p; q += p * p; i += 1 }
       math.sqrt(2 * math.max(0.0, q / m - (s / m) * (s / m)))
     }
     val mean = a.sum / Parts
