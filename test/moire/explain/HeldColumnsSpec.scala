@@ -44,19 +44,23 @@ class HeldColumnsSpec extends AnyFlatSpec with Matchers {
     }
   }
 
-  "A contrast spline's columns" should "be made a block at a time as `splineCols` makes them whole, to the bit" in {
+  "A contrast spline's columns" should "be made a block at a time, and whole, as their definition gives them, to the bit" in {
     val e = new SignalEngine(sim(Seq(EffectSpec("contrast_along_travel", Map("gain_sin_per_period" -> 2e-5))), n = 30000)); e.init()
     val k = Vector(0.0, 0.25, 0.6, 1.0)
-    val whole = effects.ContrastAlongTravel.splineCols(e, k)
+    // the definition: the position as a fraction of the travel's range, each knot's hat function times u per channel
+    val x = e.travel; val (lo, hi) = (x.min, x.max); val z = x.map(v => (v - lo) / math.max(1e-12, hi - lo))
+    def col(j: Int, u: Int => Double) = Array.tabulate(e.n) { i => val w = effects.ContrastAlongTravel.hat(k, j, z(i)); if (w != 0) u(i) * w else 0.0 }
+    val want = (1 until k.size).flatMap(j => Seq((col(j, e.us), null), (null, col(j, e.uc))))
+    want.flatMap(w => Option(w._1)).exists(_.exists(_ != 0)) shouldBe true
     val g = e.termGen(Term.ContrastSpline(k)).get
-    g.size shouldBe whole.size
+    g.size shouldBe want.size
     // two blocks into the same buffers: the second at its offset
     val o = g.buffers(e.n); g.fill(0, 12345, o, 0); g.fill(12345, e.n, o, 12345)
-    for ((col, j) <- whole.zipWithIndex) {
-      Option(o(2 * j)).map(_.toSeq) shouldBe Option(col.s).map(_.toSeq)
-      Option(o(2 * j + 1)).map(_.toSeq) shouldBe Option(col.c).map(_.toSeq)
+    val whole = effects.ContrastAlongTravel.splineCols(e, k)
+    for (((ws, wc), j) <- want.zipWithIndex) {
+      Option(o(2 * j)).map(_.toSeq) shouldBe Option(ws).map(_.toSeq); Option(o(2 * j + 1)).map(_.toSeq) shouldBe Option(wc).map(_.toSeq)
+      Option(whole(j).s).map(_.toSeq) shouldBe Option(ws).map(_.toSeq); Option(whole(j).c).map(_.toSeq) shouldBe Option(wc).map(_.toSeq)
     }
-    whole.exists(c => c.s != null && c.s.exists(_ != 0)) shouldBe true
   }
 
   "explain" should "give the same report with its terms' columns made again as with them held" in {

@@ -406,22 +406,7 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
         }
       case Term.Interference(hz) =>
         gen(Array(T, T, F, F), Array(F, F, T, T)) { (lo, hi, o, at) => lineBlock(hz, lo, hi, o(0), o(2), o(5), o(7), at) }
-      case Term.ContrastSpline(k) =>
-        // `splineCols`: per inner knot j, the sin channel's fundamental times its hat function, then the cos channel's;
-        // the position as a fraction of the travel's range made per sample as `ContrastAlongTravel.unit` makes it
-        val m = travelMean; val (tlo, thi) = travelRange; val span = math.max(1e-12, thi - tlo); val kn = k.size
-        gen(Array.tabulate(2 * (kn - 1))(c => c % 2 == 0), Array.tabulate(2 * (kn - 1))(c => c % 2 == 1)) { (lo, hi, o, at) =>
-          var i = lo
-          while (i < hi) {
-            val q = at + i - lo; val z = (phase(i) - m - tlo) / span; var j = 1
-            while (j < kn) {
-              val w = effects.ContrastAlongTravel.hat(k, j, z)
-              if (w != 0) { o(4 * (j - 1))(q) = us(i) * w; o(4 * (j - 1) + 3)(q) = uc(i) * w } else { o(4 * (j - 1))(q) = 0.0; o(4 * (j - 1) + 3)(q) = 0.0 }
-              j += 1
-            }
-            i += 1
-          }
-        }
+      case Term.ContrastSpline(k) => Some(effects.ContrastAlongTravel.splineGen(this, k))
       case _ => None
     }
   }

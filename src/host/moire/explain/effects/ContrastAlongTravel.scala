@@ -75,14 +75,12 @@ object ContrastAlongTravel extends Effect {
   /** The span of positions the record covers (fringe periods). */
   def travelSpan(e: SignalEngine): Double = { val (lo, hi) = e.travelRange; hi - lo }
 
-  /** The position along the travel as a fraction 0..1 of its range, and the range (fringe periods). */
-  private def unit(e: SignalEngine): (Array[Double], Double) = {
-    val x = e.travel; var lo = Double.MaxValue; var hi = -Double.MaxValue
-    x.foreach { v => lo = math.min(lo, v); hi = math.max(hi, v) }
-    val span = math.max(1e-12, hi - lo)
-    var i = 0
-    while (i < x.length) { x(i) = (x(i) - lo) / span; i += 1 }
-    (x, hi - lo)
+  /** The position along the travel as a fraction 0..1 of its range is (phase(i) - m - lo) / span at sample i (made
+    * where it is read): m, lo and span, and the range (fringe periods).
+    */
+  private def unit(e: SignalEngine): (Double, Double, Double, Double) = {
+    val m = e.travelMean; val (lo, hi) = e.travelRange
+    (m, lo, math.max(1e-12, hi - lo), hi - lo)
   }
 
   /** The hat function of knot j of `k` at z (1 at its knot, 0 at its neighbours and beyond). */
@@ -91,14 +89,36 @@ object ContrastAlongTravel extends Effect {
     else if (j + 1 < k.size && z >= k(j) && z <= k(j + 1)) (k(j + 1) - z) / (k(j + 1) - k(j))
     else 0.0
 
-  /** The spline's columns: each channel's fitted fundamental times the hat function of every knot but the first. */
+  /** The spline's columns made a block of samples at a time: per knot but the first, the sin channel's fitted
+    * fundamental times the knot's hat function, then the cos channel's.
+    */
+  def splineGen(e: SignalEngine, k: Vector[Double]): ColGen = {
+    val (m, lo, span, _) = unit(e); val kn = k.size; val ks = k.toArray
+    new ColGen(Array.tabulate(2 * (kn - 1))(_ % 2 == 0), Array.tabulate(2 * (kn - 1))(_ % 2 == 1), (a, b, o, at) => {
+      var j = 1
+      while (j < kn) { java.util.Arrays.fill(o(4 * (j - 1)), at, at + b - a, 0.0); java.util.Arrays.fill(o(4 * (j - 1) + 3), at, at + b - a, 0.0); j += 1 }
+      // the knots rise, so only the two of the interval [ks(t), ks(t + 1)] that holds z can have a hat above zero there
+      var t = 0; var i = a
+      while (i < b) {
+        val q = at + i - a; val z = (e.phase(i) - m - lo) / span
+        while (t > 0 && z < ks(t)) t -= 1
+        while (t < kn - 2 && z > ks(t + 1)) t += 1
+        j = math.max(1, t)
+        while (j <= t + 1 && j < kn) {
+          val w = hat(k, j, z)
+          if (w != 0) { o(4 * (j - 1))(q) = e.us(i) * w; o(4 * (j - 1) + 3)(q) = e.uc(i) * w }
+          j += 1
+        }
+        i += 1
+      }
+    })
+  }
+
+  /** The spline's columns, whole (made a block at a time: the block's columns stay in cache). */
   def splineCols(e: SignalEngine, k: Vector[Double]): IndexedSeq[Col] = {
-    val (z, _) = unit(e)
-    (1 until k.size).flatMap { j =>
-      val s = new Array[Double](e.n); val c = new Array[Double](e.n); var i = 0
-      while (i < e.n) { val w = hat(k, j, z(i)); if (w != 0) { s(i) = e.us(i) * w; c(i) = e.uc(i) * w }; i += 1 }
-      IndexedSeq(Col(s, null), Col(null, c))
-    }
+    val g = splineGen(e, k); val o = g.buffers(e.n); var a = 0
+    while (a < e.n) { val b = math.min(e.n, a + Gram.Block); g.fill(a, b, o, a); a = b }
+    (0 until g.size).map(j => Col(o(2 * j), o(2 * j + 1)))
   }
 
   /** The knots of the smooth candidate, chosen by the criterion. The residual's amplitude is measured in bins of one
@@ -110,8 +130,8 @@ object ContrastAlongTravel extends Effect {
     * None when no inner knot pays for itself.
     */
   def knots(e: SignalEngine): Option[Vector[Double]] = {
-    // `unit`'s position at each sample, made where it is read (not an array of the record's length: 160 MB at 20 M)
-    val m = e.travelMean; val (lo, hi) = e.travelRange; val zSpan = math.max(1e-12, hi - lo); val span = hi - lo
+    // the position at each sample made where it is read (not an array of the record's length: 160 MB at 20 M)
+    val (m, lo, zSpan, span) = unit(e)
     val nb = math.max(8, math.min(MaxSearchBins, (span / MinKnotPeriods).toInt))
     val num = Array.ofDim[Double](2, nb); val den = Array.ofDim[Double](2, nb)
     // the noise floor from neighbouring samples (the model's residual still holds the change being looked for)
