@@ -48,15 +48,32 @@ object Locate {
     // the slowest, the speed at each eighth of the samples, the fastest
     lazy val sorted = OrderStats.of(n, i => math.abs(e.freq(i)), (0 until sb).map(k => k * n / sb) :+ (n - 1))
     lazy val edges = Array.tabulate(sb - 1)(k => sorted(k + 1))
-    def sbin(i: Int) = { val f = math.abs(e.freq(i)); val ed = edges; var b = 0; while (b < ed.length && f > ed(b)) b += 1; b }
-    if ((want("against speed") || want("noise against speed")) && sorted(sb) - sorted(0) > 0.05 * sorted(sb)) {
-      for ((r, sd, u, v, ch) <- Seq[(Array[Double], Double, Int => Double, Int => Double, String)]((rs, sdS, e.us(_), e.vs(_), "sin"), (rc, sdC, e.uc(_), e.vc(_), "cos"))) {
-        val pu = new Array[Double](sb); val pv = new Array[Double](sb); val uu = new Array[Double](sb); val vv = new Array[Double](sb)
-        var i = 0
-        while (i < n) { val b = sbin(i); pu(b) += r(i) * u(i); uu(b) += u(i) * u(i); pv(b) += r(i) * v(i); vv(b) += v(i) * v(i); i += 1 }
-        val za = (0 until sb).map(b => if (uu(b) > 0) pu(b) * pu(b) / (uu(b) * sd * sd) else 0.0)
-        val zp = (0 until sb).map(b => if (vv(b) > 0) pv(b) * pv(b) / (vv(b) * sd * sd) else 0.0)
-        val amp = (0 until sb).map(b => if (uu(b) > 0) pu(b) / uu(b) else 0.0); val ph = (0 until sb).map(b => if (vv(b) > 0) math.toDegrees(pv(b) / vv(b)) else 0.0)
+    if ((want("against speed") || want("noise against speed")) && sorted(sb) - sorted(0) > 0.05 * sorted(sb)) Laps("locate: against speed") {
+      // one pass: each sample's speed bin found once for both channels' projections and the noise (each sum gets the
+      // same additions in the same order as a pass of its own)
+      val ed = edges
+      val pu = Array.ofDim[Double](2, sb); val pv = Array.ofDim[Double](2, sb); val uu = Array.ofDim[Double](2, sb); val vv = Array.ofDim[Double](2, sb)
+      val ss = new Array[Double](sb); val cnt = new Array[Int](sb)
+      val (puS, pvS, uuS, vvS) = (pu(0), pv(0), uu(0), vv(0)); val (puC, pvC, uuC, vvC) = (pu(1), pv(1), uu(1), vv(1))
+      val vS = sdS * sdS; val vC = sdC * sdC
+      // the fitted fundamentals as `SignalEngine.us` etc. make them, from locals (the stores below may not be assumed
+      // to leave the engine's arrays alone: read through the engine, its coefficients were loaded again every sample)
+      val bs = e.base; val (b1, b2, b4, b5) = (bs(1), bs(2), bs(4), bs(5)); val (s1, s2, c1, c2, fr) = (e.s1, e.s2, e.c1, e.c2, e.freq)
+      var i = 0
+      while (i < n) {
+        val f = math.abs(fr(i)); var b = 0; while (b < ed.length && f > ed(b)) b += 1
+        val r = rs(i); val q = rc(i)
+        val us = b1 * s1(i) + b2 * s2(i); val vs = b1 * s2(i) - b2 * s1(i); val uc = b4 * c1(i) + b5 * c2(i); val vc = b4 * c2(i) - b5 * c1(i)
+        puS(b) += r * us; uuS(b) += us * us; pvS(b) += r * vs; vvS(b) += vs * vs
+        puC(b) += q * uc; uuC(b) += uc * uc; pvC(b) += q * vc; vvC(b) += vc * vc
+        ss(b) += r * r / vS + q * q / vC; cnt(b) += 2
+        i += 1
+      }
+      for ((sd, ch, k) <- Seq((sdS, "sin", 0), (sdC, "cos", 1))) {
+        val (pu1, pv1, uu1, vv1) = (pu(k), pv(k), uu(k), vv(k))
+        val za = (0 until sb).map(b => if (uu1(b) > 0) pu1(b) * pu1(b) / (uu1(b) * sd * sd) else 0.0)
+        val zp = (0 until sb).map(b => if (vv1(b) > 0) pv1(b) * pv1(b) / (vv1(b) * sd * sd) else 0.0)
+        val amp = (0 until sb).map(b => if (uu1(b) > 0) pu1(b) / uu1(b) else 0.0); val ph = (0 until sb).map(b => if (vv1(b) > 0) math.toDegrees(pv1(b) / vv1(b)) else 0.0)
         val z = zOf(za.sum + zp.sum - 4, 2 * sb - 4)
         val lo = sorted(0) / 1e3; val hi = sorted(sb) / 1e3
         out += Located(s"against speed, $ch channel",
@@ -64,8 +81,6 @@ object Locate {
           Map("chi2_sd" -> z, "amplitude_low_rel" -> amp.head, "amplitude_high_rel" -> amp.last, "phase_low_deg" -> ph.head, "phase_high_deg" -> ph.last), z > Z)
       }
       // noise against speed (jitter-like)
-      val ss = new Array[Double](sb); val cnt = new Array[Int](sb); var i = 0
-      while (i < n) { val b = sbin(i); ss(b) += rs(i) * rs(i) / (sdS * sdS) + rc(i) * rc(i) / (sdC * sdC); cnt(b) += 2; i += 1 }
       val all = ss.sum / math.max(1, cnt.sum)
       val ratio = (0 until sb).map(b => ss(b) / math.max(1, cnt(b)) / all)
       val zz = (0 until sb).map(b => (ratio(b) - 1) / math.sqrt(2.0 / math.max(1, cnt(b))))
