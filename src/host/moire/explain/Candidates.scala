@@ -471,7 +471,7 @@ final class Candidates(val engine: SignalEngine) {
     if (m < 64) return None
     val ps = new Array[Double](m / 2)
     // both channels' power by one complex FFT
-    val both = Fft.powerSum(resS, resC, m); for (k <- 1 until m / 2) ps(k) = both(k)
+    val both = Laps("interference: spectrum")(Fft.powerSum(resS, resC, m)); for (k <- 1 until m / 2) ps(k) = both(k)
     val k0 = (4 until m / 2).maxBy(ps(_))
     val bin = fs / m
     if (spec.terms.exists { case Term.Interference(h) => math.abs(h - k0 * bin) < 3 * bin; case _ => false }) return None
@@ -489,8 +489,8 @@ final class Candidates(val engine: SignalEngine) {
       }
       -(a * a + b * b + c * c + d * d)
     }
-    val hz = minimize(power, (k0 - 1) * bin, (k0 + 1) * bin, grid = 8, golden = 16)
-    screenedLinear(Term.Interference(hz))
+    val hz = Laps("interference: search")(minimize(power, (k0 - 1) * bin, (k0 + 1) * bin, grid = 8, golden = 16))
+    Laps("interference: fit")(screenedLinear(Term.Interference(hz)))
   }
 
   def faults(): Seq[Cand] = {

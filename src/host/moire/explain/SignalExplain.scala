@@ -32,7 +32,7 @@ object Snapshot {
     val stride = (n + MaxPoints - 1) / MaxPoints
     if (stride == 1) Snapshot(label, 1, rs.clone(), rc.clone(), null, null)
     else {
-      def every(a: Array[Double]) = Array.tabulate((n + stride - 1) / stride)(j => a(j * stride))
+      def every(a: Array[Double]) = Doubles.tabulate((n + stride - 1) / stride)(j => a(j * stride))
       val h = math.min(n, SpectrumPoints)
       Snapshot(label, stride, every(rs), every(rc), java.util.Arrays.copyOf(rs, h), java.util.Arrays.copyOf(rc, h))
     }
