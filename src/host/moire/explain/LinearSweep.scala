@@ -88,62 +88,118 @@ object LinearSweep {
     val (fromS, pairsS) = plan(onS, 0); val (fromC, pairsC) = plan(onC, 1)
     val rows = if (idx == null) n else idx.length
     val nOrders = orders.size // a list's size is a walk along it: not at every sample
+    // where each family value goes (`v` in the families' layout: two per column, its sin part and its cos part): the
+    // row of the chunk it is laid out in, per channel; -1 where that channel does not read it
+    val rowS = Array.fill(2 * colAt(nf))(-1); val rowC = Array.fill(2 * colAt(nf))(-1)
+    for (r <- fromS.indices) rowS(fromS(r)) = 4 + r
+    for (r <- fromC.indices) rowC(fromC(r)) = 4 + r
     // each thread's chunk buffers, made once per pass (not per block of rows)
-    val bufs = ThreadLocal.withInitial[(Array[Array[Double]], Array[Array[Double]])](() =>
-      (Array.ofDim[Double](4 + fromS.length, Chunk), Array.ofDim[Double](4 + fromC.length, Chunk)))
+    final class Bufs {
+      val s: Array[Array[Double]] = Array.ofDim[Double](4 + fromS.length, Chunk); val c: Array[Array[Double]] = Array.ofDim[Double](4 + fromC.length, Chunk)
+      val at = new Array[Int](Chunk) // the chunk's sample indices
+      val u: Array[Array[Double]] = Array.ofDim[Double](4, Chunk) // us, vs, uc, vc at them
+      val sn = new Array[Double](Chunk); val cn = new Array[Double](Chunk); val amp = new Array[Double](Chunk)
+      val re = new Array[Double](Chunk); val im = new Array[Double](Chunk); val on = new Array[Boolean](Chunk)
+    }
+    val bufs = ThreadLocal.withInitial[Bufs](() => new Bufs)
     val sums = Par.sums(rows, mS + mC + 2, Gram.Block) { (lo, hi, acc) =>
-      val v = new Array[Double](2 * colAt(nf)) // the families' column values at a sample: (sin part, cos part) per column
       val sc = new Array[Double](2)
-      val (bufS, bufC) = bufs.get() // every row of a chunk is written before it is read
+      val B = bufs.get(); val bufS = B.s; val bufC = B.c // every row of a chunk is written before it is read
+      val at = B.at; val (us, vs, uc, vc) = (B.u(0), B.u(1), B.u(2), B.u(3))
+      // the chunk's row of value index x of the families' layout (on the channel that reads it), or null
+      def dst(x: Int): Array[Double] = if (rowS(x) >= 0) bufS(rowS(x)) else if (rowC(x) >= 0) bufC(rowC(x)) else null
       var c0 = lo
       while (c0 < hi) {
         val m = math.min(Chunk, hi - c0)
+        // the default part's rows and each sample's fitted fundamentals; then the families' rows, one family (one
+        // harmonic order) across the chunk at a time: the same values, as `termCols` makes them, without a sample's
+        // rotations waiting on each other
         var k = 0
         while (k < m) {
           val row = c0 + k
           val i = if (idx == null) row else idx(row)
-          // the families' columns at sample i, as their termCols make them
-          val usi = us(i); val vsi = vs(i); val uci = uc(i); val vci = vc(i)
-          if (maxOrder > 0) {
-            def harm(u: Double, w: Double, part: Int): Unit = {
-              val a = math.sqrt(u * u + w * w)
-              if (a > 0) {
-                val ia = 1 / a; val s = u * ia; val c = w * ia; var re = 1.0; var im = 0.0; var j = 0
-                while (j < maxOrder) {
-                  val r2 = re * c - im * s; im = re * s + im * c; re = r2; j += 1
-                  val f = orderAt(j)
-                  if (f >= 0) { val at = 2 * colAt(f) + 4 * part; v(at + part) = a * im; v(at + 2 + part) = a * re }
-                }
-              } else { var f = 0; while (f < nOrders) { val at = 2 * colAt(f) + 4 * part; v(at + part) = 0; v(at + 2 + part) = 0; f += 1 } }
-            }
-            harm(usi, vsi, 0); harm(uci, vci, 1)
-          }
-          var f = nOrders
-          while (f < nf) {
-            val at = 2 * colAt(f)
-            fams(f) match {
-              case _: Term.Inl =>
-                val p = repS(i) - resS(i); val q = repC(i) - resC(i)
-                v(at) = (2 * p * p - 1) * lsb; v(at + 1) = (2 * q * q - 1) * lsb
-                v(at + 2) = (4 * p * p * p - 3 * p) * lsb; v(at + 3) = (4 * q * q * q - 3 * q) * lsb
-              case Term.Crosstalk =>
-                val w = twoPi * freq(i); v(at) = vci * w; v(at + 3) = vsi * w
-              case Term.Interference(hz) =>
-                val t = hz * i / fs; Turns.sinCos(t - math.floor(t), sc, 0)
-                v(at) = sc(0); v(at + 2) = sc(1); v(at + 5) = sc(0); v(at + 7) = sc(1)
-              case Term.Warmup(tau) =>
-                val w = math.exp(-i / fs / tau); v(at) = w; v(at + 3) = w; v(at + 4) = usi * w; v(at + 7) = uci * w
-              case t =>
-                val x = if (t == Term.Drift) (i - drift) / fs else phase(i) - meanPhase
-                v(at) = x; v(at + 3) = x; v(at + 4) = usi * x; v(at + 7) = uci * x
-            }
-            f += 1
-          }
+          at(k) = i; us(k) = e.us(i); vs(k) = e.vs(i); uc(k) = e.uc(i); vc(k) = e.vc(i)
           bufS(0)(k) = 1.0; bufS(1)(k) = s1(i); bufS(2)(k) = s2(i); bufS(3)(k) = resS(i)
           bufC(0)(k) = 1.0; bufC(1)(k) = c1(i); bufC(2)(k) = c2(i); bufC(3)(k) = resC(i)
-          var r = 0; while (r < fromS.length) { bufS(4 + r)(k) = v(fromS(r)); r += 1 }
-          r = 0; while (r < fromC.length) { bufC(4 + r)(k) = v(fromC(r)); r += 1 }
           k += 1
+        }
+        if (maxOrder > 0) {
+          val sn = B.sn; val cn = B.cn; val amp = B.amp; val re = B.re; val im = B.im; val on = B.on
+          var part = 0
+          while (part < 2) {
+            val u = if (part == 0) us else uc; val w = if (part == 0) vs else vc
+            k = 0
+            while (k < m) {
+              val a = math.sqrt(u(k) * u(k) + w(k) * w(k))
+              on(k) = a > 0
+              if (a > 0) { val ia = 1 / a; sn(k) = u(k) * ia; cn(k) = w(k) * ia; amp(k) = a; re(k) = 1.0; im(k) = 0.0 }
+              k += 1
+            }
+            var j = 0
+            while (j < maxOrder) {
+              k = 0
+              while (k < m) {
+                if (on(k)) { val r2 = re(k) * cn(k) - im(k) * sn(k); im(k) = re(k) * sn(k) + im(k) * cn(k); re(k) = r2 }
+                k += 1
+              }
+              j += 1
+              val f = orderAt(j)
+              if (f >= 0) {
+                val x = 2 * colAt(f) + 4 * part
+                val dIm = dst(x + part); val dRe = dst(x + 2 + part)
+                k = 0
+                while (k < m) {
+                  if (on(k)) { if (dIm != null) dIm(k) = amp(k) * im(k); if (dRe != null) dRe(k) = amp(k) * re(k) }
+                  else { if (dIm != null) dIm(k) = 0; if (dRe != null) dRe(k) = 0 }
+                  k += 1
+                }
+              }
+            }
+            part += 1
+          }
+        }
+        var f = nOrders
+        while (f < nf) {
+          val x = 2 * colAt(f)
+          val d0 = dst(x); val d1 = dst(x + 1); val d2 = dst(x + 2); val d3 = dst(x + 3)
+          fams(f) match {
+            case _: Term.Inl =>
+              k = 0
+              while (k < m) {
+                val i = at(k); val p = repS(i) - resS(i); val q = repC(i) - resC(i)
+                if (d0 != null) d0(k) = (2 * p * p - 1) * lsb
+                if (d1 != null) d1(k) = (2 * q * q - 1) * lsb
+                if (d2 != null) d2(k) = (4 * p * p * p - 3 * p) * lsb
+                if (d3 != null) d3(k) = (4 * q * q * q - 3 * q) * lsb
+                k += 1
+              }
+            case Term.Crosstalk =>
+              k = 0
+              while (k < m) {
+                val w = twoPi * freq(at(k)); if (d0 != null) d0(k) = vc(k) * w; if (d3 != null) d3(k) = vs(k) * w
+                k += 1
+              }
+            case Term.Interference(hz) =>
+              val d5 = dst(x + 5); val d7 = dst(x + 7)
+              k = 0
+              while (k < m) {
+                val t = hz * at(k) / fs; Turns.sinCos(t - math.floor(t), sc, 0)
+                if (d0 != null) d0(k) = sc(0); if (d2 != null) d2(k) = sc(1); if (d5 != null) d5(k) = sc(0); if (d7 != null) d7(k) = sc(1)
+                k += 1
+              }
+            case tm =>
+              val d4 = dst(x + 4); val d7 = dst(x + 7)
+              val tau = tm match { case Term.Warmup(t) => t; case _ => Double.NaN }
+              val kind = tm match { case _: Term.Warmup => 0; case Term.Drift => 1; case _ => 2 }
+              k = 0
+              while (k < m) {
+                val i = at(k)
+                val z = if (kind == 0) math.exp(-i / fs / tau) else if (kind == 1) (i - drift) / fs else phase(i) - meanPhase
+                if (d0 != null) d0(k) = z; if (d3 != null) d3(k) = z; if (d4 != null) d4(k) = us(k) * z; if (d7 != null) d7(k) = uc(k) * z
+                k += 1
+              }
+          }
+          f += 1
         }
         // the chunk's products, row by row
         def channel(buf: Array[Array[Double]], pairs: Array[Int], off: Int): Unit = {
