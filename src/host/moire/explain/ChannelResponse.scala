@@ -64,28 +64,39 @@ private[explain] final class ResponseTable(resp: ChannelResponse, lo: Double, hi
   // per bin, for A and B of each channel (x1 = A sn + B cs, x2 = A cs - B sn): c0 + c1 u + c2 u^2, u in [-1/2, 1/2]
   private val c = new Array[Double](12 * k)
   val ok: Boolean = {
-    val o = new Array[Double](4)
-    def at(f: Double): Array[Double] = { resp(f, 1.0, 0.0, o); Array(o(0), -o(1), o(2), -o(3)) }
-    var fine = true; var b = 0
-    var left = at(lo)
-    while (b < k) {
-      val mid = at(lo + (b + 0.5) * width); val right = at(lo + (b + 1) * width)
-      var j = 0
-      while (j < 4) {
-        val m = left(j); val z = mid(j); val p = right(j)
-        c(12 * b + 3 * j) = z; c(12 * b + 3 * j + 1) = p - m; c(12 * b + 3 * j + 2) = 2 * (p + m - 2 * z)
-        j += 1
-      }
-      for (u <- Seq(-0.25, 0.25)) {
-        val x = at(lo + (b + 0.5 + u) * width)
-        for (j <- 0 until 4) {
-          val q = c(12 * b + 3 * j) + u * (c(12 * b + 3 * j + 1) + u * c(12 * b + 3 * j + 2))
-          if (!(math.abs(q - x(j)) <= tol * math.max(1.0, math.abs(x(j))))) fine = false
+    // the bins in parts on all cores (a bin's left end is the response at its own left edge, which is the one before's
+    // right edge: the same number), without an array or a closure per response
+    val parts = math.min(16, k); val per = (k + parts - 1) / parts; val fine = Array.fill(parts)(true)
+    Par.each(parts, 16L * k) { part =>
+      val o = new Array[Double](4); var l = new Array[Double](4); val z = new Array[Double](4); var r = new Array[Double](4)
+      val x = new Array[Double](4)
+      def at(f: Double, to: Array[Double]): Unit = { resp(f, 1.0, 0.0, o); to(0) = o(0); to(1) = -o(1); to(2) = o(2); to(3) = -o(3) }
+      var b = part * per; val end = math.min(k, (part + 1) * per)
+      if (b < end) at(if (b == 0) lo else lo + b * width, l)
+      while (b < end) {
+        at(lo + (b + 0.5) * width, z); at(lo + (b + 1) * width, r)
+        var j = 0
+        while (j < 4) {
+          val m = l(j); val zj = z(j); val p = r(j)
+          c(12 * b + 3 * j) = zj; c(12 * b + 3 * j + 1) = p - m; c(12 * b + 3 * j + 2) = 2 * (p + m - 2 * zj)
+          j += 1
         }
+        var side = 0
+        while (side < 2) {
+          val u = if (side == 0) -0.25 else 0.25
+          at(lo + (b + 0.5 + u) * width, x)
+          j = 0
+          while (j < 4) {
+            val q = c(12 * b + 3 * j) + u * (c(12 * b + 3 * j + 1) + u * c(12 * b + 3 * j + 2))
+            if (!(math.abs(q - x(j)) <= tol * math.max(1.0, math.abs(x(j))))) fine(part) = false
+            j += 1
+          }
+          side += 1
+        }
+        val t = l; l = r; r = t; b += 1
       }
-      left = right; b += 1
     }
-    fine
+    fine.forall(identity)
   }
 
   /** As `ChannelResponse.apply`, from the table. */
