@@ -108,21 +108,9 @@ object LinearSweep {
       val at = B.at; val (us, vs, uc, vc) = (B.u(0), B.u(1), B.u(2), B.u(3))
       // the chunk's row of value index x of the families' layout (on the channel that reads it), or null
       def dst(x: Int): Array[Double] = if (rowS(x) >= 0) bufS(rowS(x)) else if (rowC(x) >= 0) bufC(rowC(x)) else null
-      var c0 = lo
-      while (c0 < hi) {
-        val m = math.min(Chunk, hi - c0)
-        // the default part's rows and each sample's fitted fundamentals; then the families' rows, one family (one
-        // harmonic order) across the chunk at a time: the same values, as `termCols` makes them, without a sample's
-        // rotations waiting on each other
+      // the harmonics' rows of a chunk of m samples (a method of its own, as `others`: small methods to compile)
+      def harmonics(m: Int): Unit = {
         var k = 0
-        while (k < m) {
-          val row = c0 + k
-          val i = if (idx == null) row else idx(row)
-          at(k) = i; us(k) = e.us(i); vs(k) = e.vs(i); uc(k) = e.uc(i); vc(k) = e.vc(i)
-          bufS(0)(k) = 1.0; bufS(1)(k) = s1(i); bufS(2)(k) = s2(i); bufS(3)(k) = resS(i)
-          bufC(0)(k) = 1.0; bufC(1)(k) = c1(i); bufC(2)(k) = c2(i); bufC(3)(k) = resC(i)
-          k += 1
-        }
         if (maxOrder > 0) {
           val sn = B.sn; val cn = B.cn; val amp = B.amp; val re = B.re; val im = B.im; val on = B.on
           var part = 0
@@ -158,6 +146,10 @@ object LinearSweep {
             part += 1
           }
         }
+      }
+      // the other families' rows of a chunk of m samples
+      def others(m: Int): Unit = {
+        var k = 0
         var f = nOrders
         while (f < nf) {
           val x = 2 * colAt(f)
@@ -201,6 +193,23 @@ object LinearSweep {
           }
           f += 1
         }
+      }
+      var c0 = lo
+      while (c0 < hi) {
+        val m = math.min(Chunk, hi - c0)
+        // the default part's rows and each sample's fitted fundamentals; then the families' rows, one family (one
+        // harmonic order) across the chunk at a time: the same values, as `termCols` makes them, without a sample's
+        // rotations waiting on each other
+        var k = 0
+        while (k < m) {
+          val row = c0 + k
+          val i = if (idx == null) row else idx(row)
+          at(k) = i; us(k) = e.us(i); vs(k) = e.vs(i); uc(k) = e.uc(i); vc(k) = e.vc(i)
+          bufS(0)(k) = 1.0; bufS(1)(k) = s1(i); bufS(2)(k) = s2(i); bufS(3)(k) = resS(i)
+          bufC(0)(k) = 1.0; bufC(1)(k) = c1(i); bufC(2)(k) = c2(i); bufC(3)(k) = resC(i)
+          k += 1
+        }
+        harmonics(m); others(m)
         // the chunk's products, row by row
         def channel(buf: Array[Array[Double]], pairs: Array[Int], off: Int): Unit = {
           var q = 0

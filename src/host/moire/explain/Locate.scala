@@ -12,37 +12,56 @@ object Locate {
 
   /** Every test, or those whose `where` starts with a name `want` takes (the ones an effect claims). */
   def all(e: SignalEngine, want: String => Boolean = _ => true): Seq[Located] = {
-    val rs = e.resS; val rc = e.resC; val lsb = e.lsb
-    val sdS = math.sqrt(e.noise.varS); val sdC = math.sqrt(e.noise.varC)
+    // each test its own method: small methods for the JIT to compile (one method of all of them was compiled four
+    // times over in a run, a few seconds of a compiler thread on a 2-core machine)
     val out = Seq.newBuilder[Located]
-    val n = e.n
+    againstTime(e, want, out); againstPhase(e, want, out); againstSpeed(e, want, out); spectrum(e, want, out)
+    perChannel(e, want, out); codeHistogram(e, want, out)
+    out.result()
+  }
 
-    /** Bin means of one channel's residual by bin index; returns (chi2, worst bin, its mean). */
-    def binMeans(r: Array[Double], sd: Double, bins: Int, bin: Int => Int): (Double, Int, Double, Array[Double]) = {
-      val sum = new Array[Double](bins); val cnt = new Array[Int](bins); var i = 0
-      while (i < n) { val b = bin(i); sum(b) += r(i); cnt(b) += 1; i += 1 }
-      val mean = Array.tabulate(bins)(b => if (cnt(b) > 0) sum(b) / cnt(b) else 0.0)
-      val z2 = Array.tabulate(bins)(b => if (cnt(b) > 0) mean(b) * mean(b) * cnt(b) / (sd * sd) else 0.0)
-      val used = cnt.count(_ > 0)
-      val worst = z2.indices.maxBy(z2(_))
-      (z2.sum - 1, worst, mean(worst), mean) -> used match { case ((c, w, m, a), u) => (zOf(c, math.max(1, u - 1)), w, m, a) }
-    }
+  /** Bin means of one channel's residual by bin index; returns (chi2, worst bin, its mean). */
+  private def binMeans(n: Int, r: Array[Double], sd: Double, bins: Int, bin: Int => Int): (Double, Int, Double, Array[Double]) = {
+    val sum = new Array[Double](bins); val cnt = new Array[Int](bins); var i = 0
+    while (i < n) { val b = bin(i); sum(b) += r(i); cnt(b) += 1; i += 1 }
+    val mean = Array.tabulate(bins)(b => if (cnt(b) > 0) sum(b) / cnt(b) else 0.0)
+    val z2 = Array.tabulate(bins)(b => if (cnt(b) > 0) mean(b) * mean(b) * cnt(b) / (sd * sd) else 0.0)
+    val used = cnt.count(_ > 0)
+    val worst = z2.indices.maxBy(z2(_))
+    (z2.sum - 1, worst, mean(worst), mean) -> used match { case ((c, w, m, a), u) => (zOf(c, math.max(1, u - 1)), w, m, a) }
+  }
 
+  /** Residual means against time. */
+  private def againstTime(e: SignalEngine, want: String => Boolean, out: scala.collection.mutable.Builder[Located, Seq[Located]]): Unit = {
+    val rs = e.resS; val rc = e.resC; val lsb = e.lsb; val n = e.n
+    val sdS = math.sqrt(e.noise.varS); val sdC = math.sqrt(e.noise.varC)
     // against time
     val tb = 32
     for ((r, sd, ch) <- Seq((rs, sdS, "sin"), (rc, sdC, "cos")) if want("against time")) {
-      val (z, w, m, _) = binMeans(r, sd, tb, i => (i.toLong * tb / n).toInt)
+      val (z, w, m, _) = binMeans(n, r, sd, tb, i => (i.toLong * tb / n).toInt)
       val t0 = w * n / tb / e.fs; val t1 = (w + 1) * n / tb / e.fs
       out += Located(s"against time, $ch channel", f"residual mean ${m / lsb}%.2f LSB at $t0%.4g..$t1%.4g s (chi-square ${z}%.1f sd)",
         Map("chi2_sd" -> z, "t0_s" -> t0, "t1_s" -> t1, "mean_lsb" -> m / lsb), z > Z)
     }
+  }
+
+  /** Residual means against fringe phase. */
+  private def againstPhase(e: SignalEngine, want: String => Boolean, out: scala.collection.mutable.Builder[Located, Seq[Located]]): Unit = {
+    val rs = e.resS; val rc = e.resC; val lsb = e.lsb; val n = e.n
+    val sdS = math.sqrt(e.noise.varS); val sdC = math.sqrt(e.noise.varC)
     // against fringe phase
     val pb = 64
     for ((r, sd, ch) <- Seq((rs, sdS, "sin"), (rc, sdC, "cos")) if want("against fringe phase")) {
-      val (z, w, m, _) = binMeans(r, sd, pb, i => { val p = e.phase(i) - math.floor(e.phase(i)); math.min(pb - 1, (p * pb).toInt) })
+      val (z, w, m, _) = binMeans(n, r, sd, pb, i => { val p = e.phase(i) - math.floor(e.phase(i)); math.min(pb - 1, (p * pb).toInt) })
       out += Located(s"against fringe phase, $ch channel", f"residual mean ${m / lsb}%.2f LSB near ${360.0 * (w + 0.5) / pb}%.0f degree (chi-square $z%.1f sd)",
         Map("chi2_sd" -> z, "phase_deg" -> 360.0 * (w + 0.5) / pb, "mean_lsb" -> m / lsb), z > Z)
     }
+  }
+
+  /** Amplitude, phase and noise against speed. */
+  private def againstSpeed(e: SignalEngine, want: String => Boolean, out: scala.collection.mutable.Builder[Located, Seq[Located]]): Unit = {
+    val rs = e.resS; val rc = e.resC; val lsb = e.lsb; val n = e.n
+    val sdS = math.sqrt(e.noise.varS); val sdC = math.sqrt(e.noise.varC)
     // against speed: in-phase (amplitude) and quadrature (phase) projections per speed bin
     val sb = 8
     // the slowest, the speed at each eighth of the samples, the fastest
@@ -51,24 +70,9 @@ object Locate {
     if ((want("against speed") || want("noise against speed")) && sorted(sb) - sorted(0) > 0.05 * sorted(sb)) Laps("locate: against speed") {
       // one pass: each sample's speed bin found once for both channels' projections and the noise (each sum gets the
       // same additions in the same order as a pass of its own)
-      val ed = edges
       val pu = Array.ofDim[Double](2, sb); val pv = Array.ofDim[Double](2, sb); val uu = Array.ofDim[Double](2, sb); val vv = Array.ofDim[Double](2, sb)
       val ss = new Array[Double](sb); val cnt = new Array[Int](sb)
-      val (puS, pvS, uuS, vvS) = (pu(0), pv(0), uu(0), vv(0)); val (puC, pvC, uuC, vvC) = (pu(1), pv(1), uu(1), vv(1))
-      val vS = sdS * sdS; val vC = sdC * sdC
-      // the fitted fundamentals as `SignalEngine.us` etc. make them, from locals (the stores below may not be assumed
-      // to leave the engine's arrays alone: read through the engine, its coefficients were loaded again every sample)
-      val bs = e.base; val (b1, b2, b4, b5) = (bs(1), bs(2), bs(4), bs(5)); val (s1, s2, c1, c2, fr) = (e.s1, e.s2, e.c1, e.c2, e.freq)
-      var i = 0
-      while (i < n) {
-        val f = math.abs(fr(i)); var b = 0; while (b < ed.length && f > ed(b)) b += 1
-        val r = rs(i); val q = rc(i)
-        val us = b1 * s1(i) + b2 * s2(i); val vs = b1 * s2(i) - b2 * s1(i); val uc = b4 * c1(i) + b5 * c2(i); val vc = b4 * c2(i) - b5 * c1(i)
-        puS(b) += r * us; uuS(b) += us * us; pvS(b) += r * vs; vvS(b) += vs * vs
-        puC(b) += q * uc; uuC(b) += uc * uc; pvC(b) += q * vc; vvC(b) += vc * vc
-        ss(b) += r * r / vS + q * q / vC; cnt(b) += 2
-        i += 1
-      }
+      speedSums(e, edges, sdS * sdS, sdC * sdC, pu, pv, uu, vv, ss, cnt)
       for ((sd, ch, k) <- Seq((sdS, "sin", 0), (sdC, "cos", 1))) {
         val (pu1, pv1, uu1, vv1) = (pu(k), pv(k), uu(k), vv(k))
         val za = (0 until sb).map(b => if (uu1(b) > 0) pu1(b) * pu1(b) / (uu1(b) * sd * sd) else 0.0)
@@ -88,6 +92,34 @@ object Locate {
       out += Located("noise against speed", f"residual variance x${ratio.head}%.3f at low speed, x${ratio.last}%.3f at high speed (chi-square $z%.1f sd)",
         Map("chi2_sd" -> z, "variance_low_rel" -> ratio.head, "variance_high_rel" -> ratio.last), z > Z)
     }
+  }
+
+  /** The speed bins' sums of `againstSpeed` (per channel the residual's projections on the fitted fundamental and its
+    * slope, and their squares; the noise's), from one pass: a method of its own, a small one to compile.
+    */
+  private def speedSums(e: SignalEngine, ed: Array[Double], vS: Double, vC: Double, pu: Array[Array[Double]], pv: Array[Array[Double]],
+                        uu: Array[Array[Double]], vv: Array[Array[Double]], ss: Array[Double], cnt: Array[Int]): Unit = {
+    val rs = e.resS; val rc = e.resC; val n = e.n
+    val (puS, pvS, uuS, vvS) = (pu(0), pv(0), uu(0), vv(0)); val (puC, pvC, uuC, vvC) = (pu(1), pv(1), uu(1), vv(1))
+    // the fitted fundamentals as `SignalEngine.us` etc. make them, from locals (the stores below may not be assumed
+    // to leave the engine's arrays alone: read through the engine, its coefficients were loaded again every sample)
+    val bs = e.base; val (b1, b2, b4, b5) = (bs(1), bs(2), bs(4), bs(5)); val (s1, s2, c1, c2, fr) = (e.s1, e.s2, e.c1, e.c2, e.freq)
+    var i = 0
+    while (i < n) {
+      val f = math.abs(fr(i)); var b = 0; while (b < ed.length && f > ed(b)) b += 1
+      val r = rs(i); val q = rc(i)
+      val us = b1 * s1(i) + b2 * s2(i); val vs = b1 * s2(i) - b2 * s1(i); val uc = b4 * c1(i) + b5 * c2(i); val vc = b4 * c2(i) - b5 * c1(i)
+      puS(b) += r * us; uuS(b) += us * us; pvS(b) += r * vs; vvS(b) += vs * vs
+      puC(b) += q * uc; uuC(b) += uc * uc; pvC(b) += q * vc; vvC(b) += vc * vc
+      ss(b) += r * r / vS + q * q / vC; cnt(b) += 2
+      i += 1
+    }
+  }
+
+  /** The strongest line of each channel's residual spectrum. */
+  private def spectrum(e: SignalEngine, want: String => Boolean, out: scala.collection.mutable.Builder[Located, Seq[Located]]): Unit = {
+    val rs = e.resS; val rc = e.resC; val lsb = e.lsb; val n = e.n
+    val sdS = math.sqrt(e.noise.varS); val sdC = math.sqrt(e.noise.varC)
     // spectrum
     val m = Integer.highestOneBit(math.min(n, 1 << 18))
     if (m >= 256 && want("spectrum")) {
@@ -101,15 +133,27 @@ object Locate {
           Map("frequency_hz" -> hz, "amplitude_lsb" -> ampl / lsb, "peak_to_mean" -> x), x > thr)
       }
     }
+  }
+
+  /** Each channel's residual rms. */
+  private def perChannel(e: SignalEngine, want: String => Boolean, out: scala.collection.mutable.Builder[Located, Seq[Located]]): Unit = {
+    val rs = e.resS; val rc = e.resC; val lsb = e.lsb; val n = e.n
+    val sdS = math.sqrt(e.noise.varS); val sdC = math.sqrt(e.noise.varC)
     // per channel
     if (want("per channel")) out += Located("per channel", f"residual rms sin ${sdS / lsb}%.2f LSB, cos ${sdC / lsb}%.2f LSB", Map("rms_sin_lsb" -> sdS / lsb, "rms_cos_lsb" -> sdC / lsb), false)
+  }
+
+  /** Constant bits and pile-ups at the extremes of each channel's codes. */
+  private def codeHistogram(e: SignalEngine, want: String => Boolean, out: scala.collection.mutable.Builder[Located, Seq[Located]]): Unit = {
+    val rs = e.resS; val rc = e.resC; val lsb = e.lsb; val n = e.n
+    val sdS = math.sqrt(e.noise.varS); val sdC = math.sqrt(e.noise.varC)
     // code histogram: constant bits and pile-ups at the extremes
     for ((codes, ch) <- Seq((e.rec.sin, "sin"), (e.rec.cos, "cos")) if want("code histogram")) {
       val bits = e.rec.adc.bits
       val adc = e.rec.adc
-      val pins = new Array[Int](1 << bits); codes.foreach(c => pins(c) += 1)
+      val pins = new Array[Int](1 << bits); var i = 0; while (i < n) { pins(codes(i)) += 1; i += 1 }
       val frac = (0 until bits).map(b => pins.indices.filter(c => ((c >> b) & 1) == 1).map(pins(_).toLong).sum.toDouble / n)
-      val hist = new Array[Int](1 << bits); codes.foreach(c => hist(adc.fromPins(c) + adc.half) += 1)
+      val hist = new Array[Int](1 << bits); i = 0; while (i < n) { hist(adc.fromPins(codes(i)) + adc.half) += 1; i += 1 }
       val stuck = (e.coarseBits until bits - 2).filter(b => frac(b) == 0.0 || frac(b) == 1.0)
       val hi = hist.lastIndexWhere(_ > 0); val lo = hist.indexWhere(_ > 0)
       def pile(c: Int, nb: Int) = hist(c).toDouble / math.max(1, if (nb >= 0 && nb < hist.length) hist(nb) else 0)
@@ -123,6 +167,5 @@ object Locate {
           f"signed codes ${lo - adc.half}..${hi - adc.half}, ${hist(hi)} samples at the top code (${pileHi}%.1f x its neighbour), ${hist(lo)} at the bottom (${pileLo}%.1f x)",
         Map("code_min" -> (lo - adc.half), "code_max" -> (hi - adc.half), "pile_high" -> pileHi, "pile_low" -> pileLo, "constant_bits" -> stuck.size), sig)
     }
-    out.result()
   }
 }

@@ -11,8 +11,8 @@ object OrderStats {
   def of(n: Int, x: Int => Double, ranks: Seq[Int]): Array[Double] = {
     require(n > 0 && ranks.forall(r => r >= 0 && r < n), s"ranks must lie in 0 until $n")
     val block = math.max(Par.Block, (n + 15) / 16)
-    var lo = Double.PositiveInfinity; var hi = Double.NegativeInfinity; var nan = 0; var i = 0
-    while (i < n) { val v = x(i); if (v != v) nan += 1 else { if (v < lo) lo = v; if (v > hi) hi = v }; i += 1 }
+    // each pass a method of its own (small methods to compile: the one method was compiled three times in a run)
+    val (lo, hi, nan) = range(n, x)
     val real = n - nan
     val span = hi - lo
     if (real == 0 || !(span < Double.PositiveInfinity)) return sorted(n, x, ranks)
@@ -28,18 +28,30 @@ object OrderStats {
     def bucketOf(r: Int): Int = { var k = 0; while (start(k + 1) <= r) k += 1; k }
     val wanted = ranks.filter(_ < real).map(bucketOf).distinct.toArray
     val slot = Array.fill(Buckets)(-1); wanted.indices.foreach(j => slot(wanted(j)) = j)
-    val held = wanted.map(k => new Array[Double](counts(k).toInt)); val fill = new Array[Int](wanted.length)
-    i = 0
-    while (i < n) {
-      val v = x(i)
-      if (v == v) { val s = slot(bucket(v)); if (s >= 0) { held(s)(fill(s)) = v; fill(s) += 1 } }
-      i += 1
-    }
+    val held = wanted.map(k => new Array[Double](counts(k).toInt))
+    gather(n, x, lo, scale, slot, held)
     held.foreach(a => java.util.Arrays.sort(a))
     ranks.map { r =>
       if (r >= real) Double.NaN
       else { val k = bucketOf(r); held(slot(k))((r - start(k)).toInt) }
     }.toArray
+  }
+
+  /** The lowest and highest value that is not NaN, and the count of NaN. */
+  private def range(n: Int, x: Int => Double): (Double, Double, Int) = {
+    var lo = Double.PositiveInfinity; var hi = Double.NegativeInfinity; var nan = 0; var i = 0
+    while (i < n) { val v = x(i); if (v != v) nan += 1 else { if (v < lo) lo = v; if (v > hi) hi = v }; i += 1 }
+    (lo, hi, nan)
+  }
+
+  /** The values in the buckets kept (slot >= 0) into their arrays, in the values' order. */
+  private def gather(n: Int, x: Int => Double, lo: Double, scale: Double, slot: Array[Int], held: Array[Array[Double]]): Unit = {
+    val fill = new Array[Int](held.length); var i = 0
+    while (i < n) {
+      val v = x(i)
+      if (v == v) { val s = slot(math.min(Buckets - 1, ((v - lo) * scale).toInt)); if (s >= 0) { held(s)(fill(s)) = v; fill(s) += 1 } }
+      i += 1
+    }
   }
 
   /** The same by a sort (what `of` must equal). */
