@@ -483,7 +483,7 @@ final class Candidates(val engine: SignalEngine) {
         val i = at(k)
         // sin and cos of the line's phase from its turns (the reference path: the library's)
         if (ref) { val x = 2 * math.Pi * hz * i / fs; sc(0) = math.sin(x); sc(1) = math.cos(x) }
-        else { val t = hz * i / fs; Turns.sinCos(t - math.floor(t), sc, 0) }
+        else { val t = hz * i / fs; Turns.sinCos(t - Turns.floor(t), sc, 0) }
         val sx = sc(0); val cx = sc(1)
         a += resS(i) * sx; b += resS(i) * cx; c += resC(i) * sx; d += resC(i) * cx; k += 1
       }

@@ -61,6 +61,7 @@ private[explain] final class ResponseTable(resp: ChannelResponse, lo: Double, hi
   private val width = if (hi > lo) (hi - lo) / bins else 0.0
   private val inv = if (width > 0) 1 / width else 0.0
   private val k = if (width > 0) bins else 1
+  private val last = (k - 1).toDouble
   // per bin, for A and B of each channel (x1 = A sn + B cs, x2 = A cs - B sn): c0 + c1 u + c2 u^2, u in [-1/2, 1/2]
   private val c = new Array[Double](12 * k)
   val ok: Boolean = {
@@ -102,8 +103,9 @@ private[explain] final class ResponseTable(resp: ChannelResponse, lo: Double, hi
   /** As `ChannelResponse.apply`, from the table. */
   @inline def apply(f: Double, sn: Double, cs: Double, out: Array[Double]): Unit = {
     val x = (f - lo) * inv
-    val b = if (x <= 0) 0 else if (x >= k - 1) k - 1 else x.toInt
-    val u = x - b - 0.5; val o = 12 * b
+    // the bin as a double (floor, as `toInt` here) and as an int: no int made a double again (see `Turns.floor`)
+    val bd = if (x <= 0) 0.0 else if (x >= last) last else Turns.floor(x); val b = bd.toInt
+    val u = x - bd - 0.5; val o = 12 * b
     val as = c(o) + u * (c(o + 1) + u * c(o + 2)); val bs = c(o + 3) + u * (c(o + 4) + u * c(o + 5))
     val ac = c(o + 6) + u * (c(o + 7) + u * c(o + 8)); val bc = c(o + 9) + u * (c(o + 10) + u * c(o + 11))
     out(0) = as * sn + bs * cs; out(1) = as * cs - bs * sn

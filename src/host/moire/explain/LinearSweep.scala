@@ -175,7 +175,7 @@ object LinearSweep {
               val d5 = dst(x + 5); val d7 = dst(x + 7)
               k = 0
               while (k < m) {
-                val t = hz * at(k) / fs; Turns.sinCos(t - math.floor(t), sc, 0)
+                val t = hz * at(k) / fs; Turns.sinCos(t - Turns.floor(t), sc, 0)
                 if (d0 != null) d0(k) = sc(0); if (d2 != null) d2(k) = sc(1); if (d5 != null) d5(k) = sc(0); if (d7 != null) d7(k) = sc(1)
                 k += 1
               }

@@ -254,9 +254,9 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
   def fMax: Double = speedRange._2
 
   /** 2 pi times the fractional fringe phase of sample i. */
-  @inline final def angle(i: Int): Double = 2 * math.Pi * (phase(i) - math.floor(phase(i)))
+  @inline final def angle(i: Int): Double = 2 * math.Pi * (phase(i) - Turns.floor(phase(i)))
   /** The fractional fringe phase of sample i (turns, in [0, 1]). */
-  @inline final def turn(i: Int): Double = phase(i) - math.floor(phase(i))
+  @inline final def turn(i: Int): Double = phase(i) - Turns.floor(phase(i))
 
   // the phase's changes, and the phase and spec the fundamentals were made for (made again only when either changed)
   private var phaseCount = 0L

@@ -14,9 +14,22 @@ object Turns {
   private val S1 = 1.0 / 6; private val S2 = 1.0 / 20; private val S3 = 1.0 / 42
   private val C2 = 1.0 / 12; private val C3 = 1.0 / 30; private val C4 = 1.0 / 56
 
+  /** 1.5 * 2^52: a double below 2^51 in magnitude plus this, less this, is the integer nearest it. */
+  private val Magic = 6755399441055744.0
+  private val Limit = 2251799813685248.0 // 2^51
+
+  /** `math.floor(t)` to the bit, from an addition and a subtraction: the library's `roundsd`, as the int made a double
+    * (`cvtsi2sd`), writes only part of its register and waits on that register's last value, which chained each
+    * sample's sin and cos to the one before (a 1 M-sample loop of `sinCos`: 35 -> 22 ms).
+    */
+  @inline def floor(t: Double): Double =
+    if (!(math.abs(t) < Limit) || t == 0.0) math.floor(t) // beyond 2^51, infinite, NaN; and -0.0, which floors to itself
+    else { val r = (t + Magic) - Magic; if (r > t) r - 1 else r }
+
   /** sin(2 pi x) and cos(2 pi x) into out(at), out(at + 1), for x in [0, 1]. */
   @inline def sinCos(x: Double, out: Array[Double], at: Int): Unit = {
-    val t = x * N; val j = t.toInt; val r = (t - j) * Step; val r2 = r * r
+    // the index truncated (as `toInt`), as a double without converting the int back
+    val t = x * N; val jd = if (t >= 0) floor(t) else -floor(-t); val j = jd.toInt; val r = (t - jd) * Step; val r2 = r * r
     val sr = r * (1 - r2 * S1 * (1 - r2 * S2 * (1 - r2 * S3)))
     val cr = 1 - r2 * 0.5 * (1 - r2 * C2 * (1 - r2 * C3 * (1 - r2 * C4)))
     val s = S(j); val c = C(j)
