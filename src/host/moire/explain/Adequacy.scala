@@ -43,8 +43,9 @@ object Adequacy {
     Laps("adequacy: noise floor")(floorOf0(rs, rc, a, b, k, skip, minCount))
   private def floorOf0(rs: Array[Double], rc: Array[Double], a: Int, b: Int, k: Int, skip: Array[Boolean], minCount: Int): Double = {
     val c = coef(k); val norm = c.map(x => x * x).sum
-    // the squared differences are made again in each of three passes (count, sample, sum) instead of kept: an array
-    // of twice the record's length less (320 MB at 20 M samples), the same numbers in the same order
+    // the squared differences are made where they are read instead of kept (an array of twice the record's length
+    // less: 320 MB at 20 M samples), the same numbers in the same order: with nothing skipped, the count from the
+    // length, the sample's squares alone, then one pass for the sum; else a pass each (count, sample, sum)
     val m = squares(rs, rc, a, b, k, skip, c, Count, 1, 0.0, null)
     if (m < minCount) return Double.NaN
     if (m == 0) return 0.0

@@ -60,7 +60,7 @@ object Locate {
 
   /** Amplitude, phase and noise against speed. */
   private def againstSpeed(e: SignalEngine, want: String => Boolean, out: scala.collection.mutable.Builder[Located, Seq[Located]]): Unit = {
-    val rs = e.resS; val rc = e.resC; val lsb = e.lsb; val n = e.n
+    val n = e.n
     val sdS = math.sqrt(e.noise.varS); val sdC = math.sqrt(e.noise.varC)
     // against speed: in-phase (amplitude) and quadrature (phase) projections per speed bin
     val sb = 8
@@ -119,7 +119,6 @@ object Locate {
   /** The strongest line of each channel's residual spectrum. */
   private def spectrum(e: SignalEngine, want: String => Boolean, out: scala.collection.mutable.Builder[Located, Seq[Located]]): Unit = {
     val rs = e.resS; val rc = e.resC; val lsb = e.lsb; val n = e.n
-    val sdS = math.sqrt(e.noise.varS); val sdC = math.sqrt(e.noise.varC)
     // spectrum
     val m = Integer.highestOneBit(math.min(n, 1 << 18))
     if (m >= 256 && want("spectrum")) {
@@ -137,7 +136,7 @@ object Locate {
 
   /** Each channel's residual rms. */
   private def perChannel(e: SignalEngine, want: String => Boolean, out: scala.collection.mutable.Builder[Located, Seq[Located]]): Unit = {
-    val rs = e.resS; val rc = e.resC; val lsb = e.lsb; val n = e.n
+    val lsb = e.lsb
     val sdS = math.sqrt(e.noise.varS); val sdC = math.sqrt(e.noise.varC)
     // per channel
     if (want("per channel")) out += Located("per channel", f"residual rms sin ${sdS / lsb}%.2f LSB, cos ${sdC / lsb}%.2f LSB", Map("rms_sin_lsb" -> sdS / lsb, "rms_cos_lsb" -> sdC / lsb), false)
@@ -145,8 +144,7 @@ object Locate {
 
   /** Constant bits and pile-ups at the extremes of each channel's codes. */
   private def codeHistogram(e: SignalEngine, want: String => Boolean, out: scala.collection.mutable.Builder[Located, Seq[Located]]): Unit = {
-    val rs = e.resS; val rc = e.resC; val lsb = e.lsb; val n = e.n
-    val sdS = math.sqrt(e.noise.varS); val sdC = math.sqrt(e.noise.varC)
+    val n = e.n
     // code histogram: constant bits and pile-ups at the extremes
     for ((codes, ch) <- Seq((e.rec.sin, "sin"), (e.rec.cos, "cos")) if want("code histogram")) {
       val bits = e.rec.adc.bits

@@ -44,7 +44,7 @@ private[explain] final class ProfileSums(e: SignalEngine, idx: Array[Int]) {
       // a run of points in one bin at a time (the fringe frequency moves slowly): its sums in local variables, then
       // added to the bin's place (in an array, each sample's 27 additions waited on the array's last store)
       while (q < end) {
-        val cur = binOf(e.freq(at(q)))
+        val cur = binOf(e.freq(at(q))); val curD = cur.toDouble // the bin as a double once a run (see `Turns.floor`)
         var a00 = 0.0; var a01 = 0.0; var a02 = 0.0; var a10 = 0.0; var a11 = 0.0; var a12 = 0.0; var a20 = 0.0; var a21 = 0.0; var a22 = 0.0
         var a30 = 0.0; var a31 = 0.0; var a32 = 0.0; var a40 = 0.0; var a41 = 0.0; var a42 = 0.0; var a50 = 0.0; var a51 = 0.0; var a52 = 0.0
         var a60 = 0.0; var a61 = 0.0; var a62 = 0.0; var a70 = 0.0; var a71 = 0.0; var a72 = 0.0; var a80 = 0.0; var a81 = 0.0; var a82 = 0.0
@@ -53,7 +53,7 @@ private[explain] final class ProfileSums(e: SignalEngine, idx: Array[Int]) {
           val i = at(q); val f = e.freq(i)
           if (binOf(f) != cur) going = false
           else {
-            val u = if (width > 0) (f - lo) * inv - cur - 0.5 else 0.0
+            val u = if (width > 0) (f - lo) * inv - curD - 0.5 else 0.0
             Turns.sinCos(e.turn(i), sc, 0); val sn = sc(0); val cs = sc(1)
             // the data less the terms: the residual plus the default part
             val ys = rs(i) + b0 + b1 * s1(i) + b2 * s2(i); val yc = rc(i) + b3 + b4 * c1(i) + b5 * c2(i)
