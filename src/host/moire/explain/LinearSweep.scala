@@ -2,8 +2,8 @@ package moire.explain
 
 /** The linear candidates whose columns are a function of the sample (the harmonics of the fringe, the ADCs'
   * nonlinearity, crosstalk, drift, a contrast change along the travel; a warm-up or a pickup line once its time constant
-  * or frequency is searched) fitted from one pass over the samples: at each
-  * sample every family's columns are made, laid out by rows for a chunk of samples, and their products with the default
+  * or frequency is searched) fitted from one pass over the samples: for a chunk of samples at a time, every family's
+  * columns are made (a family across the chunk at a time) and laid out by rows, and their products with the default
   * part's columns, with each other and with the residual summed per channel, in blocks on all cores. No column of the
   * record's length is made. Each family's sums are the ones `LinearFamily` takes from its columns (`LinearSweepSpec`:
   * the same fits).
