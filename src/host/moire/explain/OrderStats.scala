@@ -18,7 +18,7 @@ object OrderStats {
     if (real == 0 || !(span < Double.PositiveInfinity)) return sorted(n, x, ranks)
     if (span == 0) return ranks.map(r => if (r < real) lo else Double.NaN).toArray
     val scale = Buckets / span
-    @inline def bucket(v: Double): Int = math.min(Buckets - 1, ((v - lo) * scale).toInt)
+    @inline def bucket(v: Double): Int = bucketAt(v, lo, scale)
     val counts = Par.sums(n, Buckets, block) { (a, b, acc) =>
       var i = a; while (i < b) { val v = x(i); if (v == v) acc(bucket(v)) += 1; i += 1 }
     }
@@ -37,6 +37,9 @@ object OrderStats {
     }.toArray
   }
 
+  /** The bucket of value v (of the range from lo, `scale` buckets per unit). */
+  @inline private def bucketAt(v: Double, lo: Double, scale: Double): Int = math.min(Buckets - 1, ((v - lo) * scale).toInt)
+
   /** The lowest and highest value that is not NaN, and the count of NaN. */
   private def range(n: Int, x: Int => Double): (Double, Double, Int) = {
     var lo = Double.PositiveInfinity; var hi = Double.NegativeInfinity; var nan = 0; var i = 0
@@ -49,7 +52,7 @@ object OrderStats {
     val fill = new Array[Int](held.length); var i = 0
     while (i < n) {
       val v = x(i)
-      if (v == v) { val s = slot(math.min(Buckets - 1, ((v - lo) * scale).toInt)); if (s >= 0) { held(s)(fill(s)) = v; fill(s) += 1 } }
+      if (v == v) { val s = slot(bucketAt(v, lo, scale)); if (s >= 0) { held(s)(fill(s)) = v; fill(s) += 1 } }
       i += 1
     }
   }
