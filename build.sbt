@@ -16,6 +16,13 @@ lazy val common = Seq(
   Compile / packageDoc / publishArtifact := false
 )
 
+/** Closures compiled to classes of their own (in the jar, and in the CDS archive) instead of made at their first call by
+  * the JDK's lambda factory: a new JVM's 1 M explain spent some 1.8 s of C2 compiling that factory's bytecode writer, and
+  * took 27.5 and 26.9 s instead of 31.1 and 29.4 s (docs/explain.md, the twelfth step). The host and cli layers only:
+  * the hardware layers run Chisel, where a new JVM's start is not what counts.
+  */
+lazy val classLambdas = scalacOptions += "-Ydelambdafy:inline"
+
 /** A layer whose Scala lives in `dir` (no test sources of its own: tests are in the root project). */
 def layer(id: String, dir: String) = Project(id, file(dir))
   .settings(common)
@@ -45,6 +52,7 @@ lazy val boards = layer("boards", "boards").dependsOn(hw).settings(
 
 /** Host tools: recording, stream codec and recorder, replay, explain, cost, the papers' tables, calibration. */
 lazy val host = layer("host", "src/host").dependsOn(boards).settings(
+  classLambdas,
   libraryDependencies ++= Seq(
     "org.hipparchus" % "hipparchus-core" % "4.0.3",
     "org.hipparchus" % "hipparchus-stat" % "4.0.3",
@@ -61,6 +69,7 @@ lazy val host = layer("host", "src/host").dependsOn(boards).settings(
 
 /** The command line: parses options, calls the libraries, turns their errors into one line and an exit code. */
 lazy val cli = layer("cli", "src/cli").dependsOn(host).settings(
+  classLambdas,
   libraryDependencies += "com.lihaoyi" %% "mainargs" % "0.7.6",
   Compile / mainClass := Some("moire.cli.Main"),
   // `moire --version`: the version and the git commit of the build ("unknown" outside a git checkout)
