@@ -28,17 +28,29 @@ object Gram {
     (g, r)
   }
 
-  /** One block's sums, in the order (0,0), y0, (1,0), (1,1), y1, ... : pair (i, j <= i), then column i against y. */
+  /** One block's sums, in the order (0,0), y0, (1,0), (1,1), y1, ... : pair (i, j <= i), then column i against y. A fold's
+    * rows (`idx`) are gathered first, in a method of its own: with the gather a branch of this one, each fold's call
+    * after plain ones made the JIT drop its code and compile it again (four times in a new JVM's 1 M run).
+    */
   private[explain] def block(as: Array[Array[Double]], ac: Array[Array[Double]], ys: Array[Double], yc: Array[Double], idx: Array[Int],
-                    lo: Int, hi: Int, out: Array[Double]): Unit = {
-    val k = as.length
-    // a block's rows gathered when they are a fold (`idx`): the products then run over contiguous copies
+                    lo: Int, hi: Int, out: Array[Double]): Unit =
+    if (idx == null) products(as, ac, ys, yc, lo, hi, out) else gathered(as, ac, ys, yc, idx, lo, hi, out)
+
+  /** `block` for the rows idx(lo until hi): the products over contiguous copies of them. */
+  private def gathered(as: Array[Array[Double]], ac: Array[Array[Double]], ys: Array[Double], yc: Array[Double], idx: Array[Int],
+                       lo: Int, hi: Int, out: Array[Double]): Unit = {
     def rows(a: Array[Double]): Array[Double] =
       if (a == null || (a eq Col.Ones)) a
-      else if (idx == null) a
       else { val o = new Array[Double](hi - lo); var t = lo; while (t < hi) { o(t - lo) = a(idx(t)); t += 1 }; o }
-    val s = as.map(rows); val c = ac.map(rows); val y1 = rows(ys); val y2 = rows(yc)
-    val (from, to) = if (idx == null) (lo, hi) else (0, hi - lo)
+    val k = as.length; val s = new Array[Array[Double]](k); val c = new Array[Array[Double]](k); var i = 0
+    while (i < k) { s(i) = rows(as(i)); c(i) = rows(ac(i)); i += 1 }
+    products(s, c, rows(ys), rows(yc), 0, hi - lo, out)
+  }
+
+  /** The sums of `block` over the rows [from, to) of the columns and data as they are. */
+  private def products(s: Array[Array[Double]], c: Array[Array[Double]], y1: Array[Double], y2: Array[Double], from: Int, to: Int,
+                       out: Array[Double]): Unit = {
+    val k = s.length
     var q = 0; var i = 0
     while (i < k) {
       var j = 0

@@ -143,15 +143,24 @@ object Locate {
   }
 
   /** Constant bits and pile-ups at the extremes of each channel's codes. */
+  /** The samples per pin pattern and per code (from the lowest code up), in one pass of a method of its own: within
+    * the histogram's closure the JIT compiled the passes with all that reads them, three times over (0.6 s of a
+    * compiler thread in a new JVM's 1 M run).
+    */
+  private def counts(codes: Array[Int], n: Int, adc: moire.signal.Adc): (Array[Int], Array[Int]) = {
+    val pins = new Array[Int](1 << adc.bits); val hist = new Array[Int](1 << adc.bits); var i = 0
+    while (i < n) { val c = codes(i); pins(c) += 1; hist(adc.fromPins(c) + adc.half) += 1; i += 1 }
+    (pins, hist)
+  }
+
   private def codeHistogram(e: SignalEngine, want: String => Boolean, out: scala.collection.mutable.Builder[Located, Seq[Located]]): Unit = {
     val n = e.n
     // code histogram: constant bits and pile-ups at the extremes
     for ((codes, ch) <- Seq((e.rec.sin, "sin"), (e.rec.cos, "cos")) if want("code histogram")) {
       val bits = e.rec.adc.bits
       val adc = e.rec.adc
-      val pins = new Array[Int](1 << bits); var i = 0; while (i < n) { pins(codes(i)) += 1; i += 1 }
+      val (pins, hist) = counts(codes, n, adc)
       val frac = (0 until bits).map(b => pins.indices.filter(c => ((c >> b) & 1) == 1).map(pins(_).toLong).sum.toDouble / n)
-      val hist = new Array[Int](1 << bits); i = 0; while (i < n) { hist(adc.fromPins(codes(i)) + adc.half) += 1; i += 1 }
       val stuck = (e.coarseBits until bits - 2).filter(b => frac(b) == 0.0 || frac(b) == 1.0)
       val hi = hist.lastIndexWhere(_ > 0); val lo = hist.indexWhere(_ > 0)
       def pile(c: Int, nb: Int) = hist(c).toDouble / math.max(1, if (nb >= 0 && nb < hist.length) hist(nb) else 0)

@@ -23,9 +23,8 @@ object OrderStats {
       var i = a; while (i < b) { val v = x(i); if (v == v) acc(bucket(v)) += 1; i += 1 }
     }
     // each rank's bucket and its rank within it
-    val start = new Array[Long](Buckets + 1); var b = 0
-    while (b < Buckets) { start(b + 1) = start(b) + counts(b).toLong; b += 1 }
-    def bucketOf(r: Int): Int = { var k = 0; while (start(k + 1) <= r) k += 1; k }
+    val start = starts(counts)
+    def bucketOf(r: Int): Int = bucketOfRank(start, r)
     val wanted = ranks.filter(_ < real).map(bucketOf).distinct.toArray
     val slot = Array.fill(Buckets)(-1); wanted.indices.foreach(j => slot(wanted(j)) = j)
     val held = wanted.map(k => new Array[Double](counts(k).toInt))
@@ -36,6 +35,17 @@ object OrderStats {
       else { val k = bucketOf(r); held(slot(k))((r - start(k)).toInt) }
     }.toArray
   }
+
+  /** Where each bucket starts in the sorted order (its loops over the buckets in methods of their own: within `of` they
+    * made the JIT compile all of `of`, twice in a run).
+    */
+  private def starts(counts: Array[Double]): Array[Long] = {
+    val start = new Array[Long](Buckets + 1); var b = 0
+    while (b < Buckets) { start(b + 1) = start(b) + counts(b).toLong; b += 1 }
+    start
+  }
+  /** The bucket holding rank r. */
+  private def bucketOfRank(start: Array[Long], r: Int): Int = { var k = 0; while (start(k + 1) <= r) k += 1; k }
 
   /** The bucket of value v (of the range from lo, `scale` buckets per unit). */
   @inline private def bucketAt(v: Double, lo: Double, scale: Double): Int = math.min(Buckets - 1, ((v - lo) * scale).toInt)
