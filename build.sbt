@@ -17,7 +17,7 @@ lazy val common = Seq(
 )
 
 /** Closures compiled to classes of their own (in the jar, and in the CDS archive) instead of made at their first call by
-  * the JDK's lambda factory: a new JVM's 1 M explain spent some 1.8 s of C2 compiling that factory's bytecode writer, and
+  * the JDK's lambda factory: a new JVM's 1 M explain spent about 2 s of C2 compiling that factory's bytecode writer, and
   * took 27.5 and 26.9 s instead of 31.1 and 29.4 s (docs/explain.md, the twelfth step). The host and cli layers only:
   * the hardware layers run Chisel, where a new JVM's start is not what counts.
   */

@@ -142,7 +142,6 @@ object Locate {
     if (want("per channel")) out += Located("per channel", f"residual rms sin ${sdS / lsb}%.2f LSB, cos ${sdC / lsb}%.2f LSB", Map("rms_sin_lsb" -> sdS / lsb, "rms_cos_lsb" -> sdC / lsb), false)
   }
 
-  /** Constant bits and pile-ups at the extremes of each channel's codes. */
   /** The samples per pin pattern and per code (from the lowest code up), in one pass of a method of its own: within
     * the histogram's closure the JIT compiled the passes with all that reads them, three times over (0.6 s of a
     * compiler thread in a new JVM's 1 M run).
@@ -153,6 +152,7 @@ object Locate {
     (pins, hist)
   }
 
+  /** Constant bits and pile-ups at the extremes of each channel's codes. */
   private def codeHistogram(e: SignalEngine, want: String => Boolean, out: scala.collection.mutable.Builder[Located, Seq[Located]]): Unit = {
     val n = e.n
     // code histogram: constant bits and pile-ups at the extremes
