@@ -111,9 +111,12 @@ object Plots {
 
   private def effect(f: Finding, b: Snapshot, a: Snapshot, e: SignalEngine, path: os.Path, stem: String): os.Path = {
     val n = e.n; val lsb = e.lsb; val fAbs = (i: Int) => math.abs(e.freq(i))
-    var fLo = Double.MaxValue; var fHi = 0.0
-    e.freq.foreach { f => fLo = math.min(fLo, math.abs(f)); fHi = math.max(fHi, math.abs(f)) }
-    fHi += 1e-9
+    // the speed range, made only for the panels against speed (a pass over the record)
+    lazy val (fLo, fHi) = {
+      var lo = Double.MaxValue; var hi = 0.0; var i = 0
+      while (i < n) { val v = math.abs(e.freq(i)); lo = math.min(lo, v); hi = math.max(hi, v); i += 1 }
+      (lo, hi + 1e-9)
+    }
     def phaseDev(s: Snapshot, u: Int => Double, v: Int => Double, res: Snapshot => Array[Double]) = {
       // per speed bin: phase (degree) = sum r v / sum v^2 ; amplitude (%) = sum r u / sum u^2
       val bins = 24; val pv = new Array[Double](bins); val vv = new Array[Double](bins); val pu = new Array[Double](bins); val uu = new Array[Double](bins)
