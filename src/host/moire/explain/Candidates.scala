@@ -477,7 +477,7 @@ final class Candidates(val engine: SignalEngine) {
     if (spec.terms.exists { case Term.Interference(h) => math.abs(h - k0 * bin) < 3 * bin; case _ => false }) return None
     val at = Candidates.spread(n, stride)
     // the residual at those samples gathered once: the search's 25 powers then read them in order (read in place, one
-    // at a random place in each block of 20 missed the cache at every sample: 195 -> ~30 ms a search at 1 M)
+    // at a random place in each block of 20 missed the cache at every sample: 195 -> 93 ms a search at 1 M)
     val rs = Doubles.tabulate(at.length)(k => resS(at(k))); val rc = Doubles.tabulate(at.length)(k => resC(at(k)))
     val ref = FitPath.isReference; val sc = new Array[Double](2)
     def power(hz: Double): Double = {
