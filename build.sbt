@@ -122,7 +122,10 @@ lazy val root = (project in file("."))
       val first = Seq("moire.cordic.", "moire.board.Ulx3sBuildSpec", "moire.timing.", "moire.cost.")
       val (a, b) = (Test / definedTests).value.partition(t => first.exists(t.name.startsWith))
       val fork = ForkOptions().withRunJVMOptions((Test / javaOptions).value.toVector).withWorkingDirectory(baseDirectory.value)
-      val quickBuild = fork.withEnvVars(Map("MAKEFLAGS" -> "OPT_FAST=-O0 OPT_SLOW=-O0 OPT_GLOBAL=-O0"))
+      // Verilator's runtime objects compiled once for the run (test/objcache.sh): a CORDIC bank's build 32 -> 21 s
+      val objcache = Map("OBJCACHE" -> (baseDirectory.value / "test" / "objcache.sh").toString,
+        "MOIRE_OBJCACHE" -> (target.value / "verilator-objcache").toString)
+      val quickBuild = fork.withEnvVars(objcache + ("MAKEFLAGS" -> "OPT_FAST=-O0 OPT_SLOW=-O0 OPT_GLOBAL=-O0"))
       Seq(Tests.Group("cordic-pnr", a, Tests.SubProcess(quickBuild)), Tests.Group("rest", b, Tests.SubProcess(quickBuild))).filter(_.tests.nonEmpty)
     },
     Test / parallelExecution := true,

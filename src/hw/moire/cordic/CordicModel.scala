@@ -16,8 +16,12 @@ class CordicModel(val p: CordicParams) {
   private val quarterZ = 1L << (p.zWidth - 2)
   private val halfZ = 1L << (p.zWidth - 1)
   val peakTable: Option[PeakTable] = if (p.peakTableSize > 0) Some(PeakTable(p)) else None
+  // the steps and their angles as arrays, walked by index: the accuracy sweeps run the model on every input
+  private val stepAt: Array[Int] = p.steps.toArray
+  private val angleAt: Array[Long] = p.angleTable.toArray
 
-  private def chk(v: Long, what: String): Long = {
+  /** v, checked against the register width (`what` is worded only when it overflows). */
+  private def chk(v: Long, what: => String): Long = {
     if (!fits(v, w)) throw new IllegalStateException(s"${p.moduleName}: $what = $v overflows $w bits")
     v
   }
@@ -40,15 +44,21 @@ class CordicModel(val p: CordicParams) {
     var x = if (fold) -x0 else x0
     var y = if (fold) -y0 else y0
     var z = z0
-    for (((i, k), idx) <- p.steps.zip(p.angleTable).zipWithIndex) {
+    var idx = 0
+    while (idx < stepAt.length) {
+      val i = stepAt(idx); val k = angleAt(idx)
       val up = z >= 0
-      val (nx, ny) = rotationStep(x, y, i, up)
+      // rotationStep's operations, without its pair
+      val sx = shift(x, i, r); val sy = shift(y, i, r)
+      val nx = if (up) x - sy else x + sy
+      val ny = if (up) y + sx else y - sx
       z = wrap(if (up) z - k else z + k, p.zWidth)
       if (p.taper) { // the tapered z registers hold exactly this interval
         val (lo, hi) = p.zRanges(idx)
         if (z < lo || z > hi) throw new IllegalStateException(s"${p.moduleName}: z[$i] = $z outside [$lo, $hi]")
       }
       x = chk(nx, s"x[$i]"); y = chk(ny, s"y[$i]")
+      idx += 1
     }
     CordicWord(outData(x), outData(y), 0L)
   }
@@ -86,7 +96,9 @@ class CordicModel(val p: CordicParams) {
     var x = if (fold) -xi else xi
     var y = if (fold) -yi else yi
     var z = if (fold) -halfZ else 0L
-    for ((i, k) <- p.steps.zip(p.angleTable)) {
+    var idx = 0
+    while (idx < stepAt.length) {
+      val i = stepAt(idx); val k = angleAt(idx); idx += 1
       val down = y >= 0 // rotate clockwise when y >= 0
       val sx = shift(x, i, r); val sy = shift(y, i, r)
       val nx = if (down) x + sy else x - sy
@@ -106,7 +118,9 @@ class CordicModel(val p: CordicParams) {
       val pos = t >= 0
       y = if (pos) one else -one
       z = if (pos) quarterZ else -quarterZ
-      for ((i, k) <- p.steps.zip(p.angleTable)) {
+      var idx = 0
+      while (idx < stepAt.length) {
+        val i = stepAt(idx); val k = angleAt(idx); idx += 1
         // Right half-plane: compare with the target; left of the y axis: turn back towards it.
         val ccw = if (x < 0) y < 0 else y <= t
         val sx2 = shift(x, 2 * i, r); val sy2 = shift(y, 2 * i, r)
@@ -119,7 +133,9 @@ class CordicModel(val p: CordicParams) {
       }
     } else {
       x = p.startX
-      for ((i, k) <- p.steps.zip(p.angleTable)) {
+      var idx = 0
+      while (idx < stepAt.length) {
+        val i = stepAt(idx); val k = angleAt(idx); idx += 1
         val ccw = t >= y
         val sx = shift(x, i, r); val sy = shift(y, i, r)
         val nx = if (ccw) x - sy else x + sy
