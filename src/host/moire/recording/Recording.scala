@@ -116,83 +116,18 @@ object Recording {
     header.groupBy(identity).collectFirst { case (c, cs) if cs.length > 1 => bad(headerAt + 1, s"column '$c' appears ${cs.length} times in the header") }
     val si = header.indexOf("sin"); val ci = header.indexOf("cos")
     if (si < 0 || ci < 0) bad(headerAt + 1, s"header must name columns sin and cos, got '${Shown.text(headerLine)}'")
-    val extraIdx = header.indices.filter(i => i != si && i != ci).toArray
-    val plainTwo = header.length == 2
-    // a row "a,b" of two integers of at most 9 digits (a minus sign allowed, nothing else): Array(a, b), else null
-    val pair = new Array[Int](2)
-    def twoInts(line: String): Array[Int] = {
-      val len = line.length; var p = 0
-      def digit(q: Int) = q < len && line.charAt(q) >= '0' && line.charAt(q) <= '9'
-      def int(k: Int): Boolean = {
-        val neg = p < len && line.charAt(p) == '-'; if (neg) p += 1
-        val d0 = p; var v = 0
-        while (p - d0 < 9 && digit(p)) { v = v * 10 + (line.charAt(p) - '0'); p += 1 }
-        pair(k) = if (neg) -v else v
-        p > d0 && !digit(p)
-      }
-      if (!int(0) || p >= len || line.charAt(p) != ',') return null
-      p += 1
-      if (!int(1) || p != len) null else pair
-    }
     // the `samples` line sizes the arrays when it is there (checked against the rows at the end)
     val expect = meta.get("samples").flatMap(_.toIntOption).filter(n => n > 0 && n < Int.MaxValue - 8)
     // a hint only, never trusted for more than 4 Mi rows: a wrong `samples` line must not size the arrays
-    var cap = expect.fold(1 << 16)(math.min(_, 1 << 22))
-    var sin = new Array[Int](cap); var cos = new Array[Int](cap)
-    val extra = Array.fill(extraIdx.length)(new Array[Double](cap))
-    val maxCode = (1 << bits) - 1
-    // two's complement: signed codes (-2^(b-1)..2^(b-1)-1) or pin patterns (0..2^b-1), told apart by the values
-    val signedOk = adc.format == AdcFormat.TwosComplement
-    val minCode = if (signedOk) -(1 << (bits - 1)) else 0
-    var firstNegative = 0L; var firstHigh = 0L
-    var n = 0
+    val rows = new Rows(name, adc, header, si, ci, expect.fold(1 << 16)(math.min(_, 1 << 22)))
     var ln = headerAt + 1L
     var cut = 0L // the last line, when it has no line end
     while (it.hasNext) {
       val line = it.next(); ln += 1
       if (line.trim.nonEmpty && !it.hasNext && !lastEnded()) cut = ln
-      else if (line.trim.nonEmpty) {
-        def badRow(msg: String) = bad(ln, s"$msg: '${Shown.text(line)}'")
-        if (n == cap) {
-          if (cap >= Int.MaxValue / 2) bad(ln, s"more than $cap rows: too long for one recording")
-          cap *= 2
-          sin = java.util.Arrays.copyOf(sin, cap); cos = java.util.Arrays.copyOf(cos, cap)
-          var e = 0
-          while (e < extra.length) { extra(e) = java.util.Arrays.copyOf(extra(e), cap); e += 1 }
-        }
-        // the code v of column col, checked: within the converter's range, signed codes and pin patterns not mixed
-        def checked(v: Int, col: String): Int = {
-          if (v < minCode || v > maxCode)
-            badRow(s"$col code $v is outside the $bits-bit ADC range ${if (signedOk) s"$minCode..$maxCode (signed codes or pin patterns)" else s"0..$maxCode"}")
-          if (v < 0) { if (firstNegative == 0) firstNegative = ln }
-          else if (v > (maxCode >> 1) && firstHigh == 0) firstHigh = ln
-          if (firstNegative != 0 && firstHigh != 0)
-            bad(ln, s"signed codes (a negative one on line $firstNegative) and pin patterns above ${maxCode >> 1} (line $firstHigh) in one file: " +
-              "a two's-complement file holds one or the other")
-          v & maxCode
-        }
-        // the common row, two plain integers and a comma, read without splitting it; any other the general way
-        // (which also words what is wrong)
-        val two = if (plainTwo) twoInts(line) else null
-        if (two != null) { sin(n) = checked(two(si), "sin"); cos(n) = checked(two(ci), "cos") }
-        else {
-          if (line.startsWith("#")) badRow("a '#' line among the data rows (comments and metadata go before the header row)")
-          val cells = line.split(",", -1)
-          if (cells.length != header.length) badRow(s"${cells.length} cells, the header has ${header.length}")
-          def code(c: Int, col: String): Int =
-            checked(cells(c).trim.toIntOption.getOrElse(badRow(s"$col '${Shown.text(cells(c).trim)}' is not an integer ADC code")), col)
-          sin(n) = code(si, "sin"); cos(n) = code(ci, "cos")
-          var e = 0
-          while (e < extraIdx.length) {
-            val c = extraIdx(e)
-            extra(e)(n) = moire.numbers.Decimal.double(cells(c)).filter(v => !v.isNaN && !v.isInfinite)
-              .getOrElse(badRow(s"${Shown.text(header(c))} '${Shown.text(cells(c).trim)}' is not a finite number"))
-            e += 1
-          }
-        }
-        n += 1
-      }
+      else if (line.trim.nonEmpty) rows.add(line, ln)
     }
+    val n = rows.n
     val cutShort = "has no line end: the file may be cut short; end it with a line break if it is complete"
     if (n == 0) bad(headerAt + 1, if (cut == 0) "no data rows after the header" else s"no data rows after the header but the last line ($cut), which $cutShort")
     meta.get("samples").foreach { s =>
@@ -202,8 +137,93 @@ object Recording {
     }
     val warnings = if (cut == 0) Nil else Seq(s"line $cut, the last, $cutShort; that row was left out")
     def trim[A](a: Array[A], copy: (Array[A], Int) => Array[A]): Array[A] = if (a.length == n) a else copy(a, n)
-    Recording(fs, adc, trim[Int](sin, (a, k) => java.util.Arrays.copyOf(a, k)), trim[Int](cos, (a, k) => java.util.Arrays.copyOf(a, k)), meta,
-      extraIdx.indices.map(e => header(extraIdx(e)) -> trim[Double](extra(e), (a, k) => java.util.Arrays.copyOf(a, k))).toMap, comments, warnings)
+    Recording(fs, adc, trim[Int](rows.sin, (a, k) => java.util.Arrays.copyOf(a, k)), trim[Int](rows.cos, (a, k) => java.util.Arrays.copyOf(a, k)), meta,
+      rows.extraIdx.indices.map(e => header(rows.extraIdx(e)) -> trim[Double](rows.extra(e), (a, k) => java.util.Arrays.copyOf(a, k))).toMap, comments, warnings)
+  }
+
+  /** The data rows of a recording into growing primitive arrays, a row at a time (`add`): the common row of two plain
+    * integers from a small method the JIT compiles at once, every other row the general way (which also words what is
+    * wrong). One loop holding both compiled as one method of 63 kB, twice, in about 1.5 s of a 1 M explain's JIT.
+    */
+  private final class Rows(name: String, adc: Adc, header: Array[String], si: Int, ci: Int, cap0: Int) {
+    private val bits = adc.bits
+    val extraIdx: Array[Int] = header.indices.filter(i => i != si && i != ci).toArray
+    private val plainTwo = header.length == 2
+    private var cap = cap0
+    var sin = new Array[Int](cap); var cos = new Array[Int](cap)
+    val extra: Array[Array[Double]] = Array.fill(extraIdx.length)(new Array[Double](cap))
+    private val maxCode = (1 << bits) - 1
+    // two's complement: signed codes (-2^(b-1)..2^(b-1)-1) or pin patterns (0..2^b-1), told apart by the values
+    private val signedOk = adc.format == AdcFormat.TwosComplement
+    private val minCode = if (signedOk) -(1 << (bits - 1)) else 0
+    private var firstNegative = 0L; private var firstHigh = 0L
+    var n = 0
+    private val pair = new Array[Int](2)
+    private var p = 0
+
+    private def bad(line: Long, msg: String) = throw new RecordingError(s"$name:$line: $msg")
+    private def badRow(ln: Long, line: String, msg: String) = bad(ln, s"$msg: '${Shown.text(line)}'")
+
+    def add(line: String, ln: Long): Unit = {
+      if (n == cap) grow(ln)
+      if (plainTwo && twoInts(line)) { sin(n) = checked(pair(si), "sin", line, ln); cos(n) = checked(pair(ci), "cos", line, ln) }
+      else general(line, ln)
+      n += 1
+    }
+
+    private def grow(ln: Long): Unit = {
+      if (cap >= Int.MaxValue / 2) bad(ln, s"more than $cap rows: too long for one recording")
+      cap *= 2
+      sin = java.util.Arrays.copyOf(sin, cap); cos = java.util.Arrays.copyOf(cos, cap)
+      var e = 0
+      while (e < extra.length) { extra(e) = java.util.Arrays.copyOf(extra(e), cap); e += 1 }
+    }
+
+    // a row "a,b" of two integers of at most 9 digits (a minus sign allowed, nothing else) into `pair`
+    private def twoInts(line: String): Boolean = {
+      p = 0
+      if (!int(line, 0) || p >= line.length || line.charAt(p) != ',') return false
+      p += 1
+      int(line, 1) && p == line.length
+    }
+    private def digit(line: String, q: Int) = q < line.length && line.charAt(q) >= '0' && line.charAt(q) <= '9'
+    private def int(line: String, k: Int): Boolean = {
+      val len = line.length
+      val neg = p < len && line.charAt(p) == '-'; if (neg) p += 1
+      val d0 = p; var v = 0
+      while (p - d0 < 9 && digit(line, p)) { v = v * 10 + (line.charAt(p) - '0'); p += 1 }
+      pair(k) = if (neg) -v else v
+      p > d0 && !digit(line, p)
+    }
+
+    // the code v of column col, checked: within the converter's range, signed codes and pin patterns not mixed
+    private def checked(v: Int, col: String, line: String, ln: Long): Int = {
+      if (v < minCode || v > maxCode)
+        badRow(ln, line, s"$col code $v is outside the $bits-bit ADC range ${if (signedOk) s"$minCode..$maxCode (signed codes or pin patterns)" else s"0..$maxCode"}")
+      if (v < 0) { if (firstNegative == 0) firstNegative = ln }
+      else if (v > (maxCode >> 1) && firstHigh == 0) firstHigh = ln
+      if (firstNegative != 0 && firstHigh != 0) mixed(ln)
+      v & maxCode
+    }
+    private def mixed(ln: Long): Nothing =
+      bad(ln, s"signed codes (a negative one on line $firstNegative) and pin patterns above ${maxCode >> 1} (line $firstHigh) in one file: " +
+        "a two's-complement file holds one or the other")
+
+    private def general(line: String, ln: Long): Unit = {
+      if (line.startsWith("#")) badRow(ln, line, "a '#' line among the data rows (comments and metadata go before the header row)")
+      val cells = line.split(",", -1)
+      if (cells.length != header.length) badRow(ln, line, s"${cells.length} cells, the header has ${header.length}")
+      def code(c: Int, col: String): Int =
+        checked(cells(c).trim.toIntOption.getOrElse(badRow(ln, line, s"$col '${Shown.text(cells(c).trim)}' is not an integer ADC code")), col, line, ln)
+      sin(n) = code(si, "sin"); cos(n) = code(ci, "cos")
+      var e = 0
+      while (e < extraIdx.length) {
+        val c = extraIdx(e)
+        extra(e)(n) = moire.numbers.Decimal.double(cells(c)).filter(v => !v.isNaN && !v.isInfinite)
+          .getOrElse(badRow(ln, line, s"${Shown.text(header(c))} '${Shown.text(cells(c).trim)}' is not a finite number"))
+        e += 1
+      }
+    }
   }
 }
 
