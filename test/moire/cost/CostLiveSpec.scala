@@ -132,7 +132,7 @@ class TwoCordics(p: CordicParams) extends chisel3.Module {
 
 }
 
-/** A 256 x 40 memory with a synchronous or an asynchronous read port. */
+/** A `depth` x 40 memory with a synchronous or an asynchronous read port. */
 object RamProbe {
   import chisel3._
   /** Words: 64 of 40 bits take two M9K blocks (36 bits wide at most) as 256 did, and the test takes 14 s instead of 50. */
