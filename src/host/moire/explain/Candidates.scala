@@ -30,7 +30,7 @@ final class Candidates(val engine: SignalEngine) {
     val (nz, v) =
       if (white) {
         val (a, b) = design.rss(resS, resC, s.beta)
-        (Noise.white(a, b, n), (a + b) / (2.0 * n))
+        (Noise.white(a, b, n, cens), (a + b) / (2.0 * n))
       } else {
         val rs = resS.clone(); val rc = resC.clone(); design.addToBoth(rs, rc, s.beta, -1.0)
         (Noise.fit(rs, rc, noiseSlopes(spec), cens), (sumSq(rs) + sumSq(rc)) / (2.0 * n))
@@ -70,7 +70,7 @@ final class Candidates(val engine: SignalEngine) {
     val v = (a + b) / (2.0 * n)
     val bt = s.beta.drop(6); val sd = (6 until s.beta.length).map(i => math.sqrt(math.max(0, s.inv(i)(i)) * v)).toArray
     val (p, u, where, c) = t.effect.describe(t, bt, sd, e)
-    Some((Cand(t.name, c, spec.copy(terms = spec.terms :+ t), Noise.white(a, b, n).m2ll, t.params, p, u, where), s))
+    Some((Cand(t.name, c, spec.copy(terms = spec.terms :+ t), Noise.white(a, b, n, cens).m2ll, t.params, p, u, where), s))
   }
   private val families = new java.util.concurrent.ConcurrentHashMap[Term, LinearFamily]()
   /** Each channel's residual sum of squares (every family's fit starts from it). */
@@ -200,7 +200,7 @@ final class Candidates(val engine: SignalEngine) {
       }
     }
     val ms = sums.slice(0, 10); val mc = sums.slice(10, 20)
-    n * (math.log(2 * math.Pi * Candidates.rss(ms) / cnt) + 1) + n * (math.log(2 * math.Pi * Candidates.rss(mc) / cnt) + 1)
+    whiteM2ll(Candidates.rss(ms) / cnt, Candidates.rss(mc) / cnt)
   }
 
   /** The profile a search minimises: from the binned sums of all samples (of the fold `idx`); on the reference path,
@@ -578,7 +578,7 @@ final class Candidates(val engine: SignalEngine) {
       if (useHi || useLo) {
         val c = Clip(ch, if (useLo) lo else Double.NegativeInfinity, if (useHi) hi else Double.PositiveInfinity)
         val sp = spec.copy(clips = spec.clips :+ c)
-        val r = repair(sp)
+        val r = repair(sp, soft = true)
         val nz = repairedNoise(r)
         // clip levels are read off the codes: uncertain by half an LSB
         val pp = Seq("low_fs" -> c.lo, "high_fs" -> c.hi).filter(!_._2.isInfinite).toMap

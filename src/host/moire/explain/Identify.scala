@@ -44,7 +44,7 @@ object Identify {
     if (!s.ok) None
     else {
       if (e.cens.censS == null && e.cens.censC == null)
-        Some(Noise.white(LinearFit.rss(cols, s.beta, e.resS, sinCh = true), LinearFit.rss(cols, s.beta, e.resC, sinCh = false), e.n).m2ll)
+        Some(Noise.white(LinearFit.rss(cols, s.beta, e.resS, sinCh = true), LinearFit.rss(cols, s.beta, e.resC, sinCh = false), e.n, e.cens).m2ll)
       else {
         val rs = LinearFit.minus(e.resS, cols, s.beta, sinCh = true); val rc = LinearFit.minus(e.resC, cols, s.beta, sinCh = false)
         Some(Noise.fit(rs, rc, null, e.cens).m2ll)

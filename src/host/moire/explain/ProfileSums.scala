@@ -168,7 +168,7 @@ private[explain] final class ProfileSums(e: SignalEngine, idx: Array[Int]) {
       val q = 7 * ch
       Array(n, m(q), m(q + 1), m(q + 2), m(q + 3), m(q + 4), totals(2 * ch), m(q + 5), m(q + 6), totals(2 * ch + 1))
     }
-    e.n * (math.log(2 * math.Pi * Candidates.rss(of(0)) / n) + 1) + e.n * (math.log(2 * math.Pi * Candidates.rss(of(1)) / n) + 1)
+    e.whiteM2ll(Candidates.rss(of(0)) / n, Candidates.rss(of(1)) / n)
   }
 }
 

@@ -225,7 +225,10 @@ object Replicate {
     val (ds, dc) = sl
     def est(idx: Array[Int]): Option[Est] = {
       val a = pick(ds, idx); val b = pick(dc, idx)
-      val cens = if (e.cens == null) null else Repaired(null, null, pick(e.cens.censS, idx), pick(e.cens.censC, idx))
+      val cens = if (e.cens == null) null else {
+        val (ps, pc) = (pick(e.cens.pvS, idx), pick(e.cens.pvC, idx))
+        Repaired(null, null, pick(e.cens.censS, idx), pick(e.cens.censC, idx), ps, pc, Option(ps).fold(0.0)(_.sum), Option(pc).fold(0.0)(_.sum))
+      }
       val nz = Noise.fit(pick(e.resS, idx), pick(e.resC, idx), (a, b), cens)
       var info = 0.0; var i = 0
       while (i < a.length) {

@@ -251,11 +251,12 @@ object SignalExplain {
 
   /** Parameters of a finding from the final joint fit (linear terms) or the final spec (nonlinear). */
   private def refresh(f: Finding, e: SignalEngine): Finding = {
-    val v = (e.sumSq(e.resS) + e.sumSq(e.resC)) / (2.0 * e.n)
+    val v = e.meanSquare
     e.termIndex.find { case (t, _) => t.name == f.effect && termMatches(t, f) } match {
       case Some((t, at)) =>
-        val k = e.termCols(t).size
-        val b = e.sol.beta.slice(at, at + k); val sd = (at until at + k).map(i => math.sqrt(math.max(0, e.sol.inv(i)(i)) * v)).toArray
+        val cols = e.termCols(t); val k = cols.size
+        val b = e.sol.beta.slice(at, at + k)
+        val sd = (at until at + k).map(i => math.sqrt(math.max(0, e.sol.inv(i)(i)) * v / e.informationLeft(cols(i - at)))).toArray
         val (p, u, _, _) = t.effect.describe(t, b, sd, e)
         f.copy(params = p, unc = u.map { case (k, x) => k -> (if (x.isNaN) f.unc.getOrElse(k, x) else x) })
       case None => Effects(f.effect).fold(f)(_.refresh(f, e))
@@ -276,7 +277,7 @@ object SignalExplain {
     */
   private def demote(e: SignalEngine, c: Cand): Cand = e.spec.terms.lastOption match {
     case Some(t @ Term.Harm(k, "both")) if e.termIndex.contains(t) =>
-      val at = e.termIndex(t); val v = (e.sumSq(e.resS) + e.sumSq(e.resC)) / (2.0 * e.n)
+      val at = e.termIndex(t); val v = e.meanSquare
       def chi2(j: Int) = (j until j + 2).map(i => e.sol.beta(i) * e.sol.beta(i) / math.max(1e-300, e.sol.inv(i)(i) * v)).sum
       val need = 2 * e.lnN + Threshold
       val keep = Seq("sin" -> chi2(at), "cos" -> chi2(at + 2)).filter(_._2 > need).map(_._1)
