@@ -171,6 +171,7 @@ object Replicate {
   final case class Est(theta: Array[Double], cov: Array[Array[Double]], floor: Array[Double])
 
   private def pick(a: Array[Double], idx: Array[Int]): Array[Double] = if (a == null) null else idx.map(a(_))
+  private def pick(a: Array[Float], idx: Array[Int]): Array[Float] = if (a == null) null else idx.map(a(_))
 
   /** The term's coefficients refitted with the default part on each fold of what the term explains. A warm-up's
     * time constant stays free on each fold (one column: its fitted shape's derivative by the time constant), since
@@ -227,7 +228,7 @@ object Replicate {
       val a = pick(ds, idx); val b = pick(dc, idx)
       val cens = if (e.cens == null) null else {
         val (ps, pc) = (pick(e.cens.pvS, idx), pick(e.cens.pvC, idx))
-        Repaired(null, null, pick(e.cens.censS, idx), pick(e.cens.censC, idx), ps, pc, Option(ps).fold(0.0)(_.sum), Option(pc).fold(0.0)(_.sum))
+        Repaired(null, null, pick(e.cens.censS, idx), pick(e.cens.censC, idx), ps, pc, Option(ps).fold(0.0)(_.map(_.toDouble).sum), Option(pc).fold(0.0)(_.map(_.toDouble).sum))
       }
       val nz = Noise.fit(pick(e.resS, idx), pick(e.resC, idx), (a, b), cens)
       var info = 0.0; var i = 0

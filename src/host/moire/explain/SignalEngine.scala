@@ -496,7 +496,7 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
     val adc = rec.adc
     val nz = _noise; val useSoft = soft && nz.m2ll != 0 && sp.faults == spec.faults
     // the prediction (the repaired data less the residual) read where it is needed, not made as an array
-    def one(ch: Int, y: Array[Double], codes: Array[Int], rp: Array[Double], rr: Array[Double]): (Array[Double], Array[Double], Array[Double], Double, Double, Double) = {
+    def one(ch: Int, y: Array[Double], codes: Array[Int], rp: Array[Double], rr: Array[Double]): (Array[Double], Array[Double], Array[Float], Double, Double, Double) = {
       val fl = sp.faults.filter(_.ch == ch); val cl = sp.clips.filter(_.ch == ch)
       // the noise variance at sample i (the soft repair's weights)
       val white = if (ch == 0) nz.varS else nz.varC; val j2 = nz.jitter2
@@ -528,28 +528,44 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
       if (pre == null && ex == null && Par.sum(n) { (a, b) => var k = 0.0; var i = a; while (i < b) { if (censored(y(i))) k += 1; i += 1 }; k } == 0)
         return (y, null, null, 0.0, 0.0, 0.0)
       val out = new Array[Double](n)
-      // soft: each sample's weights' variance (full scale squared; 0 where one preimage)
-      val pv = if (useSoft && pre != null) new Array[Double](n) else null
+      // soft: each sample's weights' variance (full scale squared; 0 where one preimage), in single precision (a long
+      // record's array; the sums are of the values kept)
+      val pv = if (useSoft && pre != null) new Array[Float](n) else null
       // the soft value at sample i (the hard one's code when the weights are all on it): m(2) += variance, m(3) += entropy
       @inline def softValue(i: Int, p: Double, m: Array[Double]): Double = {
         val c0 = codes(i)
         val table = c0 >= 0 && c0 < pre.length
         val cands = if (table) pre(c0) else preimagesOf(fl, c0)
         if (cands.length < 2) return y(i)
-        val h = -0.5 / noiseVar(i)
-        // weights relative to the closest preimage's (no underflow): w_k = exp(h ((v_k - p)^2 - d_min^2))
-        var dmin = Double.MaxValue; var q = 0
-        while (q < cands.length) { val c = cands(q); val d = (if (table) vals(c) else adc.fromPins(c) * lsb) - p; if (d * d < dmin) dmin = d * d; q += 1 }
-        var z = 0.0; var s1 = 0.0; var s2 = 0.0; var sl = 0.0; q = 0
-        while (q < cands.length) {
-          val c = cands(q); val v = if (table) vals(c) else adc.fromPins(c) * lsb; val d = v - p
-          val a = h * (d * d - dmin); val w = math.exp(a)
-          z += w; s1 += w * v; s2 += w * v * v; sl += w * a; q += 1
+        val nv = noiseVar(i); val h = -0.5 / nv
+        if (cands.length == 2) {
+          // a stuck bit's two preimages: the far one's weight relative to the near one's, w = exp(a)
+          val v0 = if (table) vals(cands(0)) else adc.fromPins(cands(0)) * lsb; val v1 = if (table) vals(cands(1)) else adc.fromPins(cands(1)) * lsb
+          val d0 = v0 - p; val d1 = v1 - p; val near0 = d0 * d0 <= d1 * d1
+          val vn = if (near0) v0 else v1; val u = if (near0) v1 - v0 else v0 - v1
+          val a = h * (if (near0) d1 * d1 - d0 * d0 else d0 * d0 - d1 * d1)
+          if (a <= -60) return vn
+          val w = math.exp(a); val z = 1 + w; val t = w / z; val vr = (t * (1 - t) * u * u).toFloat
+          pv(i) = vr; m(2) += vr; m(3) += math.log(z) - a * t; m(4) += vr / nv
+          return vn + t * u
         }
-        val mean = s1 / z; val vr = math.max(0.0, s2 / z - mean * mean)
-        pv(i) = vr; m(2) += vr; m(3) += math.log(z) - sl / z // entropy: -sum (w/z) ln(w/z)
-        m(4) += vr / noiseVar(i) // the sample's information the fault took (a fraction of one sample's)
-        mean
+        // weights relative to the closest preimage's (no underflow): w_k = exp(h ((v_k - p)^2 - d_min^2)), 1 for it
+        var dmin = Double.MaxValue; var k = 0; var q = 0
+        while (q < cands.length) { val c = cands(q); val d = (if (table) vals(c) else adc.fromPins(c) * lsb) - p; if (d * d < dmin) { dmin = d * d; k = q }; q += 1 }
+        val vk = if (table) vals(cands(k)) else adc.fromPins(cands(k)) * lsb
+        // the others' sums about the closest one's value (its own terms are 1, 0, 0): no cancellation in the variance
+        var z = 1.0; var s1 = 0.0; var s2 = 0.0; var sl = 0.0; q = 0
+        while (q < cands.length) {
+          if (q != k) {
+            val c = cands(q); val v = if (table) vals(c) else adc.fromPins(c) * lsb; val d = v - p
+            val a = h * (d * d - dmin)
+            if (a > -60) { val w = math.exp(a); val u = v - vk; z += w; s1 += w * u; s2 += w * u * u; sl += w * a }
+          }
+          q += 1
+        }
+        val du = s1 / z; pv(i) = math.max(0.0, s2 / z - du * du).toFloat; val vr = pv(i).toDouble
+        if (z > 1) { m(2) += vr; m(3) += math.log(z) - sl / z; m(4) += vr / nv } // entropy: -sum (w/z) ln(w/z)
+        vk + du
       }
       // the censored samples' distances, NaN elsewhere: made when the first one is met (most repairs censor none)
       var cen: Array[Double] = null
@@ -809,7 +825,7 @@ object Noise {
       val m = Array.ofDim[Double](3, 4)
       // both channels' sums in one pass (each channel's in the same order as a pass of its own)
       val q = Par.sums(n, 10) { (lo, hi, a) =>
-        def acc(r: Array[Double], d: Array[Double], v0: Double, o: Int, pv: Array[Double]): Unit = {
+        def acc(r: Array[Double], d: Array[Double], v0: Double, o: Int, pv: Array[Float]): Unit = {
           var s0 = 0.0; var s1 = 0.0; var s2 = 0.0; var s3 = 0.0; var s4 = 0.0; var i = lo
           while (i < hi) {
             val d2 = d(i) * d(i); val v = math.max(floor, v0 + j2 * d2); val w = 1 / (v * v); val y = r(i) * r(i) + (if (pv == null) 0.0 else pv(i))
@@ -858,7 +874,7 @@ object Noise {
   * `lostS`/`lostC`: the information the weights leave out, in samples (the sum of each one's variance over its noise's).
   */
 final case class Repaired(s: Array[Double], c: Array[Double], censS: Array[Double], censC: Array[Double],
-                          pvS: Array[Double] = null, pvC: Array[Double] = null, pvSumS: Double = 0, pvSumC: Double = 0,
+                          pvS: Array[Float] = null, pvC: Array[Float] = null, pvSumS: Double = 0, pvSumC: Double = 0,
                           entropy: Double = 0, lostS: Double = 0, lostC: Double = 0) {
   def soft: Boolean = pvS != null || pvC != null
 }

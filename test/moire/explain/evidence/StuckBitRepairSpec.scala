@@ -5,7 +5,7 @@ import org.scalatest.matchers.should.Matchers
 
 /** A stuck low bit whose two preimages lie less than two noise sd apart: the small effect fitted beside it comes out
   * unbiased. Undoing the fault with the preimage closest to the prediction pulled the data toward the prediction and
-  * the fit to a fixed point short of the truth (this line on cos came out 1.7 % low, 4.3 of its sd); the repair now
+  * the fit to a fixed point short of the truth (this line on cos came out 1.8 % low, 4.3 of its sd); the repair now
   * weighs the preimages by their likelihood (an EM step of the mixture), and the sd counts the information lost.
   */
 class StuckBitRepairSpec extends AnyFlatSpec with Matchers {
