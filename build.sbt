@@ -114,14 +114,15 @@ lazy val root = (project in file("."))
     Test / javaOptions ++= Seq("-Xss8m", "-Xmx6g"),
     Test / testOptions += Tests.Argument(TestFrameworks.ScalaTest, "-oD"),
     // Two forked JVMs side by side (2 cores), about equal in time: the CORDIC suites, the place-and-route and yosys
-    // suites (ULX3S bitstream, timing, cost), the corrected board's restore and the adaptive corrector's RTL sweep
-    // (moved there when the live place and route went to a smaller CORDIC: 268 -> about 50 s), then the rest. A package's suites that share caches (replay's Verilator
+    // suites (ULX3S bitstream, timing, cost), the corrected board's restore, the adaptive corrector's RTL sweep and
+    // the designs' lint (moved there when the live place and route went to a smaller CORDIC: 268 -> 77 s; 746 and 908 s
+    // of suites at bee7b97 before the lint moved), then the rest. A package's suites that share caches (replay's Verilator
     // builds, the timing cache) stay in one JVM. The tests' Verilator models (chiseltest's) are compiled without C++
     // optimisation: about 3 times faster to build a CORDIC bank, and the other RTL suites' CPU time 10 min 58 s -> 8 min
     // 8 s (their simulations run a little slower). The replay harness keeps its own flags (make's command line wins).
     Test / testGrouping := {
       val first = Seq("moire.cordic.", "moire.board.Ulx3sBuildSpec", "moire.board.BoardCorrectedPresetSpec", "moire.timing.", "moire.cost.",
-        "moire.adapt.AdaptRtlSpec")
+        "moire.adapt.AdaptRtlSpec", "moire.designs.DesignLintSpec")
       val (a, b) = (Test / definedTests).value.partition(t => first.exists(t.name.startsWith))
       val fork = ForkOptions().withRunJVMOptions((Test / javaOptions).value.toVector).withWorkingDirectory(baseDirectory.value)
       // Verilator's runtime objects compiled once for the run and each model's header precompiled (test/objcache.sh):

@@ -544,7 +544,7 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
           val d0 = v0 - p; val d1 = v1 - p; val near0 = d0 * d0 <= d1 * d1
           val vn = if (near0) v0 else v1; val u = if (near0) v1 - v0 else v0 - v1
           val a = h * (if (near0) d1 * d1 - d0 * d0 else d0 * d0 - d1 * d1)
-          if (a <= -60) return vn
+          if (!(a > -60)) return vn // (and a NaN prediction: the closest preimage, as the hard repair)
           val w = math.exp(a); val z = 1 + w; val t = w / z; val vr = (t * (1 - t) * u * u).toFloat
           pv(i) = vr; m(2) += vr; m(3) += math.log(z) - a * t; m(4) += vr / nv
           return vn + t * u
