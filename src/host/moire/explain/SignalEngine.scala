@@ -108,8 +108,7 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
     else { val (a, b) = (sumSq(col.s), sumSq(col.c)); if (a + b <= 0) 1.0 else (a * left(_cens.lostS) + b * left(_cens.lostC)) / (a + b) }
   }
   /** -2 ln L of white noise of mean squares (varS, varC) on all samples, with the soft repair's spread and entropy. */
-  def whiteM2ll(varS: Double, varC: Double): Double =
-    n * (math.log(2 * math.Pi * (varS + _cens.pvSumS / n)) + 1) + n * (math.log(2 * math.Pi * (varC + _cens.pvSumC / n)) + 1) - 2 * _cens.entropy
+  def whiteM2ll(varS: Double, varC: Double): Double = Noise.white(varS * n, varC * n, n, _cens).m2ll
   def bic: Double = noise.m2ll + params * lnN
   /** The rms of the residual over the samples in the fit. */
   def rms: Double = math.sqrt(meanSquare * n / math.max(1, n - excludedCount))
