@@ -51,13 +51,35 @@ object Plots {
       Array.tabulate(bins)(b => if (c(b) == 0) Double.NaN else if (rms) math.sqrt(s(b) / c(b)) else s(b) / c(b)))
   }
 
-  /** Sample i's fringe phase in degrees (0 to 360). */
-  private def fringeDeg(e: SignalEngine, i: Int): Double = 360 * (e.phase(i) - math.floor(e.phase(i)))
+  /** The engine's values at the snapshots' points (sample j * stride for point j), each gathered in one pass when a
+    * plot first needs it: a long record's plots read compact arrays, not the engine's at a stride (a cache miss per
+    * point on arrays of 160 MB at 20 M samples, for each plot and each curve; about 7 s of CPU then).
+    */
+  final class Points(e: SignalEngine, val stride: Int) {
+    val size: Int = (e.n + stride - 1) / stride
+    // on the asking thread (the plots run side by side on the pool: a lazy value's lock held across work on all cores
+    // could hold the pool's only worker on a 2-core machine; see `Candidates.binned`)
+    private def gather(f: Int => Double): Array[Double] = {
+      val out = new Array[Double](size); var j = 0
+      while (j < size) { out(j) = f(j * stride); j += 1 }
+      out
+    }
+    /** Fringe phase in degrees (0 to 360), position from the start (fringe periods), |fringe frequency| (Hz). */
+    lazy val fringeDeg: Array[Double] = gather { i => val p = e.phase(i); 360 * (p - math.floor(p)) }
+    lazy val position: Array[Double] = { val p0 = e.phase(0); gather(i => e.phase(i) - p0) }
+    lazy val absFreq: Array[Double] = gather(i => math.abs(e.freq(i)))
+    /** The fitted fundamental (u) and its derivative by the phase (v) per channel, the prediction per channel. */
+    lazy val us: Array[Double] = gather(e.us); lazy val vs: Array[Double] = gather(e.vs)
+    lazy val uc: Array[Double] = gather(e.uc); lazy val vc: Array[Double] = gather(e.vc)
+    lazy val predS: Array[Double] = gather(e.predSAt); lazy val predC: Array[Double] = gather(e.predCAt)
+  }
 
   def signals(r: SignalExplain.Result, dir: os.Path, stem: String, ie: InterpolationError): Seq[os.Path] = {
     val e = r.engine; val n = e.n; val lsb = e.lsb
     val after = Snapshot.of("final model", e.resS, e.resC)
     val snaps = Seq(r.before, after)
+    // every snapshot is of the record's length: one stride, one set of points
+    val pts = new Points(e, after.stride)
     // each plot made and written on its own: side by side on all cores, listed in this order
     val plots = Seq.newBuilder[() => os.Path]
     // time
@@ -72,14 +94,14 @@ object Plots {
     plots += { () =>
       val cp = chart(s"$stem: mean residual against fringe phase", "fringe phase (degree)", "mean residual (LSB)")
       for (s <- snaps; (res, ch) <- Seq((s.resS, "sin"), (s.resC, "cos"))) {
-        val (x, y) = binned(j => fringeDeg(e, j * s.stride), j => res(j) / lsb, s.size, 0, 360, 72); line(cp, s"$ch, ${s.label}", x, y)
+        val (x, y) = binned(pts.fringeDeg(_), j => res(j) / lsb, s.size, 0, 360, 72); line(cp, s"$ch, ${s.label}", x, y)
       }
       save(cp, dir / s"${stem}_residual_phase.png")
     }
     // spectrum
     plots += (() => spectrum(s"$stem: residual spectrum", snaps, e, dir / s"${stem}_residual_spectrum.png"))
     // effects
-    for (((f, b, a), k) <- r.steps.zipWithIndex) plots += (() => effect(f, b, a, e, dir / s"${stem}_effect_${k + 1}_${f.effect}.png", stem))
+    for (((f, b, a), k) <- r.steps.zipWithIndex) plots += (() => effect(f, b, a, e, pts, dir / s"${stem}_effect_${k + 1}_${f.effect}.png", stem))
     // the Lissajous figure before and after the Heydemann correction, the interpolation error
     plots += (() => save(LissajousPlot.before(s"$stem: Lissajous figure", e.yc, e.ys, ie.ellipse), dir / s"${stem}_lissajous_before.png"))
     ie.ellipse.foreach(el => plots += (() => save(LissajousPlot.after(s"$stem: Lissajous figure after correction", e.yc, e.ys, el), dir / s"${stem}_lissajous_after.png")))
@@ -109,21 +131,17 @@ object Plots {
     save(c, path)
   }
 
-  private def effect(f: Finding, b: Snapshot, a: Snapshot, e: SignalEngine, path: os.Path, stem: String): os.Path = {
-    val n = e.n; val lsb = e.lsb; val fAbs = (i: Int) => math.abs(e.freq(i))
-    // the speed range, made only for the panels against speed (a pass over the record)
-    lazy val (fLo, fHi) = {
-      var lo = Double.MaxValue; var hi = 0.0; var i = 0
-      while (i < n) { val v = math.abs(e.freq(i)); lo = math.min(lo, v); hi = math.max(hi, v); i += 1 }
-      (lo, hi + 1e-9)
-    }
-    def phaseDev(s: Snapshot, u: Int => Double, v: Int => Double, res: Snapshot => Array[Double]) = {
+  private def effect(f: Finding, b: Snapshot, a: Snapshot, e: SignalEngine, pts: Points, path: os.Path, stem: String): os.Path = {
+    val lsb = e.lsb
+    // the speed range over the points, made only for the panels against speed
+    lazy val (fLo, fHi) = { val (lo, hi) = Doubles.range(pts.size)(pts.absFreq(_)); (lo, hi + 1e-9) }
+    def phaseDev(s: Snapshot, u: Array[Double], v: Array[Double], res: Snapshot => Array[Double]) = {
       // per speed bin: phase (degree) = sum r v / sum v^2 ; amplitude (%) = sum r u / sum u^2
       val bins = 24; val pv = new Array[Double](bins); val vv = new Array[Double](bins); val pu = new Array[Double](bins); val uu = new Array[Double](bins)
-      val r = res(s); var j = 0
+      val r = res(s); val fa = pts.absFreq; var j = 0
       while (j < s.size) {
-        val i = j * s.stride; val k = math.min(bins - 1, ((fAbs(i) - fLo) / (fHi - fLo) * bins).toInt)
-        pv(k) += r(j) * v(i); vv(k) += v(i) * v(i); pu(k) += r(j) * u(i); uu(k) += u(i) * u(i); j += 1
+        val k = math.min(bins - 1, ((fa(j) - fLo) / (fHi - fLo) * bins).toInt)
+        pv(k) += r(j) * v(j); vv(k) += v(j) * v(j); pu(k) += r(j) * u(j); uu(k) += u(j) * u(j); j += 1
       }
       (Array.tabulate(bins)(k => (fLo + (k + 0.5) * (fHi - fLo) / bins) / 1e3),
         Array.tabulate(bins)(k => if (vv(k) > 0) math.toDegrees(pv(k) / vv(k)) else Double.NaN),
@@ -135,7 +153,7 @@ object Plots {
         // phase on the left axis (degree), amplitudes on the right one (%)
         val c = chart(title, "fringe frequency (kHz)", "cos - sin phase left in the residual (degree)")
         for (s <- Seq(b, a)) {
-          val (x, ps, as) = phaseDev(s, e.us(_), e.vs(_), _.resS); val (_, pc, ac) = phaseDev(s, e.uc(_), e.vc(_), _.resC)
+          val (x, ps, as) = phaseDev(s, pts.us, pts.vs, _.resS); val (_, pc, ac) = phaseDev(s, pts.uc, pts.vc, _.resC)
           line(c, s"cos - sin phase (degree), ${s.label}", x, pc.zip(ps).map { case (p, q) => p - q })
           if (!phaseOnly) for ((ch, am) <- Seq("sin" -> as, "cos" -> ac)) {
             line(c, s"$ch amplitude (%), ${s.label}", x, am)
@@ -149,52 +167,50 @@ object Plots {
         save(c, path)
       case effects.PlotKind.Slope =>
         val c = chart(title, "|signal slope| (full scale per microsecond)", "residual rms (LSB)")
-        // each channel's slope against time (as `SignalEngine.slopes`), read where it is needed
-        def ds(i: Int) = math.abs(e.vs(i) * 2 * math.Pi * e.freq(i)); def dc(i: Int) = math.abs(e.vc(i) * 2 * math.Pi * e.freq(i))
-        val hi = Doubles.range(n)(i => math.max(ds(i), dc(i)))._2 * 1e-6 + 1e-12
+        // each channel's slope against time (as `SignalEngine.slopes`)
+        def ds(j: Int) = math.abs(pts.vs(j) * 2 * math.Pi * pts.absFreq(j)); def dc(j: Int) = math.abs(pts.vc(j) * 2 * math.Pi * pts.absFreq(j))
+        val hi = Doubles.range(pts.size)(j => math.max(ds(j), dc(j)))._2 * 1e-6 + 1e-12
         for (s <- Seq(b, a)) {
-          val (x, y) = binned(j => ds(j * s.stride) * 1e-6, j => s.resS(j) / lsb, s.size, 0, hi, 24, rms = true); line(c, s"sin, ${s.label}", x, y)
-          val (x2, y2) = binned(j => dc(j * s.stride) * 1e-6, j => s.resC(j) / lsb, s.size, 0, hi, 24, rms = true); line(c, s"cos, ${s.label}", x2, y2)
+          val (x, y) = binned(j => ds(j) * 1e-6, j => s.resS(j) / lsb, s.size, 0, hi, 24, rms = true); line(c, s"sin, ${s.label}", x, y)
+          val (x2, y2) = binned(j => dc(j) * 1e-6, j => s.resC(j) / lsb, s.size, 0, hi, 24, rms = true); line(c, s"cos, ${s.label}", x2, y2)
         }
         save(c, path)
       case kind @ (effects.PlotKind.Time | effects.PlotKind.Position) =>
         // the amplitude left in the residual (sum r u / sum u^2 per bin), against time or the position along the travel
         val (xf, xl): (Int => Double, String) =
-          if (kind == effects.PlotKind.Position) (i => e.phase(i) - e.phase(0), "position from the start (fringe periods)")
-          else (i => i / e.fs, "time (s)")
-        var lo = Double.MaxValue; var hi = -Double.MaxValue
-        for (i <- 0 until n) { val v = xf(i); lo = math.min(lo, v); hi = math.max(hi, v) }
-        hi += 1e-12
+          if (kind == effects.PlotKind.Position) (pts.position(_), "position from the start (fringe periods)")
+          else (j => j.toDouble * pts.stride / e.fs, "time (s)")
+        // (the time's range is the record's; the position's, over the points)
+        val (lo, hi0) = if (kind == effects.PlotKind.Position) Doubles.range(pts.size)(xf) else (0.0, (e.n - 1) / e.fs); val hi = hi0 + 1e-12
         val c = chart(title, xl, "amplitude left in the residual (%)")
-        for (s <- Seq(b, a); (r, u, ch) <- Seq[(Array[Double], Int => Double, String)]((s.resS, e.us(_), "sin"), (s.resC, e.uc(_), "cos"))) {
-          val st = s.stride
-          val (x, num) = binned(j => xf(j * st), j => r(j) * u(j * st), s.size, lo, hi, 48); val (_, den) = binned(j => xf(j * st), j => u(j * st) * u(j * st), s.size, lo, hi, 48)
+        for (s <- Seq(b, a); (r, u, ch) <- Seq[(Array[Double], Array[Double], String)]((s.resS, pts.us, "sin"), (s.resC, pts.uc, "cos"))) {
+          val (x, num) = binned(xf, j => r(j) * u(j), s.size, lo, hi, 48); val (_, den) = binned(xf, j => u(j) * u(j), s.size, lo, hi, 48)
           line(c, s"$ch, ${s.label}", x, num.zip(den).map { case (p, q) => 100 * p / q })
         }
         save(c, path)
       case effects.PlotKind.MechanicalAngle =>
         val l = e.rec.linesPerRev.getOrElse(1.0)
         val c = chart(title, "mechanical angle (degree)", "amplitude left in the residual (%)")
+        val p0 = e.phase(0)
         for (s <- Seq(b, a)) {
-          val st = s.stride
-          val w = (j: Int) => { val i = j * st; e.us(i) * e.us(i) + e.uc(i) * e.uc(i) }
-          val ang = (j: Int) => { val m = e.phase(j * st) / l; 360 * (m - math.floor(m)) }
-          val (x, num) = binned(ang, j => s.resS(j) * e.us(j * st) + s.resC(j) * e.uc(j * st), s.size, 0, 360, 36)
+          val w = (j: Int) => pts.us(j) * pts.us(j) + pts.uc(j) * pts.uc(j)
+          val ang = (j: Int) => { val m = (pts.position(j) + p0) / l; 360 * (m - math.floor(m)) }
+          val (x, num) = binned(ang, j => s.resS(j) * pts.us(j) + s.resC(j) * pts.uc(j), s.size, 0, 360, 36)
           val (_, den) = binned(ang, w, s.size, 0, 360, 36)
           line(c, s.label, x, num.zip(den).map { case (p, q) => 100 * p / q })
         }
         save(c, path)
       case effects.PlotKind.Level =>
         val c = chart(title, "predicted value (full scale)", "mean residual (LSB)")
-        for (s <- Seq(b, a); (r, p, ch) <- Seq[(Array[Double], Int => Double, String)]((s.resS, e.predSAt(_), "sin"), (s.resC, e.predCAt(_), "cos"))) {
-          val (x, y) = binned(j => p(j * s.stride), j => r(j) / lsb, s.size, -1, 1, 128); line(c, s"$ch, ${s.label}", x, y)
+        for (s <- Seq(b, a); (r, p, ch) <- Seq[(Array[Double], Array[Double], String)]((s.resS, pts.predS, "sin"), (s.resC, pts.predC, "cos"))) {
+          val (x, y) = binned(p(_), j => r(j) / lsb, s.size, -1, 1, 128); line(c, s"$ch, ${s.label}", x, y)
         }
         save(c, path)
       case effects.PlotKind.Spectrum => spectrum(title, Seq(b, a), e, path)
       case _ =>
         val c = chart(title, "fringe phase (degree)", "mean residual (LSB)")
         for (s <- Seq(b, a); (r, ch) <- Seq((s.resS, "sin"), (s.resC, "cos")) if f.channel == "both" || f.channel == ch) {
-          val (x, y) = binned(j => fringeDeg(e, j * s.stride), j => r(j) / lsb, s.size, 0, 360, 72); line(c, s"$ch, ${s.label}", x, y)
+          val (x, y) = binned(pts.fringeDeg(_), j => r(j) / lsb, s.size, 0, 360, 72); line(c, s"$ch, ${s.label}", x, y)
         }
         save(c, path)
     }
