@@ -214,17 +214,22 @@ final class ColGroups(make: IndexedSeq[() => IndexedSeq[Col]], keep: Boolean, he
 
   /** out += sign * sum beta_i * column_i on each channel (null: not that one), in one pass when columns are made a
     * block at a time: each sample gets the columns' parts in column order, as `LinearFit.addTo` adds them.
+    * With `initS`/`initC`, out starts as a copy of them (a block at a time in that pass: a long record's residual is
+    * one pass over memory, not a copy and then a pass).
     */
-  def addToBoth(outS: Array[Double], outC: Array[Double], beta: Array[Double], sign: Double): Unit = {
+  def addToBoth(outS: Array[Double], outC: Array[Double], beta: Array[Double], sign: Double,
+                initS: Array[Double] = null, initC: Array[Double] = null): Unit = {
     val all = layout()
     if (!streamed) {
+      for ((o, y) <- Seq((outS, initS), (outC, initC)) if o != null && y != null) System.arraycopy(y, 0, o, 0, o.length)
       for (g <- 0 until size; (o, ch) <- Seq((outS, true), (outC, false)) if o != null) LinearFit.addTo(o, all(g), beta.slice(at(g), at(g + 1)), ch, sign)
       return
     }
     val n = if (outS != null) outS.length else outC.length
     Par.blocks(n, Gram.Block) { (lo, hi) =>
       val bl = block(all, lo, hi, outS != null, outC != null)
-      for ((o, a, from) <- Seq((outS, bl.s, bl.sFrom), (outC, bl.c, bl.cFrom)) if o != null) {
+      for ((o, a, from, y) <- Seq((outS, bl.s, bl.sFrom, initS), (outC, bl.c, bl.cFrom, initC)) if o != null) {
+        if (y != null) System.arraycopy(y, lo, o, lo, hi - lo)
         var k = 0
         while (k < a.length) {
           val x = a(k); val b = sign * beta(k); val d = from(k)

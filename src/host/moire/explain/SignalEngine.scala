@@ -706,8 +706,7 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
 
   /** The residual of the fit `sol` over `cols`: the repaired data less the prediction. */
   private def residual(cols: ColGroups): Unit = {
-    System.arraycopy(repS, 0, resS, 0, n); System.arraycopy(repC, 0, resC, 0, n)
-    cols.addToBoth(resS, resC, sol.beta, -1.0)
+    cols.addToBoth(resS, resC, sol.beta, -1.0, repS, repC)
   }
 
   /** d(prediction)/d(2 pi fringe phase) per channel: the fundamental's (v), plus the harmonics' when the phase follows a
