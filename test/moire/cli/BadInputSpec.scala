@@ -197,6 +197,10 @@ class BadInputSpec extends AnyFlatSpec with Matchers {
     "record", "--port", port, "--seconds", "1", "--out", (aFile / "r.csv").toString)
   bad("a serial port that does not exist", "no such serial port")(recd("--seconds", "1"): _*)
   bad("no --port", "Missing argument: --port")("record", "--seconds", "1", "--out", (dir / "r.csv").toString)
+  // the parser stops at a word it does not know: the options after it are not missing, the unknown one is named alone
+  bad("an unknown option before a required one", "Unknown argument: --fs (see --help)", Seq(dir / "s.csv"))(
+    "simulate", "--fs", "0", "--out", (dir / "s.csv").toString)
+  bad("an unknown option with its value", "Unknown argument: --target (see --help)")("design", "--target", "-1")
 
   behavior of "board-reg"
   private def reg(args: String*): Seq[String] = Seq("board-reg", "--port", port) ++ args

@@ -53,9 +53,22 @@ object SubdivCmd {
   }
 
   private val badValue = """Invalid argument (--\S+) <(\w+)> failed to parse "(.*)" due to.*""".r
-  /** The first line of a mainargs error, reworded for a user. */
+  private val firstQuoted = "\"([^\"]*)\"".r
+  /** The first line of a mainargs error, reworded for a user. An unknown option is named alone (not with the words
+    * after it) and before the missing ones: the parser stops at the first word it does not know, so what follows it
+    * (`simulate --fs 0 --out x.csv`: the --out) is missing only because of it.
+    */
   def oneLine(msg: String): String = {
-    val first = msg.linesIterator.map(_.trim).find(_.nonEmpty).getOrElse("bad arguments")
+    val lines = msg.linesIterator.map(_.trim).filter(_.nonEmpty).toSeq
+    // the first word after "Unknown argument(s):", quoted or not
+    val unknown = lines.find(_.startsWith("Unknown argument")).map(_.dropWhile(_ != ':').drop(1).trim)
+      .flatMap(w => if (w.startsWith("\"")) firstQuoted.findFirstMatchIn(w).map(_.group(1)) else w.split("\\s+").headOption)
+      .filter(_.startsWith("-"))
+    val head = lines.headOption.getOrElse("bad arguments")
+    val first = unknown match {
+      case Some(opt) if head.startsWith("Missing argument") || head.startsWith("Unknown argument") => s"Unknown argument: $opt"
+      case _ => head
+    }
     first.replaceFirst("""^moire\.[\w.$]+Error: """, "") match {
       case badValue(opt, tpe, v) => s"$opt: '$v' is not a valid $tpe"
       case other if other.startsWith("Unknown argument") || other.startsWith("Missing argument") => s"$other (see --help)"
