@@ -55,6 +55,18 @@ class BadInputSpec extends AnyFlatSpec with Matchers {
   bad("a file that is not a recording", "first line must be")("explain", rec("text.csv", "hello\n"))
   bad("an empty file", "first line must be")("explain", rec("empty.csv", ""))
   bad("a missing sample rate", "sample_rate_hz' is missing")("explain", rec("nofs.csv", "# moire-recording v1\n# adc_bits: 12\nsin,cos\n1,2\n"))
+  // the codes in the other ADC format: read so, a sine jumps by nearly the full range at each zero crossing
+  private def pinRows(n: Int, bits: Int => Int): String = (0 until n).map { i =>
+    val a = 2 * math.Pi * i / 50.0; s"${bits((1500 * math.sin(a)).round.toInt)},${bits((1500 * math.cos(a)).round.toInt)}" }.mkString("\n") + "\n"
+  bad("two's-complement codes read as offset binary (no adc_format)", "the codes look twos-complement, not offset-binary as read (no adc_format line")(
+    "explain", rec("tc.csv", head + "sin,cos\n" + pinRows(2000, _ & 4095)))
+  bad("offset-binary codes stated as two's complement", "correct the line '# adc_format: offset-binary'")(
+    "explain", rec("ob.csv", head + "# adc_format: twos-complement\nsin,cos\n" + pinRows(2000, _ + 2048)))
+  "explain" should "read the same two's-complement codes when the file states their format" in {
+    val f = rec("tc-stated.csv", head + "# adc_format: twos-complement\nsin,cos\n" + pinRows(2000, _ & 4095))
+    val (code, err) = runCli("explain", "--quiet", "--json-dir", (dir / "tc-json").toString, f)
+    withClue(s"stderr: $err") { code shouldBe 0 }
+  }
   bad("a sample rate of 1e300", "not a sample rate")("explain", rec("fs.csv", "# moire-recording v1\n# sample_rate_hz: 1e300\n# adc_bits: 12\nsin,cos\n" + rows(100)))
   bad("a sample rate of NaN", "not a sample rate")("explain", rec("fsnan.csv", "# moire-recording v1\n# sample_rate_hz: NaN\n# adc_bits: 12\nsin,cos\n" + rows(100)))
   bad("a sample rate of 4.9e-324 (subnormal)", "not a sample rate")("explain", rec("fstiny.csv", "# moire-recording v1\n# sample_rate_hz: 4.9e-324\n# adc_bits: 12\nsin,cos\n" + rows(100)))

@@ -165,6 +165,34 @@ object ExplainCmd {
       throw new ExplainError(s"$p: ${rec.length} samples; explain needs at least $MinSamples (and a few fringe periods)")
     for ((name, c) <- Seq("sin" -> rec.sin, "cos" -> rec.cos) if c.forall(_ == c(0)))
       throw new ExplainError(s"$p: $name channel constant at code ${c(0)} over all ${rec.length} samples: a dead or unconnected channel, nothing to fit")
+    formatMismatch(rec).foreach(why => throw new ExplainError(s"$p: $why"))
+  }
+
+  /** Why the codes look written in the other ADC format, or None. Read in the wrong one (offset binary for two's
+    * complement or the reverse: the MSB inverted), a signal jumps by nearly the full range where it crosses zero, twice a
+    * fringe period; read in its own it does not. Jumps of more than 3/4 of the range between neighbouring samples
+    * are counted both ways: many in the file's format and few in the other is that mistake (a fit would take the
+    * jumps for harmonics of some 200 % of the fundamental). A stuck or glitching MSB jumps by half the range only.
+    */
+  def formatMismatch(rec: Recording): Option[String] = {
+    val adc = rec.adc; val half = adc.half; val limit = 3 * half / 2
+    def jumps(codes: Array[Int], flip: Boolean): Int = {
+      def v(c: Int) = { val x = adc.fromPins(c); if (!flip) x else if (x < 0) x + half else x - half }
+      var k = 0; var i = 1; var prev = v(codes(0))
+      while (i < codes.length) { val x = v(codes(i)); if (math.abs(x - prev) > limit) k += 1; prev = x; i += 1 }
+      k
+    }
+    val own = jumps(rec.sin, flip = false) + jumps(rec.cos, flip = false)
+    val other = jumps(rec.sin, flip = true) + jumps(rec.cos, flip = true)
+    if (own < 8 || other * 10 > own) None
+    else {
+      val is = adc.format.name
+      val alt = moire.signal.AdcFormat.all.find(_ != adc.format).get.name
+      val stated = rec.meta.contains("adc_format") || rec.meta.get("adc").exists(a => moire.signal.AdcFormat.parse(a).isRight)
+      Some(s"the codes look $alt, not $is as read (${if (stated) "the file's adc_format" else "no adc_format line: the default"}): " +
+        s"read as $is they jump by more than 3/4 of the ADC's range between neighbouring samples $own times, as $alt " +
+        s"$other times; ${if (stated) "correct" else "add"} the line '# adc_format: $alt' before the header")
+    }
   }
 
   /** Options may also follow the file names (mainargs puts everything after the first file into `rest`). */
