@@ -333,8 +333,25 @@ object SignalExplain {
     val unit = if (e.coarseBits == 0) "LSB" else s"steps of ${1 << e.coarseBits} LSB"
     (if (sd < 0.5) Seq(f"noise is $sd%.2f $unit rms, below 0.5: the quantization error is not white noise here; value-bound structure below ${Quantization.biasBound(e) / e.step}%.2f of a step is taken for quantization, not physics") else Nil) ++
       (if (e.typicalHz * 4 > e.fs && e.reference.isEmpty) Seq("fewer than 4 samples per fringe period: the phase trajectory is poorly sampled") else Nil) ++
-      RefReport.notes(e)
+      railNote(e).toSeq ++ RefReport.notes(e)
   }
+
+  /** Samples at an ADC's end codes: the signal beyond the converter's range there. They are fitted as censored (at or
+    * beyond the rail), which no effect reports, so the user is told when they are more than `RailShare` of a channel.
+    */
+  def railNote(e: SignalEngine): Option[String] = {
+    def share(y: Array[Double]): Double = {
+      val lo = e.railLo + 0.5 * e.lsb; val hi = e.railHi - 0.5 * e.lsb
+      Par.sum(y.length) { (a, b) => var k = 0; var i = a; while (i < b) { if (y(i) <= lo || y(i) >= hi) k += 1; i += 1 }; k.toDouble } / y.length
+    }
+    val s = share(e.ys); val c = share(e.yc)
+    if (math.max(s, c) < RailShare) None
+    else Some(f"the sin channel is at the ADC's end codes on ${100 * s}%.1f %% of the samples and the cos channel on ${100 * c}%.1f %%: " +
+      "the signal exceeds the converter's range there; those samples are fitted as at or beyond the end (censored), and a " +
+      "lower gain before the ADC would measure them")
+  }
+  /** A channel's share of samples at the end codes above which `railNote` speaks. */
+  val RailShare = 1e-3
 
   /** The default part's parameters. The noise is the model's residual where the model follows the signal, else the
     * noise floor from neighbouring samples (a misfit is not noise); `residual_*_fs` is always the model's.
