@@ -176,14 +176,20 @@ object ExplainCmd {
     */
   def formatMismatch(rec: Recording): Option[String] = {
     val adc = rec.adc; val half = adc.half; val limit = 3 * half / 2
-    def jumps(codes: Array[Int], flip: Boolean): Int = {
-      def v(c: Int) = { val x = adc.fromPins(c); if (!flip) x else if (x < 0) x + half else x - half }
-      var k = 0; var i = 1; var prev = v(codes(0))
-      while (i < codes.length) { val x = v(codes(i)); if (math.abs(x - prev) > limit) k += 1; prev = x; i += 1 }
-      k
+    // (jumps read in the file's format, jumps read in the other) in one pass over a channel
+    def jumps(codes: Array[Int]): (Int, Int) = {
+      def flip(x: Int) = if (x < 0) x + half else x - half
+      var k = 0; var j = 0; var i = 1; var prev = adc.fromPins(codes(0))
+      while (i < codes.length) {
+        val x = adc.fromPins(codes(i))
+        if (math.abs(x - prev) > limit) k += 1
+        if (math.abs(flip(x) - flip(prev)) > limit) j += 1
+        prev = x; i += 1
+      }
+      (k, j)
     }
-    val own = jumps(rec.sin, flip = false) + jumps(rec.cos, flip = false)
-    val other = jumps(rec.sin, flip = true) + jumps(rec.cos, flip = true)
+    val (s1, s2) = jumps(rec.sin); val (c1, c2) = jumps(rec.cos)
+    val own = s1 + c1; val other = s2 + c2
     if (own < 8 || other * 10 > own) None
     else {
       val is = adc.format.name
