@@ -32,6 +32,8 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
   val step: Double = lsb * (1 << coarseBits)
   val railLo: Double = -1.0
   val railHi: Double = (rec.adc.half - (1 << coarseBits)) * lsb
+  /** A value at an ADC end code (the repair censors it; clipping levels inside the range aside). */
+  @inline final def atRail(v: Double): Boolean = v >= railHi - 0.5 * lsb || v <= railLo + 0.5 * lsb
   /** Time from the record's middle (s), made when a term needs it. */
   def tc: Array[Double] = Doubles.tabulate(n)(i => (i - 0.5 * (n - 1)) / fs)
   /** The offsets' column: ones, not stored (`Col.Ones`). */

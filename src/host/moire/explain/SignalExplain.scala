@@ -340,10 +340,8 @@ object SignalExplain {
     * beyond the rail), which no effect reports, so the user is told when they are more than `RailShare` of a channel.
     */
   def railNote(e: SignalEngine): Option[String] = {
-    def share(y: Array[Double]): Double = {
-      val lo = e.railLo + 0.5 * e.lsb; val hi = e.railHi - 0.5 * e.lsb
-      Par.sum(y.length) { (a, b) => var k = 0; var i = a; while (i < b) { if (y(i) <= lo || y(i) >= hi) k += 1; i += 1 }; k.toDouble } / y.length
-    }
+    def share(y: Array[Double]): Double =
+      Par.sum(y.length) { (a, b) => var k = 0; var i = a; while (i < b) { if (e.atRail(y(i))) k += 1; i += 1 }; k.toDouble } / y.length
     val s = share(e.ys); val c = share(e.yc)
     if (math.max(s, c) < RailShare) None
     else Some(f"the sin channel is at the ADC's end codes on ${100 * s}%.1f %% of the samples and the cos channel on ${100 * c}%.1f %%: " +
