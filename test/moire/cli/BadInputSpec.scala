@@ -269,6 +269,8 @@ class BadInputSpec extends AnyFlatSpec with Matchers {
   behavior of "replay"
   bad("an output that is its input", "is an input of this command", Seq(good))("replay", good.toString, "--out", good.toString)
   bad("a missing recording", "no such file")("replay", (dir / "none.csv").toString)
+  bad("two's-complement codes read as offset binary", "the codes look twos-complement, not offset-binary as read", Seq(dir / "tc-replay-out.csv"))(
+    "replay", rec("tc-replay.csv", head + "sin,cos\n" + pinRows(2000, _ & 4095)), "--out", (dir / "tc-replay-out.csv").toString)
   bad("an unknown --design", "--design: 'nosuch' is not a replayable design")("replay", good.toString, "--design", "nosuch")
   bad("--counts 3", "--counts (M) must be a power of two")("replay", good.toString, "--counts", "3")
   bad("an unknown option last", "Unknown argument: --bogus (see replay --help)")(

@@ -165,40 +165,7 @@ object ExplainCmd {
       throw new ExplainError(s"$p: ${rec.length} samples; explain needs at least $MinSamples (and a few fringe periods)")
     for ((name, c) <- Seq("sin" -> rec.sin, "cos" -> rec.cos) if c.forall(_ == c(0)))
       throw new ExplainError(s"$p: $name channel constant at code ${c(0)} over all ${rec.length} samples: a dead or unconnected channel, nothing to fit")
-    formatMismatch(rec).foreach(why => throw new ExplainError(s"$p: $why"))
-  }
-
-  /** Why the codes look written in the other ADC format, or None. Read in the wrong one (offset binary for two's
-    * complement or the reverse: the MSB inverted), a signal jumps by nearly the full range where it crosses zero, twice a
-    * fringe period; read in its own it does not. Jumps of more than 3/4 of the range between neighbouring samples
-    * are counted both ways: many in the file's format and few in the other is that mistake (a fit would take the
-    * jumps for harmonics of some 200 % of the fundamental). A stuck or glitching MSB jumps by half the range only.
-    */
-  def formatMismatch(rec: Recording): Option[String] = {
-    val adc = rec.adc; val half = adc.half; val limit = 3 * half / 2
-    // (jumps read in the file's format, jumps read in the other) in one pass over a channel
-    def jumps(codes: Array[Int]): (Int, Int) = {
-      def flip(x: Int) = if (x < 0) x + half else x - half
-      var k = 0; var j = 0; var i = 1; var prev = adc.fromPins(codes(0))
-      while (i < codes.length) {
-        val x = adc.fromPins(codes(i))
-        if (math.abs(x - prev) > limit) k += 1
-        if (math.abs(flip(x) - flip(prev)) > limit) j += 1
-        prev = x; i += 1
-      }
-      (k, j)
-    }
-    val (s1, s2) = jumps(rec.sin); val (c1, c2) = jumps(rec.cos)
-    val own = s1 + c1; val other = s2 + c2
-    if (own < 8 || other * 10 > own) None
-    else {
-      val is = adc.format.name
-      val alt = moire.signal.AdcFormat.all.find(_ != adc.format).get.name
-      val stated = rec.meta.contains("adc_format") || rec.meta.get("adc").exists(a => moire.signal.AdcFormat.parse(a).isRight)
-      Some(s"the codes look $alt, not $is as read (${if (stated) "the file's adc_format" else "no adc_format line: the default"}): " +
-        s"read as $is they jump by more than 3/4 of the ADC's range between neighbouring samples $own times, as $alt " +
-        s"$other times; ${if (stated) "correct" else "add"} the line '# adc_format: $alt' before the header")
-    }
+    moire.recording.FormatCheck.mismatch(rec).foreach(why => throw new ExplainError(s"$p: $why"))
   }
 
   /** Options may also follow the file names (mainargs puts everything after the first file into `rest`). */

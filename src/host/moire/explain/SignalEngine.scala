@@ -690,7 +690,59 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
     // one step and much at the next; the reference path always takes one more)
     var prev = if (FitPath.isReference || (!plainData && !quick)) Double.PositiveInfinity else bic + lastGain; var k = if (quick) 2 else 3
     val from = if (FitPath.isReference) 0 else 1; val step = 2 - from
-    while (k < maxIters && prev - bic > 0.5) { prev = bic; refit(2, refineTraj = true, from = from); k += step }
+    // a repair's EM moves the solution by about half its distance to the fixed point a step: after two steps the fast
+    // path jumps along their line (SQUAREM, on the linear solution and the noise) and takes one step from there, kept
+    // when it ends lower than the last step; and it stops when the steps' ratio puts the rest of the way below 0.5
+    val fast = !FitPath.isReference && !plainData
+    var jump = fast
+    var hist: List[Step] = if (fast) List(Step.now) else Nil
+    var gains: List[Double] = Nil // the plain steps' gains since the last jump, the last first
+    def rest: Double = gains match { case g2 :: g1 :: _ if g1 > g2 && g2 > 0 => g2 * g2 / (g1 - g2); case _ => Double.PositiveInfinity }
+    while (k < maxIters && prev - bic > 0.5 && !(fast && rest < 0.5)) {
+      prev = bic; refit(2, refineTraj = true, from = from); k += step
+      if (fast) { gains = (prev - bic) :: gains; hist = (Step.now :: hist).take(3) }
+      if (jump && hist.size == 3 && prev - bic > 20 && k < maxIters) squarem(hist(2), hist(1), hist(0)).foreach { case (beta, nz) =>
+        val at = bic; val back = save()
+        set(beta, nz); refit(2, refineTraj = true, from = 1); k += 1
+        if (SignalEngine.debug) System.err.println(f"jump: bic $bic%.8g against $at%.8g")
+        if (bic <= at) { prev = at; _lastGain = at - bic; hist = List(Step.now); gains = Nil }
+        else { back match { case Some(r) => r(); case None => prev = Double.PositiveInfinity }; jump = false }
+      }
+    }
+  }
+
+  /** A refit's linear solution and noise. */
+  private final case class Step(beta: Array[Double], noise: Noise)
+  private object Step { def now: Step = Step(sol.beta.clone(), _noise) }
+
+  /** SQUAREM's point from three successive steps (Varadhan and Roland 2008): with r = t1 - t0 and v = t2 - 2 t1 + t0,
+    * the solution t0 - 2 a r + a^2 v, a = -|r| / |v| (at most -1: -1 gives t2), and the noise alike. None when the
+    * steps do not shrink by a third at least: a ratio near 1 is a drift, which a jump takes too far. The trajectory is
+    * left out: in a stuck bit's round its changes still grew where the solution's shrank, and jumping it too ended no
+    * lower (1 M bench).
+    */
+  private def squarem(t0: Step, t1: Step, t2: Step): Option[(Array[Double], Noise)] = {
+    val m = t0.beta.length
+    if (t1.beta.length != m || t2.beta.length != m) return None
+    val r = Array.tabulate(m)(i => t1.beta(i) - t0.beta(i)); val v = Array.tabulate(m)(i => t2.beta(i) - 2 * t1.beta(i) + t0.beta(i))
+    val nr = math.sqrt(sumSq(r)); val nv = math.sqrt(sumSq(v))
+    if (!(nr > 0) || !(nr <= 3 * nv)) return None
+    val a = -nr / nv
+    def at(x0: Double, x1: Double, x2: Double): Double = x0 - 2 * a * (x1 - x0) + a * a * (x2 - 2 * x1 + x0)
+    val beta = Array.tabulate(m)(i => at(t0.beta(i), t1.beta(i), t2.beta(i)))
+    val (n0, n1, n2) = (t0.noise, t1.noise, t2.noise)
+    def pos(x0: Double, x1: Double, x2: Double) = math.max(1e-3 * x2, at(x0, x1, x2))
+    val nz = n2.copy(varS = pos(n0.varS, n1.varS, n2.varS), varC = pos(n0.varC, n1.varC, n2.varC), jitter2 = math.max(0.0, at(n0.jitter2, n1.jitter2, n2.jitter2)))
+    if (SignalEngine.debug) System.err.println(f"jump: a $a%.3f")
+    if (beta.forall(x => !x.isNaN && !x.isInfinite)) Some((beta, nz)) else None
+  }
+
+  /** The fit at the solution `beta` and noise `nz`, on the current trajectory and data. */
+  private def set(beta: Array[Double], nz: Noise): Unit = {
+    _base = beta.take(6)
+    val cols = groups()
+    cols.addToBoth(resS, resC, beta, -1.0, repS, repC); holdExcluded(); predictionSlope(cols, beta.take(6))
+    _noise = nz; _version += 1
   }
 
   /** The design of the current spec: the default part, each term's columns, then `extra` groups (held). The terms'

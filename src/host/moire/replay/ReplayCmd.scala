@@ -99,6 +99,7 @@ object ReplayCmd {
     val rec = Recording.read(path)
     rec.warnings.foreach(w => System.err.println(s"replay: WARNING: $f: $w"))
     val readS = lap()
+    moire.recording.FormatCheck.mismatch(rec).foreach(why => throw new ReplayError(s"$f: $why"))
     val d = ReplayDesign(design, config(opts.subdiv, rec.meta))
     matchAdc(f, rec, d)
     val p = pins(f, rec)
