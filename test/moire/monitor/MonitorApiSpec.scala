@@ -110,6 +110,22 @@ class MonitorApiSpec extends AnyFlatSpec {
     finally all.close()
   }
 
+  "monitor --port" should "say in the terminal, once, that a port it cannot open is not connected" in {
+    val o = MonitorCmd.Options(Some("/nonexistent/ttyNONE"), None, simulate = false, Nil, 115200, None, "127.0.0.1", 0,
+      os.temp.dir(prefix = "moire-monitor-out").toString, Scale.none)
+    val warned = new java.util.concurrent.ConcurrentLinkedQueue[String]()
+    val (server, all) = MonitorCmd.start(o, w => fail(s"unexpected warning: $w"), w => warned.add(w))
+    try {
+      until("a line on the port", 10)(if (warned.isEmpty) None else Some(()))
+      Thread.sleep(2500) // two more tries, which are not said again
+      val lines = warned.toArray.toSeq.map(_.toString)
+      assert(lines.size == 1 && lines.head.startsWith("monitor: board on /nonexistent/ttyNONE: not connected: ") &&
+        lines.head.endsWith("(tried again every second)") && !lines.head.contains("Exception"), lines)
+      info(lines.head)
+      assert(!ujson.read(get(server.url + "api/state").body)("connected").bool)
+    } finally all.close()
+  }
+
   "monitor --replay" should "play a recording at its own rate, its position from the fringe phase when it has no position column" in {
     val dir = os.temp.dir(prefix = "moire-monitor-replay")
     val m = moire.explain.PhysicsModel(moire.signal.SignalParams(amplitude = 0.7, phaseErrorDeg = -1.0, noiseRms = 0.0005, seed = 2),

@@ -5,9 +5,9 @@ import moire.lissajous.EllipseFit
 
 /** The monitor's live state: the last [[Live.Window]] records of the source, the connection, link figures, board flags,
   * tolerances and the burst in progress. Sources write, the server reads [[state]] (the JSON of GET /api/state).
-  * Thread-safe (one lock).
+  * Thread-safe (one lock). `said` hears each change of the connection (up or not, and why).
   */
-final class Live(staleSeconds: Double = 2.0) {
+final class Live(staleSeconds: Double = 2.0, said: (Boolean, String) => Unit = (_, _) => ()) {
   import Live._
   private val sin = new Array[Int](Window); private val cos = new Array[Int](Window)
   private val index = new Array[Long](Window); private val pos = new Array[Long](Window); private val flags = new Array[Int](Window)
@@ -33,6 +33,7 @@ final class Live(staleSeconds: Double = 2.0) {
   }
   def connection(up: Boolean, why: String): Unit = synchronized {
     if (connected && !up) disconnects += 1
+    if (up != connected || why != message) said(up, why)
     connected = up; message = why
   }
   def link(figures: ujson.Obj): Unit = synchronized { linkFigures = figures }

@@ -37,13 +37,18 @@ object MonitorCmd {
     case _ => new ReplaySource(SimBoard.recording(if (o.effects.isEmpty) SimBoard.DefaultEffects else o.effects), "simulated board", o.scale)
   }
 
-  /** Starts everything; the caller closes the result (the server, the source, the work folder). */
-  def start(o: Options, warn: String => Unit): (MonitorServer, AutoCloseable) = {
+  /** Starts everything; the caller closes the result (the server, the source, the work folder). `tell` hears a board's
+    * connection when it changes (up or not, and why).
+    */
+  def start(o: Options, warn: String => Unit, tell: String => Unit = _ => ()): (MonitorServer, AutoCloseable) = {
     validate(o)
     val loopback = try java.net.InetAddress.getByName(o.bind).isLoopbackAddress catch { case _: Exception => false }
     if (!loopback) warn(s"WARNING: the monitor listens on ${o.bind}: anyone who reaches this computer there can watch the board, capture bursts and save files")
     val src = source(o, warn)
-    val live = new Live()
+    // a board's connection said in the terminal too, when it changes (the page shows it all the time)
+    val live = o.port.fold(new Live()) { p =>
+      new Live(said = (up, why) => tell(s"monitor: board on $p: ${if (up) why else s"not connected: $why (tried again every second)"}"))
+    }
     val work = os.temp.dir(prefix = "moire-monitor")
     val app = new Monitor(live, src, os.Path(o.out, os.pwd), work)
     src.start(live)
@@ -52,7 +57,7 @@ object MonitorCmd {
   }
 
   def run(o: Options, say: String => Unit, warn: String => Unit): Unit = {
-    val (server, all) = start(o, warn)
+    val (server, all) = start(o, warn, warn)
     sys.addShutdownHook(all.close())
     say(s"monitor: ${server.url} (Ctrl-C stops)")
     Thread.currentThread().join()
