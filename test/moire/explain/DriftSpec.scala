@@ -35,6 +35,22 @@ class DriftSpec extends AnyFlatSpec with Matchers {
     f.params("offset_sin_per_s") * 2048 shouldBe 20.0 +- 3 * f.unc("offset_sin_per_s") * 2048
   }
 
+  it should "list a contrast change found first as negligible when a drift found after it takes its part, naming the drift" in {
+    // a one-way scan whose speed swells and falls: position and time correlate (r 0.99), the linear contrast change
+    // along the travel is the stronger candidate and takes most of a drift first; the drift found after it fits better,
+    // and in the final fit the contrast change's part is below the floor
+    val r = run(FringeGenerator.Spec(n = 200000, fs = 2e6, motion = "swell", f0 = 5e3, f1 = 60e3, noiseLsb = 1.2, driftOffsetPerS = 0.1))
+    r.findings.map(_.effect) shouldBe Seq("drift")
+    val f = r.findings.head
+    f.params("offset_sin_per_s") shouldBe 0.1 +- 3 * f.unc("offset_sin_per_s")
+    val n = r.negligible.find(_.effect == "contrast_along_travel").getOrElse(fail(s"no negligible contrast change: ${r.negligible}"))
+    n.takenBy shouldBe Seq("drift")
+    n.sizeLsb should be < n.floorLsb
+    val text = n.json("summary").str
+    println(s"negligible: $text")
+    text should include("but drift, found after it, took its part")
+  }
+
   it should "call a contrast change along a one-way scan neither drift nor warm-up, and rank three sizes in order" in {
     val sizes = Seq(-1e-5, -3e-5, -1e-4)
     val est = sizes.map { c =>

@@ -11,7 +11,8 @@ import java.util.Random
   * and its own CSV text.
   */
 object FringeGenerator {
-  /** motion: "constant" (f0), "chirp" (f0 -> f1), "reverse" (peak `travel` periods at `rateHz`), "uneven" (drive f0
+  /** motion: "constant" (f0), "chirp" (f0 -> f1), "swell" (f0 up to f1 and back), "reverse" (peak `travel` periods at
+    * `rateHz`), "uneven" (drive f0
     * plus two vibrations whose speed peaks at `wobble` x f0, so it may reverse).
     */
   final case class Spec(n: Int = 50000, fs: Double = 2e6, motion: String = "constant", f0: Double = 20e3, f1: Double = 60e3,
@@ -26,6 +27,10 @@ object FringeGenerator {
   def periods(s: Spec, t: Double): Double = s.motion match {
     case "constant" => s.f0 * t
     case "chirp" => s.f0 * t + 0.5 * (s.f1 - s.f0) * t * t / (s.n / s.fs)
+    case "swell" =>
+      // the speed rises from f0 to f1 and falls back over the record: f0 + (f1 - f0) (1 - cos(2 pi t / T)) / 2
+      val dur = s.n / s.fs
+      s.f0 * t + 0.5 * (s.f1 - s.f0) * (t - dur / (2 * math.Pi) * math.sin(2 * math.Pi * t / dur))
     case "reverse" => s.travel * (1 - math.cos(2 * math.Pi * s.rateHz * t))
     case "uneven" =>
       // vibration at 137 Hz and 311 Hz; their speed amplitudes are wobble * f0 * (0.7, 0.3)

@@ -21,4 +21,12 @@ class NegligibleSummarySpec extends AnyFlatSpec with Matchers {
     s should include("0.102 LSB (floor 0.250 LSB): too small to matter")
     Negligible("interference", "both", 0.102, 0.25, 897.0, p).json("summary").str should startWith("interference: lowers BIC")
   }
+
+  it should "name the effects that took its part when it was found before them" in {
+    val n = Negligible("contrast_along_travel", "both", 0.056, 0.25, 958120.0, Map.empty, "contrast changes along the travel", Seq("drift"))
+    n.json("summary").str shouldBe "contrast_along_travel: contrast changes along the travel: lowered BIC by 958120 when found, but drift, " +
+      "found after it, took its part: in the final fit it changes the signal by only 0.0560 LSB (floor 0.250 LSB), too small to matter " +
+      "(the two predict nearly the same signal here)"
+    n.json("taken_by").arr.map(_.str) shouldBe Seq("drift")
+  }
 }

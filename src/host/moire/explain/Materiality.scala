@@ -81,9 +81,12 @@ object Materiality {
   * effect's own sentence, with where it shows: a line's frequency, a harmonic's order), so the list says which structure it was.
   */
 final case class Negligible(effect: String, channel: String, sizeLsb: Double, floorLsb: Double, deltaBic: Double, params: Map[String, Double],
-                            what: String = "") {
+                            what: String = "", takenBy: Seq[String] = Nil) {
   def json: ujson.Obj = ujson.Obj("effect" -> effect, "channel" -> channel, "size_lsb" -> Report.num(sizeLsb),
     "floor_lsb" -> Report.num(floorLsb), "delta_bic" -> Report.num(deltaBic), "params" -> Report.nums(params),
-    "summary" -> ((if (what.isEmpty) effect else s"$effect: $what") +
-      f": lowers BIC by $deltaBic%.0f but changes the signal by only $sizeLsb%.3g LSB (floor $floorLsb%.3g LSB): too small to matter"))
+    "taken_by" -> ujson.Arr(takenBy.map(ujson.Str(_)): _*),
+    "summary" -> ((if (what.isEmpty) effect else s"$effect: $what") + (
+      if (takenBy.isEmpty) f": lowers BIC by $deltaBic%.0f but changes the signal by only $sizeLsb%.3g LSB (floor $floorLsb%.3g LSB): too small to matter"
+      else f": lowered BIC by $deltaBic%.0f when found, but ${takenBy.mkString(" and ")}, found after it, took its part: in the final fit it " +
+        f"changes the signal by only $sizeLsb%.3g LSB (floor $floorLsb%.3g LSB), too small to matter (the two predict nearly the same signal here)")))
 }

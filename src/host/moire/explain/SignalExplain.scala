@@ -174,8 +174,20 @@ object SignalExplain {
       }
       if (!accepted) done = true
     }
+    // each finding must still matter in the final joint fit: one whose linear part an effect found after it took over
+    // (the two predict nearly the same signal in this record) is listed as negligible, naming that effect
+    val floorEnd = materiality.floor(e.lsb, Adequacy.floor(e))
+    val found = steps.result()
+    val taken = found.zipWithIndex.flatMap { case ((f, _, _), j) =>
+      termOf(e, f).flatMap(t => partSize(e, t)).filter(_ < floorEnd).map(sz => j -> sz)
+    }.toMap
     val cands = new Candidates(e)
-    val fin = steps.result().map { case (f, b, a) =>
+    taken.toSeq.sortBy(_._1).foreach { case (j, sz) =>
+      val g = refresh(found(j)._1, e)
+      negligible += Negligible(g.effect, g.channel, sz / e.lsb, floorEnd / e.lsb, g.deltaBic, g.params,
+        Effects(g.effect).fold(g.where)(_.summary(g.params, g.channel, cands.fMin, cands.fMax)), found.drop(j + 1).map(_._1.effect).distinct)
+    }
+    val fin = found.zipWithIndex.filterNot(x => taken.contains(x._2)).map(_._1).map { case (f, b, a) =>
       val g = refresh(f, e)
       val fx = Effects(g.effect)
       (g.copy(summary = fx.fold(g.effect)(_.summary(g.params, g.channel, cands.fMin, cands.fMax)),
@@ -213,12 +225,19 @@ object SignalExplain {
     Result(report, e, before, shown, rerun)
   }
 
-  /** A new linear term's own part of the prediction (its columns times its coefficients): its size. Read at the
-    * size's points only; a term made a block at a time is never made whole (at 20 M samples its columns and the two
-    * parts took 1.3 GB).
+  /** A new linear term's own part of the prediction (its columns times its coefficients): its size. */
+  private def termSize(e: SignalEngine, prev: ModelSpec): Option[Double] = e.spec.terms.diff(prev.terms).headOption.flatMap(partSize(e, _))
+
+  /** The linear term of the current fit that a finding is, if it is one. */
+  private def termOf(e: SignalEngine, f: Finding): Option[Term] =
+    e.termIndex.keys.find(t => t.name == f.effect && termMatches(t, f))
+
+  /** A linear term's own part of the prediction (its columns times its coefficients in the current fit): its size.
+    * Read at the size's points only; a term made a block at a time is never made whole (at 20 M samples its columns
+    * and the two parts took 1.3 GB).
     */
-  private def termSize(e: SignalEngine, prev: ModelSpec): Option[Double] =
-    e.spec.terms.diff(prev.terms).headOption.filter(e.termIndex.contains).map { t =>
+  private def partSize(e: SignalEngine, t: Term): Option[Double] =
+    Some(t).filter(e.termIndex.contains).map { t =>
       val st = Materiality.strideOf(e.n); val at = e.termIndex(t)
       val part = e.termGen(t).filter(_ => !FitPath.isReference) match {
         case Some(g) => Materiality.Points.ofTerm(e.n, st, g, e.sol.beta.slice(at, at + g.size))
