@@ -51,6 +51,18 @@ class DriftSpec extends AnyFlatSpec with Matchers {
     text should include("but drift, found after it, took its part")
   }
 
+  it should "find a large drift on a ramp, where a contrast change along the travel does not replicate on the halves" in {
+    // position goes with the square of time: a change linear in the position has other slopes in the two halves of
+    // the record. Before, the drift stood back for that refuted alternative ("the record cannot tell it from a contrast
+    // change") and the report had no finding
+    val r = run(FringeGenerator.Spec(n = 200000, fs = 2e6, motion = "chirp", f0 = 5e3, f1 = 60e3, noiseLsb = 1.2, driftOffsetPerS = 0.1))
+    r.findings.map(_.effect) shouldBe Seq("drift")
+    val f = r.findings.head
+    println(f"drift on a ramp: ${f.params("offset_sin_per_s")}%.5f +- ${f.unc("offset_sin_per_s")}%.1e full scale per second (true 0.1)")
+    f.params("offset_sin_per_s") shouldBe 0.1 +- 3 * f.unc("offset_sin_per_s")
+    f.lookAlikes.exists(_.startsWith("contrast_along_travel")) shouldBe true
+  }
+
   it should "call a contrast change along a one-way scan neither drift nor warm-up, and rank three sizes in order" in {
     val sizes = Seq(-1e-5, -3e-5, -1e-4)
     val est = sizes.map { c =>

@@ -4,16 +4,20 @@ package moire.explain
   * "no stories" (c)): a change along the travel (beam walk, contamination) and a change with speed. In a scan that
   * only moves one way at an even speed, position, speed and time go together and no fit can say which it was.
   * The test: the candidate must still lower BIC by more than the threshold when the alternative is already fitted
-  * (and a contrast change along the travel must do so beyond a drift in time).
+  * (and a contrast change along the travel must do so beyond a drift in time). An alternative the record refuted
+  * (`refuted`: its joint refit did not replicate on the splits of its domain) is left out: where position goes with
+  * time as the square of it (a ramp), a change linear in one does not replicate on the halves of the other.
   */
 object Identify {
-  def why(e: SignalEngine, c: Cand): Option[String] = c.spec.terms.diff(e.spec.terms).headOption match {
+  def why(e: SignalEngine, c: Cand, refuted: Set[String] = Set.empty): Option[String] = c.spec.terms.diff(e.spec.terms).headOption match {
     case Some(t @ (Term.Drift | Term.Warmup(_))) =>
-      val alts = (if (e.spec.terms.contains(Term.Contrast)) Nil else Seq("a contrast change along the travel" -> (() => e.termCols(Term.Contrast)))) :+
+      val travel = e.spec.terms.contains(Term.Contrast) || refuted(effects.ContrastAlongTravel.name)
+      val alts = (if (travel) Nil else Seq("a contrast change along the travel" -> (() => e.termCols(Term.Contrast)))) :+
         ("an amplitude change with speed" -> (() => speedCols(e)))
       beyond(e, t, alts ++ fringeHarmonics(e))
     case Some(t @ (Term.Contrast | Term.ContrastSpline(_))) =>
-      val time = if (e.spec.terms.exists(t => t == Term.Drift || t.isInstanceOf[Term.Warmup])) Nil else Seq("a drift in time" -> (() => e.termCols(Term.Drift)))
+      val inTime = e.spec.terms.exists(t => t == Term.Drift || t.isInstanceOf[Term.Warmup]) || refuted(effects.Drift.name)
+      val time = if (inTime) Nil else Seq("a drift in time" -> (() => e.termCols(Term.Drift)))
       beyond(e, t, time ++ fringeHarmonics(e))
     case _ => None
   }

@@ -126,9 +126,12 @@ object SignalExplain {
           rejected += Located(s"${c.effect} (${c.channel}): ${c.where}", s"structure of this shape lowers BIC by ${"%.0f".format(dbic(c))}, but $why",
             c.params, significant = true)
       var accepted = false; var tries = 0; var smallTries = 0
+      // effects this round's joint refits showed not to replicate: the record refutes them, so they are no alternative
+      // that a change in time or along the travel could not be told from
+      val refuted = scala.collection.mutable.Set.empty[String]
       while (!accepted && tries < MaxTries && ordered.hasNext) {
         val c = ordered.next()
-        Quantization.why(e, c).orElse(Identify.why(e, c)) match {
+        Quantization.why(e, c).orElse(Identify.why(e, c, refuted.toSet)) match {
           case Some(why) => reject(c, why)
           case None =>
             tries += 1
@@ -152,7 +155,8 @@ object SignalExplain {
             // the noise is the floor from neighbouring samples: the model's residual still holds the effects not yet fitted
             lazy val floor = materiality.floor(e.lsb, Adequacy.floor(e))
             // no finding when the joint refit does not lower the criterion, the effect is negligible or does not replicate
-            val why = if (!(bic0 - e.bic > 0)) Some("") else if (size < floor) Some("negligible") else Replicate.why(e, prev)
+            val why = if (!(bic0 - e.bic > 0)) Some("") else if (size < floor) Some("negligible")
+              else { val r = Replicate.why(e, prev); if (r.isDefined) refuted += c.effect; r }
             lap("replicate")
             why.orElse(claimed(claims, before, claimedNow)) match {
               case Some(w) =>
