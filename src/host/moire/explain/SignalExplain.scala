@@ -327,7 +327,7 @@ object SignalExplain {
       while (k < 3 && moved) {
         val t = e.spec.terms.last.asInstanceOf[Term.Interference]
         moved = e.termIndex.get(t).exists { at =>
-          val (step0, sd) = lineStep(e, t.hz, e.sol.beta.slice(at, at + 4))
+          val (step0, sd) = effects.Interference.frequencyStep(e, t.hz, e.sol.beta.slice(at, at + 4))
           // the steps shrink geometrically (the trajectory takes up a part of each): the second goes the rest of the way
           val r = step0 / last; val step = if (r > 0 && r < 0.7) step0 / (1 - r) else step0
           if (SignalEngine.debug) System.err.println(f"retune: ${t.hz}%.6f Hz, step $step0%.3g (taken $step%.3g), sd $sd%.3g")
@@ -340,26 +340,6 @@ object SignalExplain {
       val hz = e.spec.terms.last.asInstanceOf[Term.Interference].hz
       c.copy(spec = e.spec, params = c.params + ("frequency_hz" -> hz))
     case _ => c
-  }
-
-  /** The Gauss-Newton step of a line's frequency (Hz) from the residual, and the frequency's uncertainty: the line's
-    * derivative by its frequency at time from the record's middle (orthogonal to its own sin and cos), each channel
-    * weighted by its noise variance.
-    */
-  private def lineStep(e: SignalEngine, hz: Double, b: Array[Double]): (Double, Double) = {
-    val w = 2 * math.Pi * hz / e.fs; val mid = 0.5 * (e.n - 1); val vS = e.noise.varS; val vC = e.noise.varC
-    val m = Par.sums(e.n, 2) { (lo, hi, o) =>
-      var s = math.sin(w * lo); var c = math.cos(w * lo); val sw = math.sin(w); val cw = math.cos(w)
-      var num = 0.0; var den = 0.0; var i = lo
-      while (i < hi) {
-        val tt = 2 * math.Pi * (i - mid) / e.fs
-        val gs = tt * (b(0) * c - b(1) * s); val gc = tt * (b(2) * c - b(3) * s)
-        num += e.resS(i) * gs / vS + e.resC(i) * gc / vC; den += gs * gs / vS + gc * gc / vC
-        val s1 = s * cw + c * sw; c = c * cw - s * sw; s = s1; i += 1
-      }
-      o(0) += num; o(1) += den
-    }
-    if (m(1) > 0) (m(0) / m(1), 1 / math.sqrt(m(1))) else (0.0, Double.PositiveInfinity)
   }
 
   /** Alternates polishing the nonlinear parameters and refitting until BIC settles (at most 4 times). */

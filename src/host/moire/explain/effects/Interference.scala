@@ -64,6 +64,26 @@ object Interference extends Effect {
     }
   }
 
+  /** The Gauss-Newton step of a line's frequency (Hz) from the residual, and the frequency's uncertainty: the line's
+    * derivative by its frequency at time from the record's middle (orthogonal to its own sin and cos), each channel
+    * weighted by its noise variance.
+    */
+  def frequencyStep(e: SignalEngine, hz: Double, b: Array[Double]): (Double, Double) = {
+    val w = 2 * math.Pi * hz / e.fs; val mid = 0.5 * (e.n - 1); val vS = e.noise.varS; val vC = e.noise.varC
+    val m = Par.sums(e.n, 2) { (lo, hi, o) =>
+      var s = math.sin(w * lo); var c = math.cos(w * lo); val sw = math.sin(w); val cw = math.cos(w)
+      var num = 0.0; var den = 0.0; var i = lo
+      while (i < hi) {
+        val tt = 2 * math.Pi * (i - mid) / e.fs
+        val gs = tt * (b(0) * c - b(1) * s); val gc = tt * (b(2) * c - b(3) * s)
+        num += e.resS(i) * gs / vS + e.resC(i) * gc / vC; den += gs * gs / vS + gc * gc / vC
+        val s1 = s * cw + c * sw; c = c * cw - s * sw; s = s1; i += 1
+      }
+      o(0) += num; o(1) += den
+    }
+    if (m(1) > 0) (m(0) / m(1), 1 / math.sqrt(m(1))) else (0.0, Double.PositiveInfinity)
+  }
+
   def summary(p: Map[String, Double], channel: String, fMin: Double, fMax: Double): String =
     f"pickup at ${hz(Effect.g(p, "frequency_hz"))}, ${Effect.g(p, "amplitude_fs")}%.3g full scale amplitude"
 
