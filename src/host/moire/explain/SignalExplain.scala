@@ -144,7 +144,7 @@ object SignalExplain {
             val prev = e.spec
             // the fit before the trial, to go back to when it is not kept (the reference path fits the old spec again)
             val back = if (FitPath.isReference) None else e.save()
-            e.spec = c.spec; e.converge(); settle(e)
+            e.spec = c.spec; e.converge(tune = lineTune(e)); settle(e)
             val c1 = retune(e, demote(e, c))
             lap("refit")
             // materiality first: the change it makes to the signal, against the floor. What lowers the criterion but is
@@ -325,21 +325,35 @@ object SignalExplain {
     case Some(Term.Interference(_)) =>
       var k = 0; var moved = true; var last = 0.0
       while (k < 3 && moved) {
-        val t = e.spec.terms.last.asInstanceOf[Term.Interference]
-        moved = e.termIndex.get(t).exists { at =>
-          val (step0, sd) = effects.Interference.frequencyStep(e, t.hz, e.sol.beta.slice(at, at + 4))
-          // the steps shrink geometrically (the trajectory takes up a part of each): the second goes the rest of the way
-          val r = step0 / last; val step = if (r > 0 && r < 0.7) step0 / (1 - r) else step0
-          if (SignalEngine.debug) System.err.println(f"retune: ${t.hz}%.6f Hz, step $step0%.3g (taken $step%.3g), sd $sd%.3g")
-          last = step0
-          if (!(math.abs(step0) > 0.25 * sd)) false
-          else { e.spec = e.spec.copy(terms = e.spec.terms.init :+ Term.Interference(t.hz + step)); e.converge(moved = true); true }
-        }
+        // the steps shrink geometrically (the trajectory takes up a part of each): the second goes the rest of the way
+        moved = lineStep(e, "retune", { s => val r = s / last; last = s; if (r > 0 && r < 0.7) s / (1 - r) else s })
+        if (moved) e.converge(moved = true)
         k += 1
       }
       val hz = e.spec.terms.last.asInstanceOf[Term.Interference].hz
       c.copy(spec = e.spec, params = c.params + ("frequency_hz" -> hz))
     case _ => c
+  }
+
+  /** A new line's frequency moved along with the round's refits (`SignalEngine.converge`'s `tune`): most of the way
+    * to the whole record's optimum is made there, before `retune` checks it; null for other effects.
+    */
+  private def lineTune(e: SignalEngine): () => Boolean = e.spec.terms.lastOption match {
+    case Some(Term.Interference(_)) => () => lineStep(e, "tune", identity)
+    case _ => null
+  }
+
+  /** The Gauss-Newton step of the last term's frequency (a line's) from the fit as it stands, as `take` scales it;
+    * false when the step is below a quarter of the frequency's sd (nothing moved).
+    */
+  private def lineStep(e: SignalEngine, what: String, take: Double => Double): Boolean = {
+    val t = e.spec.terms.last.asInstanceOf[Term.Interference]
+    e.termIndex.get(t).exists { at =>
+      val (step0, sd) = effects.Interference.frequencyStep(e, t.hz, e.sol.beta.slice(at, at + 4))
+      val step = take(step0)
+      if (SignalEngine.debug) System.err.println(f"$what: ${t.hz}%.6f Hz, step $step0%.3g (taken $step%.3g), sd $sd%.3g")
+      math.abs(step0) > 0.25 * sd && { e.spec = e.spec.copy(terms = e.spec.terms.init :+ Term.Interference(t.hz + step)); true }
+    }
   }
 
   /** Alternates polishing the nonlinear parameters and refitting until BIC settles (at most 4 times). */
