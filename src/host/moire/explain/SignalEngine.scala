@@ -680,9 +680,10 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
   /** Refits until BIC stops falling (fault repairs and the trajectory settle over a few iterations). `moved`: only
     * nonlinear parameters of the spec moved a little (a polish), no effect is new: one refining step before the first
     * check, and the loop stops on a small gain even with repairs (the reference path fits as for a new effect).
-    * `tune` (null: none) may move a nonlinear parameter of the spec before each of the loop's refits; true when it did.
+    * `tune` (null: none) may move a nonlinear parameter of the spec before each of the loop's refits, and says by how
+    * many of its sd (0: not moved).
     */
-  def converge(maxIters: Int = 12, moved: Boolean = false, tune: () => Boolean = null): Unit = {
+  def converge(maxIters: Int = 12, moved: Boolean = false, tune: () => Double = null): Unit = {
     val quick = moved && !FitPath.isReference
     // three steps before the first check: a new fault's repair may gain little at its first step and much later
     refit(if (quick) 2 else 3, refineTraj = true)
@@ -700,9 +701,10 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
     var gains: List[Double] = Nil // the plain steps' gains since the last jump, the last first
     def rest: Double = gains match { case g2 :: g1 :: _ if g1 > g2 && g2 > 0 => g2 * g2 / (g1 - g2); case _ => Double.PositiveInfinity }
     while (k < maxIters && prev - bic > 0.5 && !(fast && rest < 0.5)) {
-      // a nonlinear parameter's step before the refit (`tune`, a line's frequency): the steps before it no jump's, and
-      // a plain solve first (the trajectory refined from the old residual would take up the step's part again)
-      val tuned = tune != null && tune()
+      // a nonlinear parameter's step before the refit (`tune`, a line's frequency): after one of more than its sd the
+      // steps before it are no jump's, and a plain solve comes first (the trajectory refined from the old residual
+      // would take up the step's part again)
+      val tuned = tune != null && tune() > 1
       if (tuned) { hist = Nil; gains = Nil }
       prev = bic; refit(2, refineTraj = true, from = if (tuned) 0 else from); k += step
       if (fast) { gains = (prev - bic) :: gains; hist = (Step.now :: hist).take(3) }

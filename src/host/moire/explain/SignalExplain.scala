@@ -326,7 +326,7 @@ object SignalExplain {
       var k = 0; var moved = true; var last = 0.0
       while (k < 3 && moved) {
         // the steps shrink geometrically (the trajectory takes up a part of each): the second goes the rest of the way
-        moved = lineStep(e, "retune", { s => val r = s / last; last = s; if (r > 0 && r < 0.7) s / (1 - r) else s })
+        moved = lineStep(e, "retune", { s => val r = s / last; last = s; if (r > 0 && r < 0.7) s / (1 - r) else s }) > 0
         if (moved) e.converge(moved = true)
         k += 1
       }
@@ -338,21 +338,22 @@ object SignalExplain {
   /** A new line's frequency moved along with the round's refits (`SignalEngine.converge`'s `tune`): most of the way
     * to the whole record's optimum is made there, before `retune` checks it; null for other effects.
     */
-  private def lineTune(e: SignalEngine): () => Boolean = e.spec.terms.lastOption match {
+  private def lineTune(e: SignalEngine): () => Double = e.spec.terms.lastOption match {
     case Some(Term.Interference(_)) => () => lineStep(e, "tune", identity)
     case _ => null
   }
 
-  /** The Gauss-Newton step of the last term's frequency (a line's) from the fit as it stands, as `take` scales it;
-    * false when the step is below a quarter of the frequency's sd (nothing moved).
+  /** The Gauss-Newton step of the last term's frequency (a line's) from the fit as it stands, as `take` scales it: the
+    * step taken in the frequency's sd, 0 when the step is below a quarter of it (nothing moved).
     */
-  private def lineStep(e: SignalEngine, what: String, take: Double => Double): Boolean = {
+  private def lineStep(e: SignalEngine, what: String, take: Double => Double): Double = {
     val t = e.spec.terms.last.asInstanceOf[Term.Interference]
-    e.termIndex.get(t).exists { at =>
+    e.termIndex.get(t).fold(0.0) { at =>
       val (step0, sd) = effects.Interference.frequencyStep(e, t.hz, e.sol.beta.slice(at, at + 4))
       val step = take(step0)
       if (SignalEngine.debug) System.err.println(f"$what: ${t.hz}%.6f Hz, step $step0%.3g (taken $step%.3g), sd $sd%.3g")
-      math.abs(step0) > 0.25 * sd && { e.spec = e.spec.copy(terms = e.spec.terms.init :+ Term.Interference(t.hz + step)); true }
+      if (!(math.abs(step0) > 0.25 * sd)) 0.0
+      else { e.spec = e.spec.copy(terms = e.spec.terms.init :+ Term.Interference(t.hz + step)); math.abs(step) / sd }
     }
   }
 
