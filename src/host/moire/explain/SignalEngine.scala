@@ -62,6 +62,9 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
   /** The measured values with faults undone and censored samples at the prediction (the data the model is fitted to). */
   def repS: Array[Double] = _repS; def repC: Array[Double] = _repC
   def cens: Repaired = _cens
+  // the repaired data's arrays are also held elsewhere (a saved state, a trajectory length kept in `init`): the next
+  // refit's repair makes new ones instead of writing over them (at 20 M samples a repaired channel is 240 MB)
+  private var shared = false
   val resS = new Array[Double](n); val resC = new Array[Double](n)
 
   var spec: ModelSpec = ModelSpec()
@@ -164,7 +167,7 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
       if (lens.size == 1) { free(lens.head); return }
       // each length's fitted trajectory and repaired data are kept: the best is restored and solved once, not fitted again
       final case class Fitted(len: Int, bic: Double, traj: PhaseTrack, repS: Array[Double], repC: Array[Double], cens: Repaired, gain: Double)
-      def kept(l: Int) = Fitted(l, bic, _traj, _repS, _repC, _cens, lastGain)
+      def kept(l: Int) = { shared = true; Fitted(l, bic, _traj, _repS, _repC, _cens, lastGain) }
       def restore(f: Fitted): Unit = {
         _traj = f.traj; evalTraj(); _repS = f.repS; _repC = f.repC; _cens = f.cens
         refit(1, refineTraj = false); _lastGain = f.gain
@@ -493,11 +496,11 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
     * The closest preimage pulls the data toward the prediction where the preimages are a few sd apart: a 0.6 LSB
     * pickup fitted with bit 2 stuck came out 1 % (6 sd) low at 5 M samples.
     */
-  def repair(sp: ModelSpec, censor: Boolean = true, soft: Boolean = false): Repaired = {
+  def repair(sp: ModelSpec, censor: Boolean = true, soft: Boolean = false, inPlace: Boolean = false): Repaired = {
     val adc = rec.adc
     val nz = _noise; val useSoft = soft && nz.m2ll != 0 && sp.faults == spec.faults
     // the prediction (the repaired data less the residual) read where it is needed, not made as an array
-    def one(ch: Int, y: Array[Double], codes: Array[Int], rp: Array[Double], rr: Array[Double]): (Array[Double], Array[Double], Array[Float], Double, Double, Double) = {
+    def one(ch: Int, y: Array[Double], codes: Array[Int], rp: Array[Double], rr: Array[Double], pv0: Array[Float]): (Array[Double], Array[Double], Array[Float], Double, Double, Double) = {
       val fl = sp.faults.filter(_.ch == ch); val cl = sp.clips.filter(_.ch == ch)
       // the noise variance at sample i (the soft repair's weights)
       val white = if (ch == 0) nz.varS else nz.varC; val j2 = nz.jitter2
@@ -528,16 +531,17 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
       if (pre == null && ex == null && !censor) return (y, null, null, 0.0, 0.0, 0.0)
       if (pre == null && ex == null && Par.sum(n) { (a, b) => var k = 0.0; var i = a; while (i < b) { if (censored(y(i))) k += 1; i += 1 }; k } == 0)
         return (y, null, null, 0.0, 0.0, 0.0)
-      val out = new Array[Double](n)
+      // `inPlace`: over the fit's own arrays (each sample's prediction is read before its value is written), never the data
+      val out = if (inPlace && (rp ne y) && rp.length == n) rp else new Array[Double](n)
       // soft: each sample's weights' variance (full scale squared; 0 where one preimage), in single precision (a long
-      // record's array; the sums are of the values kept)
-      val pv = if (useSoft && pre != null) new Array[Float](n) else null
+      // record's array; the sums are of the values kept); every sample's written
+      val pv = if (!(useSoft && pre != null)) null else if (inPlace && pv0 != null && pv0.length == n) pv0 else new Array[Float](n)
       // the soft value at sample i (the hard one's code when the weights are all on it): m(2) += variance, m(3) += entropy
       @inline def softValue(i: Int, p: Double, m: Array[Double]): Double = {
         val c0 = codes(i)
         val table = c0 >= 0 && c0 < pre.length
         val cands = if (table) pre(c0) else preimagesOf(fl, c0)
-        if (cands.length < 2) return y(i)
+        if (cands.length < 2) { pv(i) = 0; return y(i) }
         val nv = noiseVar(i); val h = -0.5 / nv
         if (cands.length == 2) {
           // a stuck bit's two preimages: the far one's weight relative to the near one's, w = exp(a)
@@ -545,7 +549,7 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
           val d0 = v0 - p; val d1 = v1 - p; val near0 = d0 * d0 <= d1 * d1
           val vn = if (near0) v0 else v1; val u = if (near0) v1 - v0 else v0 - v1
           val a = h * (if (near0) d1 * d1 - d0 * d0 else d0 * d0 - d1 * d1)
-          if (!(a > -60)) return vn // (and a NaN prediction: the closest preimage, as the hard repair)
+          if (!(a > -60)) { pv(i) = 0; return vn } // (and a NaN prediction: the closest preimage, as the hard repair)
           val w = math.exp(a); val z = 1 + w; val t = w / z; val vr = (t * (1 - t) * u * u).toFloat
           pv(i) = vr; m(2) += vr; m(3) += math.log(z) - a * t; m(4) += vr / nv
           return vn + t * u
@@ -580,7 +584,7 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
         var i = a
         while (i < b) {
           val p = rp(i) - rr(i)
-          if (ex != null && ex(i)) { out(i) = p; m(0) += 1 }
+          if (ex != null && ex(i)) { out(i) = p; m(0) += 1; if (pv != null) pv(i) = 0 }
           else {
             val v = if (pv != null) softValue(i, p, m) else value(i, p)
             if (censored(v)) {
@@ -596,7 +600,7 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
       if (pv == null && counts(0) == 0 && counts(1) == 0) (y, null, null, 0.0, 0.0, 0.0)
       else (out, if (counts(1) == 0) null else lock.synchronized(cen), pv, counts(2), counts(3), counts(4))
     }
-    val (a, ca, pa, sa, ea, la) = one(0, ys, rec.sin, _repS, resS); val (b, cb, pb, sb, eb, lb) = one(1, yc, rec.cos, _repC, resC)
+    val (a, ca, pa, sa, ea, la) = one(0, ys, rec.sin, _repS, resS, _cens.pvS); val (b, cb, pb, sb, eb, lb) = one(1, yc, rec.cos, _repC, resC, _cens.pvC)
     Repaired(a, b, ca, cb, pa, pb, sa, sb, ea + eb, la, lb)
   }
 
@@ -626,7 +630,7 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
         })
         Laps("traj: evalTraj")(evalTraj())
       }
-      if (it > 0) Laps("refit: repair") { val r = repair(spec, soft = true); _repS = r.s; _repC = r.c; _cens = r }
+      if (it > 0) Laps("refit: repair") { val r = repair(spec, soft = true, inPlace = !shared); _repS = r.s; _repC = r.c; _cens = r; shared = false }
       Laps("refit: fundamentals")(setFundamentals())
       val cols = groups()
       _sol = Laps("refit: solve")(cols.solve(repS, repC))
@@ -668,9 +672,10 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
     val (rS, rC, cn) = if (held) { val a = _repS.clone(); val b = _repC.clone(); (a, b, _cens.copy(s = a, c = b)) } else (_repS, _repC, _cens)
     val (b, so, ti, no, gs, gc, lg) = (_base, _sol, _termIndex, _noise, slopeS, slopeC, _lastGain)
     val resS0 = resS.clone(); val resC0 = resC.clone()
+    shared = true
     Some { () =>
       spec = sp; _traj = tr; trBack(); evalTraj() // the phase, frequency and fundamentals from the trajectory
-      _repS = rS; _repC = rC; _cens = cn
+      _repS = rS; _repC = rC; _cens = cn; shared = true
       _base = b; _sol = so; _termIndex = ti; _noise = no; slopeS = gs; slopeC = gc; _lastGain = lg
       System.arraycopy(resS0, 0, resS, 0, n); System.arraycopy(resC0, 0, resC, 0, n)
       _version += 1
