@@ -144,8 +144,8 @@ object SignalExplain {
             val prev = e.spec
             // the fit before the trial, to go back to when it is not kept (the reference path fits the old spec again)
             val back = if (FitPath.isReference) None else e.save()
-            e.spec = c.spec; e.converge(tune = lineTune(e)); settle(e)
-            val c1 = retune(e, demote(e, c))
+            e.spec = c.spec; e.converge(tune = lineTune(e, prev)); settle(e)
+            val c1 = retune(e, prev, demote(e, c))
             lap("refit")
             // materiality first: the change it makes to the signal, against the floor. What lowers the criterion but is
             // smaller is too small to matter, whatever its halves say (and their refits are not needed)
@@ -319,9 +319,10 @@ object SignalExplain {
     * with the line: a solve alone left it 11 sd low at 20 M samples), until a step is below a quarter of the
     * frequency's uncertainty (at most 3). The trajectory takes up some 30 % of each step: the second is divided by one less the
     * ratio of the two. The bench's 50 kHz line at 20 M samples came out 44 sd low without them (its search runs
-    * on a subsample of 50,000 samples).
+    * on a subsample of 50,000 samples). Only the candidate's own line (one that `prev`, the spec before it, does not
+    * hold): an effect found after a line leaves it, and its finding has no frequency.
     */
-  private def retune(e: SignalEngine, c: Cand): Cand = e.spec.terms.lastOption match {
+  private def retune(e: SignalEngine, prev: ModelSpec, c: Cand): Cand = if (!newLine(e, prev)) c else e.spec.terms.lastOption match {
     case Some(Term.Interference(_)) =>
       var k = 0; var moved = true; var last = 0.0
       while (k < 3 && moved) {
@@ -338,9 +339,13 @@ object SignalExplain {
   /** A new line's frequency moved along with the round's refits (`SignalEngine.converge`'s `tune`): most of the way
     * to the whole record's optimum is made there, before `retune` checks it; null for other effects.
     */
-  private def lineTune(e: SignalEngine): () => Double = e.spec.terms.lastOption match {
-    case Some(Term.Interference(_)) => () => lineStep(e, "tune", identity)
-    case _ => null
+  private def lineTune(e: SignalEngine, prev: ModelSpec): () => Double =
+    if (newLine(e, prev)) () => lineStep(e, "tune", identity) else null
+
+  /** The spec's last term is a line that `prev` does not hold: the candidate tried adds it. */
+  private def newLine(e: SignalEngine, prev: ModelSpec): Boolean = e.spec.terms.lastOption.exists {
+    case t: Term.Interference => !prev.terms.contains(t)
+    case _ => false
   }
 
   /** The Gauss-Newton step of the last term's frequency (a line's) from the fit as it stands, as `take` scales it: the
