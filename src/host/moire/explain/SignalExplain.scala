@@ -313,27 +313,22 @@ object SignalExplain {
     case _ => c
   }
 
-  /** A line accepted at the frequency its search found, on the residual before the line was in the fit (which the
-    * trajectory had partly followed where the fringe passed the line's frequency), moved to where the joint fit puts
-    * it: Gauss-Newton steps of the frequency from the fit's residual, each followed by a refit (the trajectory moves
-    * with the line: a solve alone left it 11 sd low at 20 M samples), until a step is below a quarter of the
-    * frequency's uncertainty (at most 3). The trajectory takes up some 30 % of each step: the second is divided by one less the
-    * ratio of the two. The bench's 50 kHz line at 20 M samples came out 44 sd low without them (its search runs
-    * on a subsample of 50,000 samples). Only the candidate's own line (one that `prev`, the spec before it, does not
-    * hold): an effect found after a line leaves it, and its finding has no frequency.
+  /** A new line's frequency checked after its round: `lineTune` moved it along with the refits; while a Gauss-Newton
+    * step from the fit's residual is still above a quarter of the frequency's uncertainty (at most 3), the step is
+    * taken and the fit converges again. The trajectory takes up some 30 % of each step: the second is divided by one
+    * less the ratio of the two. Its search runs on a subsample of 50,000 samples: the bench's 50 kHz line at 20 M
+    * samples came out 44 sd low without these steps. Only the candidate's own line (one that `prev`, the spec before
+    * it, does not hold): an effect found after a line leaves it, and its finding has no frequency.
     */
-  private def retune(e: SignalEngine, prev: ModelSpec, c: Cand): Cand = if (!newLine(e, prev)) c else e.spec.terms.lastOption match {
-    case Some(Term.Interference(_)) =>
-      var k = 0; var moved = true; var last = 0.0
-      while (k < 3 && moved) {
-        // the steps shrink geometrically (the trajectory takes up a part of each): the second goes the rest of the way
-        moved = lineStep(e, "retune", { s => val r = s / last; last = s; if (r > 0 && r < 0.7) s / (1 - r) else s }) > 0
-        if (moved) e.converge(moved = true)
-        k += 1
-      }
-      val hz = e.spec.terms.last.asInstanceOf[Term.Interference].hz
-      c.copy(spec = e.spec, params = c.params + ("frequency_hz" -> hz))
-    case _ => c
+  private def retune(e: SignalEngine, prev: ModelSpec, c: Cand): Cand = if (!newLine(e, prev)) c else {
+    var k = 0; var moved = true; var last = 0.0
+    while (k < 3 && moved) {
+      // the steps shrink geometrically (the trajectory takes up a part of each): the second goes the rest of the way
+      moved = lineStep(e, "retune", { s => val r = s / last; last = s; if (r > 0 && r < 0.7) s / (1 - r) else s }) > 0
+      if (moved) e.converge(moved = true)
+      k += 1
+    }
+    effects.Interference.at(c.copy(spec = e.spec), e.spec.terms.last.asInstanceOf[Term.Interference].hz)
   }
 
   /** A new line's frequency moved along with the round's refits (`SignalEngine.converge`'s `tune`): most of the way

@@ -84,6 +84,9 @@ object Interference extends Effect {
     if (m(1) > 0) (m(0) / m(1), 1 / math.sqrt(m(1))) else (0.0, Double.PositiveInfinity)
   }
 
+  /** The candidate with its line's frequency where the fit moved it (`SignalExplain.retune`). */
+  def at(c: Cand, hz: Double): Cand = c.copy(params = c.params + ("frequency_hz" -> hz))
+
   def summary(p: Map[String, Double], channel: String, fMin: Double, fMax: Double): String =
     f"pickup at ${hz(Effect.g(p, "frequency_hz"))}, ${Effect.g(p, "amplitude_fs")}%.3g full scale amplitude"
 
