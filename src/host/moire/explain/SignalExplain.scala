@@ -145,7 +145,7 @@ object SignalExplain {
             // the fit before the trial, to go back to when it is not kept (the reference path fits the old spec again)
             val back = if (FitPath.isReference) None else e.save()
             e.spec = c.spec; e.converge(tune = lineTune(e, prev)); settle(e)
-            val c1 = retune(e, prev, demote(e, c))
+            val c1 = retune(e, prev, demote(e, prev, c))
             lap("refit")
             // materiality first: the change it makes to the signal, against the floor. What lowers the criterion but is
             // smaller is too small to matter, whatever its halves say (and their refits are not needed)
@@ -296,10 +296,12 @@ object SignalExplain {
   }
 
   /** A harmonic accepted on both channels whose part on one channel is not significant after the refit
-    * (the phase trajectory had leaked it there) becomes a one-channel harmonic.
+    * (the phase trajectory had leaked it there) becomes a one-channel harmonic. Only the candidate's own harmonic (one
+    * that `prev`, the spec before it, does not hold): an effect found after a harmonic leaves it as it was accepted,
+    * and its finding keeps its own channel and where.
     */
-  private def demote(e: SignalEngine, c: Cand): Cand = e.spec.terms.lastOption match {
-    case Some(t @ Term.Harm(k, "both")) if e.termIndex.contains(t) =>
+  private[explain] def demote(e: SignalEngine, prev: ModelSpec, c: Cand): Cand = e.spec.terms.lastOption match {
+    case Some(t @ Term.Harm(k, "both")) if e.termIndex.contains(t) && !prev.terms.contains(t) =>
       val at = e.termIndex(t); val v = e.meanSquare
       def chi2(j: Int) = (j until j + 2).map(i => e.sol.beta(i) * e.sol.beta(i) / math.max(1e-300, e.sol.inv(i)(i) * v)).sum
       val need = 2 * e.lnN + Threshold
