@@ -305,6 +305,12 @@ class BadInputSpec extends AnyFlatSpec with Matchers {
   os.write.over(hInput, "# moire-recording v1\n")
   bad("an explain --html-dir report that would replace an input", "is an input of this command", Seq(hInput))(
     "explain", good.toString, hInput.toString, "--quiet", "--no-rtl", "--html-dir", hdir.toString)
+  private val pdir = dir / "p"
+  os.makeDir.all(pdir)
+  private val pInput = pdir / "good_residual_time.png" // a recording, oddly named, where a plot of good.csv would go
+  os.write.over(pInput, head + "sin,cos\n" + rows(2000))
+  bad("an explain --plots folder where a plot would replace an input", "--plots writes good_*.png", Seq(pInput))(
+    "explain", good.toString, pInput.toString, "--quiet", "--no-rtl", "--plots", pdir.toString)
   bad("a simulate --out that ends with a slash (a folder)", "ends with /, so it names a folder", Seq(dir / "newdir"))(
     "simulate", "--out", (dir / "newdir").toString + "/", "--samples", "100")
   bad("a recording named twice", "given 2 times; name each recording once")("explain", good.toString, good.toString, "--quiet", "--no-rtl")

@@ -125,6 +125,25 @@ class ReferenceSpec extends AnyFlatSpec with Matchers {
     r.findings shouldBe empty
   }
 
+  "a reference with a corrupted row" should "not be used, the report naming the row, and explain as without it (finite figures)" in {
+    val lines = ThirdGenerator.linear(ThirdGenerator.Linear()).split("\n")
+    val first = lines.indexWhere(_.startsWith("sin,cos")) + 1
+    val without = run(lines.map(l => if (l.startsWith("# period_um")) "" else if (l.count(_ == ',') == 2) l.split(",").init.mkString(",") else l)
+      .filter(_.nonEmpty).mkString("\n"))
+    for (big <- Seq("1e100", "1e160")) {
+      // one row's ref_um from a broken link (a number, but no position the stage was at)
+      val text = lines.zipWithIndex.map { case (l, i) => if (i == first + 500) l.split(",").init.mkString(",") + "," + big else l }.mkString("\n")
+      val r = run(text)
+      withClue(s"ref_um $big: ${describe(r)} | ${r.notes.mkString("; ")}") {
+        r.notes.exists(n => n.startsWith("reference ref_um") && n.contains("between samples 499 and 500") && n.contains("not used")) shouldBe true
+        r.findings.map(_.effect) shouldBe without.findings.map(_.effect)
+        r.unexplained.map(_.where) shouldBe without.unexplained.map(_.where)
+        Seq(r.baselineRms, r.baselineBic, r.finalRms, r.finalBic).forall(x => !x.isNaN && !x.isInfinite) shouldBe true
+        r.finalBic shouldBe without.finalBic
+      }
+    }
+  }
+
   "Reference.of" should "unwrap angles, scale counts and refuse bad scale metadata with one line" in {
     def rec(meta: Map[String, String], col: String, v: Array[Double]) = Recording(1000, moire.signal.Adc(12), Array.fill(v.length)(2048),
       Array.fill(v.length)(2048), meta, Map(col -> v))

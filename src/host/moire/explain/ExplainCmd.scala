@@ -69,6 +69,10 @@ object ExplainCmd {
     for (d <- jsonDir; p <- paths) moire.files.SafeWrite.refuseInputs(os.Path(d, os.pwd) / s"${p.last.stripSuffix(".csv")}.json", inputs)
     html.foreach(f => moire.files.SafeWrite.refuseInputs(os.Path(f, os.pwd), inputs))
     for (d <- htmlDir; p <- paths) moire.files.SafeWrite.refuseInputs(os.Path(d, os.pwd) / s"${p.last.stripSuffix(".csv")}.html", inputs)
+    // the plots' names depend on the findings (<stem>_<what>.png): no input may have such a name in --plots
+    for (d <- plotDir; p <- paths; i <- inputs; stem = p.last.stripSuffix(".csv"))
+      if (i.last.startsWith(stem + "_") && i.last.endsWith(".png") && moire.files.SafeWrite.same(os.Path(d, os.pwd) / i.last, i))
+        throw new ExplainError(s"$i: is an input of this command, and --plots writes ${stem}_*.png into its folder; choose another --plots folder")
     if (outDirs.nonEmpty) paths.groupBy(_.last.stripSuffix(".csv")).collectFirst { case (stem, ps) if ps.distinct.size > 1 =>
       throw new ExplainError(s"${ps.distinct.mkString(" and ")} share the name $stem: their reports would overwrite each other; rename one")
     }

@@ -107,6 +107,22 @@ object RefTrajectory {
   /** A reference whose steps are coarser than this (fringe periods) knows the phase less well than the signals do. */
   val MaxStepPeriods: Double = 1.0 / 64
 
+  /** The most a reference may move between two samples (fringe periods): more, and the signals would alias. */
+  val MaxJumpPeriods = 0.5
+
+  /** Why a reference with a scale from the metadata cannot be used: a step between two samples larger than the
+    * signals allow (`MaxJumpPeriods`) and than a few of its own steps (a coarse count), which is a corrupted row,
+    * not a motion. None: no such step, or no scale to judge it by.
+    */
+  def jump(r: Reference): Option[String] = r.periodsPerUnit.flatMap { ppu =>
+    val v = r.values; var at = -1; var big = 0.0; var i = 1
+    while (i < v.length) { val d = math.abs(v(i) - v(i - 1)); if (!(d <= big)) { big = d; at = i }; i += 1 }
+    val periods = big * ppu
+    if (at < 0 || periods <= math.max(MaxJumpPeriods, 4 * step(v) * ppu)) None
+    else Some(f"${r.column} moves by ${periods}%.3g fringe periods between samples ${at - 1} and $at (counted from 0; the " +
+      f"signals alias above $MaxJumpPeriods a sample): a corrupted row, so it is not used and the motion is fitted from the signals")
+  }
+
   /** The reference's resolution: its smallest non-zero step between samples (0 when it never moves). When it changes
     * at nearly every sample (a fine reference on a fast stage), that step is its motion, not its resolution: then the
     * resolution of a uniform quantizer is taken from its scatter about a local quadratic (rms * sqrt 12), if smaller.

@@ -187,7 +187,8 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
       val best = done.minBy(_.bic)
       if (best ne now) restore(best)
     }
-    refColumn.foreach { r =>
+    // a reference with a corrupted row is not used (its reason said in the report)
+    refColumn.filter { r => _referenceRefused = RefTrajectory.jump(r); _referenceRefused.isEmpty }.foreach { r =>
       // the smoothing of the reference: the window with the lowest BIC (a noisy reference wants a wide one)
       def fit(h: Int): RefTrajectory = { val rt = new RefTrajectory(r, fs, r.periodsPerUnit, h); rt.start(raw); start(rt, new Array[Double](n)); rt }
       val hs = RefTrajectory.HalfWidths.filter(h => h == RefTrajectory.HalfWidths.head || 8 * h <= n)
@@ -196,7 +197,9 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
       val rt = if (hs.size > 1 && best == hs.last && !FitPath.isReference) last else fit(best) // the last one tried is the engine's state already
       val rms = phaseRms
       val stepPeriods = math.abs(rt.k) * RefTrajectory.step(r.values)
-      if (rms > RefTrajectory.MaxPhaseRms)
+      if (bic.isNaN || bic.isInfinite)
+        _referenceRefused = Some(f"its values (from ${r.values.min}%.4g to ${r.values.max}%.4g ${r.unit}) take the fit out of range: not used, the motion is fitted from the signals")
+      else if (!(rms <= RefTrajectory.MaxPhaseRms))
         _referenceRefused = Some(f"the signals follow ${r.column} only within ${rms * 360}%.1f degree of fringe phase rms " +
           f"(at most ${RefTrajectory.MaxPhaseRms * 360}%.0f): not used, the motion is fitted from the signals")
       else if (stepPeriods > RefTrajectory.MaxStepPeriods) {

@@ -132,8 +132,11 @@ object SafeWrite {
 
   /** Refuses an output that is one of the inputs (also through links or another spelling of the path). */
   def refuseInputs(output: os.Path, inputs: Seq[os.Path]): Unit =
-    inputs.find(i => i == output || (os.exists(i) && os.exists(output) && Files.isSameFile(i.toNIO, output.toNIO)))
+    inputs.find(same(_, output))
       .foreach(i => throw new FileError(s"$output: is an input of this command${if (i != output) s" ($i)" else ""}; choose another output name"))
+
+  /** The two paths name one file (also through links or another spelling of the path). */
+  def same(a: os.Path, b: os.Path): Boolean = a == b || (os.exists(a) && os.exists(b) && Files.isSameFile(a.toNIO, b.toNIO))
 
   /** [[refuseInputs]] for path strings as the user gave them (relative to the working folder). */
   def refuseInputs(output: String, inputs: Seq[String]): Unit = refuseInputs(os.Path(output, os.pwd), inputs.map(os.Path(_, os.pwd)))
