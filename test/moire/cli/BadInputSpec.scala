@@ -130,6 +130,14 @@ class BadInputSpec extends AnyFlatSpec with Matchers {
   bad("an unknown ADC format", "--adc", Seq(existing))(sim("--adc", "gray"): _*)
   bad("an output through a file", "is a file, not a folder", Seq(good))("simulate", "--out", (good / "x.csv").toString, "--samples", "100")
 
+  // a --model file's numbers as the options' (the values simulate would write, and explain then refuse)
+  private def simModel(name: String, json: String): Seq[String] = sim("--model", rec(name, json))
+  bad("a --model sample_rate_hz 1e300", "sample_rate_hz must be from 1e-6 to 1e11 Hz", Seq(existing))(simModel("fs.json", """{"sample_rate_hz": 1e300}"""): _*)
+  bad("a --model lines_per_rev 0", "lines_per_rev must be above 0", Seq(existing))(simModel("lpr.json", """{"lines_per_rev": 0}"""): _*)
+  bad("a --model samples 100.5", "samples must be a whole number", Seq(existing))(simModel("n.json", """{"samples": 100.5}"""): _*)
+  bad("a --model noise_rms -1", "noise_rms must be 0 or more", Seq(existing))(simModel("nz.json", """{"noise_rms": -1}"""): _*)
+  bad("a --model with a misspelled key", "unknown key 'amplitud'", Seq(existing))(simModel("typo.json", """{"amplitud": 0.1}"""): _*)
+
   bad("--motion constant:NaN", "--motion 'constant:NaN'", Seq(existing))(sim("--motion", "constant:NaN"): _*)
   bad("--lines-per-rev -3", "--lines-per-rev must be above 0", Seq(existing))(sim("--lines-per-rev", "-3"): _*)
   bad("an effect parameter NaN", "order 'NaN' is not a finite number", Seq(existing))(sim("--effect", "harmonic:order=NaN"): _*)

@@ -13,19 +13,14 @@ object ExplainCmd {
                               effects: Seq[String], model: Option[String])
 
   def model(o: SimOptions): PhysicsModel = {
-    for ((name, v) <- Seq("--sample-rate-hz" -> o.sampleRateHz, "--amplitude" -> o.amplitude, "--offset-sin" -> o.offsetSin,
-      "--offset-cos" -> o.offsetCos, "--gain-sin" -> o.gainSin, "--gain-cos" -> o.gainCos, "--phase-error-deg" -> o.phaseErrorDeg,
-      "--noise" -> o.noise) ++ o.linesPerRev.map("--lines-per-rev" -> _))
-      if (v.isNaN || v.isInfinite) throw new ExplainError(s"$name must be a finite number, got $v")
-    if (!(o.sampleRateHz >= Recording.MinSampleRateHz && o.sampleRateHz <= Recording.MaxSampleRateHz))
-      throw new ExplainError(s"--sample-rate-hz must be from 1e-6 to 1e11 Hz, got ${o.sampleRateHz}")
-    if (o.noise < 0) throw new ExplainError(s"--noise must be 0 or more (full-scale rms), got ${o.noise}")
-    if (o.samples < 1) throw new ExplainError(s"--samples must be at least 1, got ${o.samples}")
-    if (!(o.amplitude > 0)) throw new ExplainError(s"--amplitude must be above 0, got ${o.amplitude}")
-    o.linesPerRev.foreach(l => if (!(l > 0)) throw new ExplainError(s"--lines-per-rev must be above 0, got $l"))
     val fmt = AdcFormat.parse(o.adc).fold(e => throw new ExplainError(s"--adc: $e"), identity)
-    val d = try PhysicsModel(SignalParams(o.amplitude, o.offsetSin, o.offsetCos, o.gainSin, o.gainCos, o.phaseErrorDeg, Nil, o.noise, o.seed),
-      PhysicsModel.parseMotion(o.motion), o.sampleRateHz, o.samples, Adc(o.adcBits, fmt), o.linesPerRev, o.effects.map(EffectSpec.parse))
+    PhysicsModel.check(Map("sample_rate_hz" -> o.sampleRateHz, "samples" -> o.samples.toDouble, "amplitude" -> o.amplitude,
+      "offset_sin" -> o.offsetSin, "offset_cos" -> o.offsetCos, "gain_sin" -> o.gainSin, "gain_cos" -> o.gainCos,
+      "phase_error_deg" -> o.phaseErrorDeg, "noise_rms" -> o.noise) ++ o.linesPerRev.map("lines_per_rev" -> _), PhysicsModel.NumberKeys.toMap)
+      .foreach(w => throw new ExplainError(w))
+    val base = SignalParams(o.amplitude, o.offsetSin, o.offsetCos, o.gainSin, o.gainCos, o.phaseErrorDeg, Nil, o.noise, o.seed)
+    val d = try PhysicsModel(base, PhysicsModel.parseMotion(o.motion), o.sampleRateHz, o.samples, Adc(o.adcBits, fmt), o.linesPerRev,
+      o.effects.map(EffectSpec.parse))
     catch { case e: IllegalArgumentException => throw new ExplainError(e.getMessage.stripPrefix("requirement failed: ")) }
     o.model.map(f => PhysicsModel.fromJson(readText(f), f, d)).getOrElse(d)
   }

@@ -174,7 +174,31 @@ object PhysicsModel {
     m
   }
 
-  /** Reads a model JSON (the format `json` writes); missing keys take the defaults of `d`. */
+  /** The model's numbers as a model file's keys, with `simulate`'s options that set them. */
+  val NumberKeys: Seq[(String, String)] = Seq("sample_rate_hz" -> "--sample-rate-hz", "samples" -> "--samples",
+    "adc_bits" -> "--adc-bits", "amplitude" -> "--amplitude", "offset_sin" -> "--offset-sin", "offset_cos" -> "--offset-cos",
+    "gain_sin" -> "--gain-sin", "gain_cos" -> "--gain-cos", "phase_error_deg" -> "--phase-error-deg", "noise_rms" -> "--noise",
+    "seed" -> "--seed", "lines_per_rev" -> "--lines-per-rev")
+  /** The keys of a model file (those `json` writes). */
+  val Keys: Seq[String] = NumberKeys.map(_._1) ++ Seq("adc", "motion", "effects")
+
+  /** Why the model's numbers make no sense, the number named by `name` (a key: a model file's, or an option), or
+    * None. The same rules for a model file as for the command line.
+    */
+  def check(v: Map[String, Double], name: String => String): Option[String] = {
+    def at(k: String) = v.getOrElse(k, Double.NaN)
+    NumberKeys.map(_._1).filter(v.contains).collectFirst { case k if at(k).isNaN || at(k).isInfinite => s"${name(k)} must be a finite number, got ${at(k)}" }
+      .orElse(Option.when(!(at("sample_rate_hz") >= Recording.MinSampleRateHz && at("sample_rate_hz") <= Recording.MaxSampleRateHz))(
+        s"${name("sample_rate_hz")} must be from 1e-6 to 1e11 Hz, got ${at("sample_rate_hz")}"))
+      .orElse(Option.when(at("noise_rms") < 0)(s"${name("noise_rms")} must be 0 or more (full-scale rms), got ${at("noise_rms")}"))
+      .orElse(Option.when(at("samples") < 1)(s"${name("samples")} must be at least 1, got ${at("samples").toLong}"))
+      .orElse(Option.when(!(at("amplitude") > 0))(s"${name("amplitude")} must be above 0, got ${at("amplitude")}"))
+      .orElse(v.get("lines_per_rev").filter(l => !(l > 0)).map(l => s"${name("lines_per_rev")} must be above 0, got $l"))
+  }
+
+  /** Reads a model JSON (the format `json` writes); missing keys take the defaults of `d`. A key it does not know, a
+    * number out of its range or a count that is not whole is one line naming the key.
+    */
   /** The object of a model file, or one line saying why the text is not one. */
   def jsonObject(text: String, where: String): collection.Map[String, ujson.Value] = {
     val v = try ujson.read(text) catch { case e: Exception => throw new ExplainError(s"$where: not valid JSON (${e.getMessage.linesIterator.next()})") }
@@ -188,16 +212,27 @@ object PhysicsModel {
 
   def fromJson(text: String, where: String, d: PhysicsModel): PhysicsModel = {
     val o = jsonObject(text, where)
+    o.keys.find(k => !Keys.contains(k)).foreach(k => throw new ExplainError(s"$where: unknown key '$k' (a model file has ${Keys.mkString(", ")})"))
     def n(k: String, dv: Double) = o.get(k).map(x => x.numOpt.getOrElse(throw new ExplainError(s"$where: $k must be a number"))).getOrElse(dv)
     val b = d.base
-    val base = b.copy(amplitude = n("amplitude", b.amplitude), offsetSin = n("offset_sin", b.offsetSin), offsetCos = n("offset_cos", b.offsetCos),
-      gainSin = n("gain_sin", b.gainSin), gainCos = n("gain_cos", b.gainCos), phaseErrorDeg = n("phase_error_deg", b.phaseErrorDeg),
-      noiseRms = n("noise_rms", b.noiseRms), seed = n("seed", b.seed.toDouble).toLong)
+    val lpr = o.get("lines_per_rev") match {
+      case None => d.linesPerRev
+      case Some(ujson.Null) => None
+      case Some(x) => Some(x.numOpt.getOrElse(throw new ExplainError(s"$where: lines_per_rev must be a number or null")))
+    }
+    val v = Map("sample_rate_hz" -> d.sampleRateHz, "samples" -> d.samples.toDouble, "adc_bits" -> d.adc.bits.toDouble,
+      "amplitude" -> b.amplitude, "offset_sin" -> b.offsetSin, "offset_cos" -> b.offsetCos, "gain_sin" -> b.gainSin,
+      "gain_cos" -> b.gainCos, "phase_error_deg" -> b.phaseErrorDeg, "noise_rms" -> b.noiseRms, "seed" -> b.seed.toDouble)
+      .map { case (k, x) => k -> n(k, x) } ++ lpr.map("lines_per_rev" -> _)
+    for ((k, max) <- Seq("samples" -> Int.MaxValue.toDouble, "adc_bits" -> 64.0, "seed" -> 9.007199254740992e15))
+      if (!(v(k).isWhole && math.abs(v(k)) <= max)) throw new ExplainError(s"$where: $k must be a whole number (up to ${max.toLong}), got ${v(k)}")
+    check(v, identity).foreach(w => throw new ExplainError(s"$where: $w"))
+    val base = b.copy(amplitude = v("amplitude"), offsetSin = v("offset_sin"), offsetCos = v("offset_cos"), gainSin = v("gain_sin"),
+      gainCos = v("gain_cos"), phaseErrorDeg = v("phase_error_deg"), noiseRms = v("noise_rms"), seed = v("seed").toLong)
     val fmt = o.get("adc").flatMap(_.strOpt).map(s => AdcFormat.parse(s).fold(e => throw new ExplainError(s"$where: $e"), identity)).getOrElse(d.adc.format)
     val effects = effectsFromJson(o, where, d.effects)
-    try PhysicsModel(base, o.get("motion").map(motionFromJson(_, where)).getOrElse(d.motion), n("sample_rate_hz", d.sampleRateHz),
-      n("samples", d.samples).toInt, Adc(n("adc_bits", d.adc.bits).toInt, fmt),
-      o.get("lines_per_rev").flatMap(_.numOpt).orElse(d.linesPerRev), effects)
+    try PhysicsModel(base, o.get("motion").map(motionFromJson(_, where)).getOrElse(d.motion), v("sample_rate_hz"), v("samples").toInt,
+      Adc(v("adc_bits").toInt, fmt), lpr, effects)
     catch { case e: IllegalArgumentException => throw new ExplainError(s"$where: ${e.getMessage.stripPrefix("requirement failed: ")}") }
   }
 }
