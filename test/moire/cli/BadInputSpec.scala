@@ -290,6 +290,16 @@ class BadInputSpec extends AnyFlatSpec with Matchers {
   bad("--help with an argument", "--help takes no arguments, got 'extra' (moire help COMMAND for a command's help)")("--help", "extra")
   bad("an output through a file", "is a file, not a folder", Seq(aFile))("replay", good.toString, "--out", (aFile / "x.csv").toString)
 
+  // no fringe to explain: both inputs floating a few LSB about mid-scale (the fit's phase would follow the noise)
+  private val rnd = new scala.util.Random(1)
+  bad("a recording of floating inputs", "no fringe: the fitted amplitude")("explain", rec("floating.csv", head + "sin,cos\n" +
+    (0 until 5000).map(_ => s"${2048 + rnd.nextInt(7) - 3},${2048 + rnd.nextInt(7) - 3}").mkString("\n") + "\n"), "--quiet", "--no-rtl")
+  // overdriven three times: 80 % of the samples at the end codes, the fringe seen only where it crosses zero; at 10
+  // samples a period it slews by most of the range there, which is no sign of the other ADC format
+  bad("a recording mostly at the end codes", "the sin channel is at the ADC's end codes on")("explain", rec("overdriven.csv", head + "sin,cos\n" +
+    (0 until 5000).map { i => val a = 2 * math.Pi * (i + 0.5) / 10.0; def c(x: Double) = math.max(0, math.min(4095, 2048 + (3 * 2047 * x).round))
+      s"${c(math.sin(a))},${c(math.cos(a))}" }.mkString("\n") + "\n"), "--quiet", "--no-rtl")
+
   behavior of "explain-bench"
   bad("--samples 0", "--samples must be in 10000..")("explain-bench", "--samples", "0")
   bad("--runs 0", "--runs must be in 1..10, got 0")("explain-bench", "--runs", "0")

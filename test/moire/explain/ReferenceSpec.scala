@@ -160,5 +160,10 @@ class ReferenceSpec extends AnyFlatSpec with Matchers {
     val pos = Reference.of(rec(Map("counts_per_period" -> "64"), "position", Array(1.0))).toOption.flatten.get
     pos.periodsPerUnit shouldBe Some(1.0 / 64)
     pos.source should include("computed from these signals")
+    // a 32-bit count on a long run wraps from 2^31 - 1 to -2^31: no motion steps by half of that
+    val wrapped = Reference.of(rec(Map("counts_per_period" -> "64"), "position", Array(2147483646.0, 2147483647.0, -2147483648.0, -2147483647.0))).toOption.flatten.get
+    wrapped.values.toSeq shouldBe Seq(2147483646.0, 2147483647.0, 2147483648.0, 2147483649.0)
+    val count = Reference.of(rec(Map.empty, "ref_counts", Array(-2147483647.0, -2147483648.0, 2147483647.0))).toOption.flatten.get
+    count.values.toSeq shouldBe Seq(-2147483647.0, -2147483648.0, -2147483649.0)
   }
 }

@@ -165,7 +165,16 @@ object ExplainCmd {
     for ((name, c) <- Seq("sin" -> rec.sin, "cos" -> rec.cos) if c.forall(_ == c(0)))
       throw new ExplainError(s"$p: $name channel constant at code ${c(0)} over all ${rec.length} samples: a dead or unconnected channel, nothing to fit")
     moire.recording.FormatCheck.mismatch(rec).foreach(why => throw new ExplainError(s"$p: $why"))
+    // a channel mostly at the end codes holds its fringe only near the zero crossings: too little to fit it by
+    for ((name, c) <- Seq("sin" -> rec.sin, "cos" -> rec.cos)) {
+      val h = rec.adc.half
+      val share = c.count { x => val v = rec.adc.fromPins(x); v == -h || v == h - 1 }.toDouble / c.length
+      if (share > MaxRailShare) throw new ExplainError(f"$p: the $name channel is at the ADC's end codes on ${100 * share}%.1f %% of " +
+        f"its samples (at most ${100 * MaxRailShare}%.0f %%): too little of the fringe is within the converter's range to fit; lower the gain before the ADC")
+    }
   }
+  /** A channel's share of samples at the end codes above which a recording is not explained. */
+  val MaxRailShare = 0.5
 
   /** Options may also follow the file names (mainargs puts everything after the first file into `rest`). */
   def explainArgs(rest: Seq[String], jsonDir: Option[String], plots: Option[String], model: Option[String], quiet: Boolean,

@@ -233,7 +233,8 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
       if (ww > 0) { val d = (resS(i) * gS(i) + resC(i) * gC(i)) / ww / (2 * math.Pi); s += d * d; k += 1 }
       i += 1
     }
-    if (k == 0) 0.0 else math.sqrt(s / k)
+    // a phase the slopes do not give at most samples (not finite: a reference far out of range) is no fit
+    if (k < n / 2) Double.NaN else math.sqrt(s / k)
   }
 
   private def mid(a: Array[Double]): (Double, Double) = {

@@ -80,6 +80,7 @@ object SignalExplain {
     val e = new SignalEngine(rec, Reference.of(rec).fold(m => throw new ExplainError(s"$file: $m"), identity), holdBytes)
     progress.phase("default fit", 4)
     e.init(); progress.step(4)
+    noFringe(e).foreach(why => throw new ExplainError(s"$file: $why"))
     val givenModel = specOf(model)
     if (givenModel != ModelSpec()) { e.spec = givenModel; e.converge(); settle(e) }
     val baseRms = e.rms; val baseBic = e.bic
@@ -394,6 +395,19 @@ object SignalExplain {
       e.spec = e.spec.copy(bw = e.spec.bw + (ch -> 1 / best))
     }
     gain
+  }
+
+  /** The fringe's amplitude must stand above the noise by this factor for the record to hold a fringe at all. */
+  val MinAmplitudeNoise = 2.0
+
+  /** Why the record holds no fringe to explain (inputs floating, random codes, a head off the scale), or None: the
+    * default fit's amplitude is within `MinAmplitudeNoise` of its noise, so the fit's phase follows the noise.
+    */
+  def noFringe(e: SignalEngine): Option[String] = {
+    val a = 0.5 * (e.ampS + e.ampC); val sd = math.sqrt(0.5 * (e.noise.varS + e.noise.varC))
+    if (a > MinAmplitudeNoise * sd) None
+    else Some(f"no fringe: the fitted amplitude ${a / e.lsb}%.3g LSB is not above ${MinAmplitudeNoise}%.0f x the noise " +
+      f"(${sd / e.lsb}%.3g LSB rms); are the inputs connected, and the read head over the scale and moving?")
   }
 
   /** Warnings about the recording itself. */

@@ -8,7 +8,8 @@ object FormatCheck {
     * complement or the reverse: the MSB inverted), a signal jumps by nearly the full range where it crosses zero, twice a
     * fringe period; read in its own it does not. Jumps of more than 3/4 of the range between neighbouring samples
     * are counted both ways: many in the file's format and few in the other is that mistake (a fit would take the
-    * jumps for harmonics of some 200 % of the fundamental). A stuck or glitching MSB jumps by half the range only.
+    * jumps for harmonics of some 200 % of the fundamental). A stuck or glitching MSB jumps by half the range only, and
+    * a clipped fringe (more than 1 % of a channel's samples held at a rail from the sample before) jumps where it slews.
     */
   def mismatch(rec: Recording): Option[String] = {
     val adc = rec.adc; val half = adc.half; val limit = 3 * half / 2
@@ -24,9 +25,16 @@ object FormatCheck {
       }
       (k, j)
     }
+    // an overdriven fast fringe slews by most of the range a sample too, between runs of samples held at a rail (a
+    // misread zero crossing may land on a rail code, but not for two samples running)
+    def clipped(codes: Array[Int]): Boolean = {
+      var k = 0; var i = 1
+      while (i < codes.length) { val x = adc.fromPins(codes(i)); if ((x == -half || x == half - 1) && codes(i) == codes(i - 1)) k += 1; i += 1 }
+      k > codes.length / 100
+    }
     val (s1, s2) = jumps(rec.sin); val (c1, c2) = jumps(rec.cos)
     val own = s1 + c1; val other = s2 + c2
-    if (own < 8 || other * 10 > own) None
+    if (own < 8 || other * 10 > own || clipped(rec.sin) || clipped(rec.cos)) None
     else {
       val is = adc.format.name
       val alt = AdcFormat.all.find(_ != adc.format).get.name

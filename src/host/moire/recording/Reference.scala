@@ -42,16 +42,21 @@ object Reference {
           val cpt = key("ref_counts_per_turn"); val cpp = key("ref_counts_per_period")
           val turns = cpt.map(1 / _).orElse(cpp.zip(perTurn).map { case (c, p) => 1 / (c * p) }.headOption)
           val periods = cpp.map(1 / _).orElse(cpt.zip(perTurn).map { case (c, p) => p / c }.headOption)
-          Reference(col, "count", cpt.map(c => unwrap(raw, c)).getOrElse(raw.clone()), periods, turns, "a reference encoder's count")
+          Reference(col, "count", unwrap(raw, cpt.getOrElse(Counter)), periods, turns, "a reference encoder's count")
         case "ref_um" =>
           Reference(col, "um", raw.clone(), key("period_um").map(1 / _), None, "a reference length")
         case _ =>
           val cpp = key("counts_per_period")
-          Reference(col, "count", raw.clone(), cpp.map(1 / _), cpp.zip(perTurn).map { case (c, p) => 1 / (c * p) }.headOption,
+          Reference(col, "count", unwrap(raw, Counter), cpp.map(1 / _), cpp.zip(perTurn).map { case (c, p) => 1 / (c * p) }.headOption,
             "the board's own position, computed from these signals: distortion within a fringe period shows in it too")
       }
     })
   }
+
+  /** A count's wrap: a 32-bit counter (the board's position, an encoder's count) goes from 2^31 - 1 to -2^31 on a
+    * long run; no motion steps by half of it between two samples.
+    */
+  val Counter: Double = 4294967296.0
 
   /** Undoes wrapping at `modulus` (an angle output that restarts every turn): a step of more than half of it is a wrap. */
   def unwrap(a: Array[Double], modulus: Double): Array[Double] = {
