@@ -303,6 +303,12 @@ class BadInputSpec extends AnyFlatSpec with Matchers {
   behavior of "explain-bench"
   bad("--samples 0", "--samples must be in 10000..")("explain-bench", "--samples", "0")
   bad("--runs 0", "--runs must be in 1..10, got 0")("explain-bench", "--runs", "0")
+  // the bench's recording is DIR/bench.csv: a file of that name that is no recording is the user's, not replaced
+  private val benchDir = dir / "bench"
+  os.makeDir.all(benchDir)
+  os.write.over(benchDir / "bench.csv", "my notes\n")
+  bad("a bench folder holding another bench.csv", "exists and is not a file this command writes", Seq(benchDir / "bench.csv"))(
+    "explain-bench", "--samples", "10000", "--out", benchDir.toString)
 
   behavior of "outputs (never over an input, a link, a pipe or a device)"
   private val model = dir / "m.json"

@@ -264,7 +264,10 @@ object ExplainCmd {
       val p = os.Path(f, os.pwd)
       moire.files.PathKind.notAFile(p).foreach(m => throw new ExplainError(m))
       p
-    }.getOrElse(benchRecording(samples, dir / "bench.csv"))
+    }.getOrElse {
+      moire.files.SafeWrite.checkPicked(dir / "bench.csv", Recording.Magic, "another --out folder")
+      benchRecording(samples, dir / "bench.csv")
+    }
     val mb = os.size(file) / 1048576.0
     val maxMb = Runtime.getRuntime.maxMemory / 1048576.0
     val (n, readS, readPeak) = readChecked(file)

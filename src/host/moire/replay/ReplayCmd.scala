@@ -93,7 +93,7 @@ object ReplayCmd {
     // The output is checked before the long work: never one of the inputs, always writable.
     val dest = os.Path(out.getOrElse(path.last.stripSuffix(".csv") + "-replay.csv"), os.pwd)
     moire.files.SafeWrite.refuseInputs(dest, Seq(path))
-    moire.files.SafeWrite.checkFile(dest)
+    if (out.isEmpty) moire.files.SafeWrite.checkPicked(dest, OutputCsv.Magic, "--out FILE") else moire.files.SafeWrite.checkFile(dest)
     var t = System.nanoTime()
     def lap(): Double = { val now = System.nanoTime(); val s = (now - t) / 1e9; t = now; s }
     val rec = Recording.read(path)

@@ -113,6 +113,20 @@ object SafeWrite {
     if (os.exists(target) && !Files.isWritable(target.toNIO)) throw new FileError(s"$target: the file is read-only")
   }
 
+  /** An output whose name the command picks (the user did not name it) replaces only a file of its own kind: one whose
+    * first line starts with `magic`; else one line that says how to name another output (`option`).
+    */
+  def checkPicked(target: os.Path, magic: String, option: String): Unit = {
+    checkFile(target)
+    if (os.isFile(target) && !firstLine(target).startsWith(magic))
+      throw new FileError(s"$target: exists and is not a file this command writes (its first line is not '$magic'); move it, or give $option")
+  }
+  private def firstLine(p: os.Path): String = {
+    val in = Files.newInputStream(p.toNIO)
+    try new String(in.readNBytes(256), java.nio.charset.StandardCharsets.ISO_8859_1).takeWhile(c => c != '\n' && c != '\r')
+    finally in.close()
+  }
+
   /** An output file's name as the user gave it: a name ending in a slash names a folder (a file of the folder's name
     * would be written), an empty one no file at all.
     */
