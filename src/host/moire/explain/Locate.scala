@@ -152,6 +152,18 @@ object Locate {
     (pins, hist)
   }
 
+  /** Each pin's share of samples at 1, from the samples per pin pattern: the patterns that occur only (a 24-bit ADC
+    * has 2^24 patterns and a short record a few thousand of them).
+    */
+  private def bitShares(pins: Array[Int], bits: Int, n: Int): IndexedSeq[Double] = {
+    val ones = new Array[Long](bits); var c = 0
+    while (c < pins.length) {
+      if (pins(c) > 0) { var b = 0; while (b < bits) { if (((c >> b) & 1) == 1) ones(b) += pins(c); b += 1 } }
+      c += 1
+    }
+    ones.map(_.toDouble / n).toIndexedSeq
+  }
+
   /** Constant bits and pile-ups at the extremes of each channel's codes. */
   private def codeHistogram(e: SignalEngine, want: String => Boolean, out: scala.collection.mutable.Builder[Located, Seq[Located]]): Unit = {
     val n = e.n
@@ -160,7 +172,7 @@ object Locate {
       val bits = e.rec.adc.bits
       val adc = e.rec.adc
       val (pins, hist) = counts(codes, n, adc)
-      val frac = (0 until bits).map(b => pins.indices.filter(c => ((c >> b) & 1) == 1).map(pins(_).toLong).sum.toDouble / n)
+      val frac = bitShares(pins, bits, n)
       val stuck = (e.coarseBits until bits - 2).filter(b => frac(b) == 0.0 || frac(b) == 1.0)
       val hi = hist.lastIndexWhere(_ > 0); val lo = hist.indexWhere(_ > 0)
       def pile(c: Int, nb: Int) = hist(c).toDouble / math.max(1, if (nb >= 0 && nb < hist.length) hist(nb) else 0)
