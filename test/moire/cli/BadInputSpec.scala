@@ -124,6 +124,7 @@ class BadInputSpec extends AnyFlatSpec with Matchers {
   bad("--sample-rate-hz Infinity", "--sample-rate-hz must be a finite number", Seq(existing))(sim("--sample-rate-hz", "Infinity"): _*)
   bad("--sample-rate-hz 0", "--sample-rate-hz must be from 1e-6", Seq(existing))(sim("--sample-rate-hz", "0"): _*)
   bad("--samples 0", "--samples must be at least 1", Seq(existing))(sim("--samples", "0"): _*)
+  bad("--samples in Arabic-Indic digits", "--samples", Seq(existing))(sim("--samples", "\u0661\u0662"): _*)
   bad("--amplitude 0", "--amplitude must be above 0", Seq(existing))(sim("--amplitude", "0"): _*)
   bad("--offset-cos NaN", "--offset-cos must be a finite number", Seq(existing))(sim("--offset-cos", "NaN"): _*)
   bad("an unknown effect", "'wobble' is not an effect", Seq(existing))(sim("--effect", "wobble:x=1"): _*)
@@ -299,6 +300,11 @@ class BadInputSpec extends AnyFlatSpec with Matchers {
   bad("a recording mostly at the end codes", "the sin channel is at the ADC's end codes on")("explain", rec("overdriven.csv", head + "sin,cos\n" +
     (0 until 5000).map { i => val a = 2 * math.Pi * (i + 0.5) / 10.0; def c(x: Double) = math.max(0, math.min(4095, 2048 + (3 * 2047 * x).round))
       s"${c(math.sin(a))},${c(math.cos(a))}" }.mkString("\n") + "\n"), "--quiet", "--no-rtl")
+
+  // plain decimal is the digits 0-9: Java would read other scripts' digits as numbers
+  bad("a code in full-width digits", "is not an integer ADC code")("explain", rec("wide.csv", head + "sin,cos\n" + rows(100) + "\uFF12\uFF10\uFF15\uFF10,3000\n" + rows(100)))
+  bad("adc_bits in Arabic-Indic digits", "metadata adc_bits")("explain", rec("arabic.csv", "# moire-recording v1\n# sample_rate_hz: 1000000\n# adc_bits: \u0661\u0662\nsin,cos\n" + rows(200)))
+  bad("metadata samples that is no number", "metadata samples 'abc' is not a whole number of rows")("explain", rec("nsamp.csv", head + "# samples: abc\nsin,cos\n" + rows(200)))
 
   behavior of "explain-bench"
   bad("--samples 0", "--samples must be in 10000..")("explain-bench", "--samples", "0")

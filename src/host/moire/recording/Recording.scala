@@ -107,7 +107,7 @@ object Recording {
     def need(k: String) = meta.getOrElse(k, bad(headerAt + 1, s"metadata '$k' is missing (a line '# $k: value' before the header)"))
     val fs = moire.numbers.Decimal.double(need("sample_rate_hz")).filter(v => v >= MinSampleRateHz && v <= MaxSampleRateHz)
       .getOrElse(bad(headerAt + 1, s"metadata sample_rate_hz '${meta("sample_rate_hz")}' is not a sample rate (a number from 1e-6 to 1e11 Hz)"))
-    val bits = need("adc_bits").toIntOption.filter(b => b >= 4 && b <= 24)
+    val bits = moire.numbers.Decimal.int(need("adc_bits")).filter(b => b >= 4 && b <= 24)
       .getOrElse(bad(headerAt + 1, s"metadata adc_bits '${meta("adc_bits")}' is not an integer in 4..24"))
     val adc = Adc(bits, format(meta).fold(e => bad(headerAt + 1, e), identity))
     if (!it.hasNext) bad(headerAt, "the header row 'sin,cos' is missing")
@@ -117,7 +117,7 @@ object Recording {
     val si = header.indexOf("sin"); val ci = header.indexOf("cos")
     if (si < 0 || ci < 0) bad(headerAt + 1, s"header must name columns sin and cos, got '${Shown.text(headerLine)}'")
     // the `samples` line sizes the arrays when it is there (checked against the rows at the end)
-    val expect = meta.get("samples").flatMap(_.toIntOption).filter(n => n > 0 && n < Int.MaxValue - 8)
+    val expect = meta.get("samples").flatMap(moire.numbers.Decimal.int).filter(n => n > 0 && n < Int.MaxValue - 8)
     // a hint only, never trusted for more than 4 Mi rows: a wrong `samples` line must not size the arrays
     val rows = new Rows(name, adc, header, si, ci, expect.fold(1 << 16)(math.min(_, 1 << 22)))
     var ln = headerAt + 1L
@@ -131,7 +131,8 @@ object Recording {
     val cutShort = "has no line end: the file may be cut short; end it with a line break if it is complete"
     if (n == 0) bad(headerAt + 1, if (cut == 0) "no data rows after the header" else s"no data rows after the header but the last line ($cut), which $cutShort")
     meta.get("samples").foreach { s =>
-      if (!s.toLongOption.contains(n.toLong))
+      if (moire.numbers.Decimal.long(s).isEmpty) bad(headerAt + 1, s"metadata samples '${Shown.text(s)}' is not a whole number of rows")
+      if (!moire.numbers.Decimal.long(s).contains(n.toLong))
         bad(ln, if (cut == 0) s"metadata samples says '$s' but the file has $n data rows: a truncated or edited file"
           else s"metadata samples says '$s' but the file has $n whole data rows; the last line ($cut), left out, $cutShort")
     }
@@ -214,7 +215,7 @@ object Recording {
       val cells = line.split(",", -1)
       if (cells.length != header.length) badRow(ln, line, s"${cells.length} cells, the header has ${header.length}")
       def code(c: Int, col: String): Int =
-        checked(cells(c).trim.toIntOption.getOrElse(badRow(ln, line, s"$col '${Shown.text(cells(c).trim)}' is not an integer ADC code")), col, line, ln)
+        checked(moire.numbers.Decimal.int(cells(c)).getOrElse(badRow(ln, line, s"$col '${Shown.text(cells(c).trim)}' is not an integer ADC code")), col, line, ln)
       sin(n) = code(si, "sin"); cos(n) = code(ci, "cos")
       var e = 0
       while (e < extraIdx.length) {

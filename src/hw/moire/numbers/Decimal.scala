@@ -16,11 +16,32 @@ object Decimal {
     }
   }
 
-  /** An integer in decimal digits (an optional sign), or None (also when it does not fit a Long). */
-  def long(s: String): Option[Long] = { val t = s.trim; if (t.nonEmpty && t.forall(c => c.isDigit || c == '-' || c == '+')) t.toLongOption else None }
+  /** An integer in decimal digits 0-9 (an optional sign), or None (also when it does not fit a Long). Other scripts'
+    * digits (Java reads `١٢` and `１２` as 12) are not plain decimal.
+    */
+  def long(s: String): Option[Long] = {
+    val t = s.trim
+    if (t.nonEmpty && t.forall(c => (c >= '0' && c <= '9') || c == '-' || c == '+')) t.toLongOption else None
+  }
 
-  /** As [[long]], for an Int. */
-  def int(s: String): Option[Int] = long(s).filter(v => v >= Int.MinValue && v <= Int.MaxValue).map(_.toInt)
+  /** As [[long]], for an Int: read in one pass (a recording's codes are read with it, two a row). */
+  def int(s: String): Option[Int] = {
+    var i = 0; var n = s.length
+    while (i < n && s.charAt(i) <= ' ') i += 1
+    while (n > i && s.charAt(n - 1) <= ' ') n -= 1
+    val neg = i < n && s.charAt(i) == '-'
+    if (i < n && (s.charAt(i) == '-' || s.charAt(i) == '+')) i += 1
+    if (i == n) return None
+    var v = 0L
+    while (i < n) {
+      val c = s.charAt(i)
+      if (c < '0' || c > '9') return None
+      v = v * 10 + (c - '0'); if (v > 2147483648L) return None
+      i += 1
+    }
+    val r = if (neg) -v else v
+    if (r > Int.MaxValue) None else Some(r.toInt)
+  }
 
   /** [+-] digits [. digits] [(e|E) [+-] digits], with at least one digit before the exponent. */
   def isDecimal(t: String): Boolean = {
