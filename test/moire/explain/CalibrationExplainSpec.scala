@@ -34,6 +34,15 @@ class CalibrationExplainSpec extends AnyFlatSpec with Matchers {
     for (seed <- 1 to 5) CalibrationExplain.run("cal", cal(0, 0, seed)).report.findings shouldBe empty
   }
 
+  it should "report a flat table (every error the same, both directions) with finite figures and nothing found" in {
+    val rows = for (d <- Seq(1, -1); k <- 0 until 36) yield (k * 10.0, 0.0, d)
+    val r = CalibrationExplain.run("flat", Calibration(rows.map(_._1).toArray, rows.map(_._2).toArray, rows.map(_._3).toArray, Map("source" -> "test"))).report
+    r.findings shouldBe empty
+    r.located.map(_.where).toSet shouldBe Set("against angle (harmonics of the turn)", "by direction")
+    r.located.flatMap(_.params.values).forall(x => !x.isNaN && !x.isInfinite) shouldBe true
+    r.json.toString should not include "NaN"
+  }
+
   it should "note a last row without a line end (kept: a hand-made table often ends so, a cut file too)" in {
     val p = os.temp(suffix = ".csv"); Calibration.write(p, cal(0, 0, 2))
     CalibrationExplain.run("cal", Calibration.read(p)).report.notes shouldBe empty

@@ -97,15 +97,17 @@ object CalibrationExplain {
     val (kb, ab) = amps.maxBy(_._2)
     // amplitude of a harmonic of pure noise: Rayleigh with sigma = sd * sqrt(2/n); significant beyond ~5.5 sigma
     val noiseAmp = sd * math.sqrt(2.0 / n)
+    // a residual of exactly 0 (a flat table) has no harmonic and no noise: a ratio of 0, not 0 / 0
+    def over(a: Double, b: Double) = if (b > 0) a / b else 0.0
     val out = Seq.newBuilder[Located]
-    out += Located("against angle (harmonics of the turn)", f"largest residual harmonic: order $kb, $ab%.3f arcsec (${ab / noiseAmp}%.1f x its noise level)",
-      Map("order" -> kb, "amplitude_arcsec" -> ab, "ratio" -> ab / noiseAmp), ab / noiseAmp > math.sqrt(2 * math.log(kMax.toDouble) + 30))
+    out += Located("against angle (harmonics of the turn)", f"largest residual harmonic: order $kb, $ab%.3f arcsec (${over(ab, noiseAmp)}%.1f x its noise level)",
+      Map("order" -> kb, "amplitude_arcsec" -> ab, "ratio" -> over(ab, noiseAmp)), over(ab, noiseAmp) > math.sqrt(2 * math.log(kMax.toDouble) + 30))
     if (c.hasDirection) {
       val cw = r.indices.filter(c.direction(_) > 0).map(r); val ccw = r.indices.filter(c.direction(_) < 0).map(r)
       if (cw.nonEmpty && ccw.nonEmpty) {
         val d = cw.sum / cw.size - ccw.sum / ccw.size; val se = sd * math.sqrt(1.0 / cw.size + 1.0 / ccw.size)
-        out += Located("by direction", f"cw minus ccw mean residual $d%.3f arcsec (${d / se}%.1f standard errors)",
-          Map("difference_arcsec" -> d, "z" -> d / se), math.abs(d / se) > 6)
+        out += Located("by direction", f"cw minus ccw mean residual $d%.3f arcsec (${over(d, se)}%.1f standard errors)",
+          Map("difference_arcsec" -> d, "z" -> over(d, se)), math.abs(over(d, se)) > 6)
       }
     }
     out.result()
