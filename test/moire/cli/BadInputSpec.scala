@@ -306,6 +306,15 @@ class BadInputSpec extends AnyFlatSpec with Matchers {
   bad("adc_bits in Arabic-Indic digits", "metadata adc_bits")("explain", rec("arabic.csv", "# moire-recording v1\n# sample_rate_hz: 1000000\n# adc_bits: \u0661\u0662\nsin,cos\n" + rows(200)))
   bad("metadata samples that is no number", "metadata samples 'abc' is not a whole number of rows")("explain", rec("nsamp.csv", head + "# samples: abc\nsin,cos\n" + rows(200)))
 
+  behavior of "cost and timing"
+  // an option the command would ignore is refused: the figures would be for a configuration nobody asked for
+  bad("a sweep width out of range", "--sweep-widths: 7 is not in 8..48")("cost", "--sweep", "--sweep-widths", "7")
+  bad("sweep iterations of 0", "--sweep-iterations: 0 is not in 4..40")("cost", "--sweep", "--sweep-iterations", "0")
+  bad("CORDIC options with another design", "apply to --design cordic only, not subdiv")("cost", "--design", "subdiv", "--iterations", "12")
+  bad("sweep options without --sweep", "--spread apply to --sweep only")("cost", "--spread", "2")
+  bad("a design with --sweep", "--design, --keep and the CORDIC options")("cost", "--sweep", "--design", "subdiv")
+  bad("timing's CORDIC options with another design", "apply to --design cordic only, not quadcomp")("timing", "--design", "quadcomp", "--width", "12")
+
   behavior of "explain-bench"
   bad("--samples 0", "--samples must be in 10000..")("explain-bench", "--samples", "0")
   bad("--runs 0", "--runs must be in 1..10, got 0")("explain-bench", "--runs", "0")

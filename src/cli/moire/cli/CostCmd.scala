@@ -27,10 +27,12 @@ object CostCmd {
     }
   }
 
-  private def ints(opt: String, s: String): Seq[Int] = {
+  /** A sweep's list, each value within the CORDIC's range for it (one out of range is said, not dropped). */
+  private def ints(opt: String, s: String, lo: Int, hi: Int): Seq[Int] = {
     val vs = s.split(",").toSeq.map(_.trim).filter(_.nonEmpty).map(v =>
       moire.numbers.Decimal.int(v).getOrElse(throw new UsageError(s"--$opt: '$v' is not an integer list like 8,12,16")))
     if (vs.isEmpty) throw new UsageError(s"--$opt: give at least one integer, like 8,12,16 (got '$s')")
+    vs.find(v => v < lo || v > hi).foreach(v => throw new UsageError(s"--$opt: $v is not in $lo..$hi"))
     vs
   }
 
@@ -40,7 +42,7 @@ object CostCmd {
     if (vs.isEmpty) throw new UsageError("--variants: give at least one variant")
     if (spread < 0) throw new UsageError(s"--spread must be 0 or more, got $spread")
     if (timeout < 1) throw new UsageError(s"--timeout must be at least 1 second, got $timeout")
-    val grid = SweepGrid(vs, ints("sweep-iterations", iterations), ints("sweep-widths", widths), spread)
+    val grid = SweepGrid(vs, ints("sweep-iterations", iterations, 4, 40), ints("sweep-widths", widths, 8, 48), spread)
     val pts = try grid.points catch {
       case e: IllegalArgumentException => throw new UsageError("--sweep: " + e.getMessage.stripPrefix("requirement failed: "))
     }

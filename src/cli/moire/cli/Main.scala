@@ -65,8 +65,26 @@ object Main {
            @arg(doc = "sweep: comma-separated widths (default 12,16,20)") sweepWidths: String = "12,16,20",
            @arg(doc = "sweep: keep (n, b) with b - spread <= n <= b (default 4)") spread: Int = 4,
            @arg(doc = "sweep: skip the measured error of the bit-accurate model") noMeasure: Flag = Flag()): Unit =
-    if (sweep.value) CostCmd.sweep(variants, sweepIterations, sweepWidths, spread, folderName(out), timeout, !noMeasure.value, json)
-    else CostCmd.run(config, design, json, timeout, keep.map(folderName(_, "--keep")))
+    if (sweep.value) {
+      // the sweep makes its own configurations: a design's options would be ignored
+      if (design != "cordic" || keep.isDefined || config != CordicConfig())
+        throw new UsageError("--sweep sweeps the CORDIC variants over --sweep-iterations and --sweep-widths; --design, --keep and the CORDIC options (--iterations, --width, ...) do not apply")
+      CostCmd.sweep(variants, sweepIterations, sweepWidths, spread, folderName(out), timeout, !noMeasure.value, json)
+    } else {
+      val given = Seq("--out" -> (out != "cost-sweep"), "--variants" -> (variants != "sincos,sincos-taper,sincos-taper-g2,asin,asin-double,asin-table"),
+        "--sweep-iterations" -> (sweepIterations != "8,12,16"), "--sweep-widths" -> (sweepWidths != "12,16,20"), "--spread" -> (spread != 4),
+        "--no-measure" -> noMeasure.value).collect { case (o, true) => o }
+      if (given.nonEmpty) throw new UsageError(s"${given.mkString(", ")} apply to --sweep only; add --sweep, or leave them out")
+      cordicOptionsFor(design, config)
+      CostCmd.run(config, design, json, timeout, keep.map(folderName(_, "--keep")))
+    }
+
+  /** The CORDIC options (the emit options) make the cordic design only: given with another design they would be
+    * ignored, and the figures would be for a configuration nobody asked for.
+    */
+  private def cordicOptionsFor(design: String, config: CordicConfig): Unit =
+    if (design != "cordic" && config != CordicConfig())
+      throw new UsageError(s"the CORDIC options (--mode, --iterations, --width, ...) apply to --design cordic only, not $design; leave them out")
 
   @main(doc = "Fmax, utilisation and critical path on the LFE5U-85F (yosys synth_ecp5, nextpnr-ecp5) at speed grades 6 and 8; exit code 1 when a design misses its target.")
   def timing(config: CordicConfig,
@@ -79,8 +97,10 @@ object Main {
              @arg(doc = "also write the figures as JSON to this file") json: Option[String] = None,
              @arg(doc = "also write a markdown table to this file") markdown: Option[String] = None,
              @arg(doc = "cache folder (default ~/.cache/moire-tools/timing; $MOIRE_TOOLS moves it)") cache: Option[String] = None,
-             @arg(doc = "seconds each tool run may take (default 3600)") timeout: Int = 3600): Unit =
+             @arg(doc = "seconds each tool run may take (default 3600)") timeout: Int = 3600): Unit = {
+    design.foreach(cordicOptionsFor(_, config))
     if (!TimingCmd.run(config, design, all.value, speeds, targetMhz, router, inContext.value, json, markdown, cache, timeout)) sys.exit(1)
+  }
 
   @main(doc = "Write the SystemVerilog of the subdivider with its ADC front end into a folder.")
   def emitSubdiv(config: SubdivConfig, @arg(doc = "output folder") out: String = "generated"): Unit = println(SubdivCmd.run(config, folderName(out)))
@@ -104,7 +124,7 @@ object Main {
   def bounds(@arg(doc = "one mode, or all when left out") mode: Option[String] = None,
              @arg(doc = "comma-separated iteration counts") iterations: String = "8,12,16,20,24",
              @arg(doc = "comma-separated data widths") widths: String = "12,16,18,24,32"): Unit = {
-    def ints(opt: String, s: String) = s.split(",").toSeq.map(v => v.trim.toIntOption.getOrElse(
+    def ints(opt: String, s: String) = s.split(",").toSeq.map(v => moire.numbers.Decimal.int(v).getOrElse(
       throw new UsageError(s"--$opt: '$v' is not an integer list like 8,12,16")))
     val modes = mode.map(m => Seq(CordicMode.parse(m).fold(e => throw new UsageError(e), identity))).getOrElse(CordicMode.all)
     val ns = ints("iterations", iterations); val bs = ints("widths", widths)

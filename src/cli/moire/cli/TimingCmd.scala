@@ -17,7 +17,7 @@ object TimingCmd {
       case (Some(n), _) => Seq(Designs.find(n, p).fold(e => throw new UsageError(e), identity))
       case (None, true) => Designs.all(p)
     }
-    val ss = speeds.split(",").toSeq.map(_.trim).filter(_.nonEmpty).map(s => s.toIntOption.filter(Seq(6, 7, 8).contains)
+    val ss = speeds.split(",").toSeq.map(_.trim).filter(_.nonEmpty).map(s => moire.numbers.Decimal.int(s).filter(Seq(6, 7, 8).contains)
       .getOrElse(throw new UsageError(s"--speeds: '$s' is not an ECP5 speed grade; allowed: 6, 7, 8 (comma-separated)")))
     if (ss.isEmpty) throw new UsageError("--speeds: give at least one speed grade (6, 7, 8)")
     if (!(targetMhz > 0 && targetMhz < 1000)) throw new UsageError(s"--target-mhz must be above 0 and below 1000 MHz, got $targetMhz")

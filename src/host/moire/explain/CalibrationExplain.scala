@@ -19,7 +19,7 @@ object CalibrationExplain {
     val n = c.length; val a = c.angleDeg.map(math.toRadians); val y = c.errorArcsec
     val kMax = math.max(1, math.min(128, (n - 1) / 2 - 1))
     // the default model's harmonic count: what the data can support, or an error saying so
-    val k0 = c.meta.get("harmonics").map(h => h.toIntOption.filter(k => k >= 0 && k <= kMax).getOrElse(throw new ExplainError(
+    val k0 = c.meta.get("harmonics").map(h => moire.numbers.Decimal.int(h).filter(k => k >= 0 && k <= kMax).getOrElse(throw new ExplainError(
       s"$file: metadata harmonics '$h' must be an integer in 0..$kMax: $n points support at most $kMax harmonics besides the candidates"))).getOrElse(math.min(2, kMax))
     def cols(t: T): IndexedSeq[Col] = t match {
       case H(k) => IndexedSeq(Col(a.map(x => math.cos(k * x)), null), Col(a.map(x => math.sin(k * x)), null))
