@@ -306,6 +306,10 @@ class BadInputSpec extends AnyFlatSpec with Matchers {
   bad("adc_bits in Arabic-Indic digits", "metadata adc_bits")("explain", rec("arabic.csv", "# moire-recording v1\n# sample_rate_hz: 1000000\n# adc_bits: \u0661\u0662\nsin,cos\n" + rows(200)))
   bad("metadata samples that is no number", "metadata samples 'abc' is not a whole number of rows")("explain", rec("nsamp.csv", head + "# samples: abc\nsin,cos\n" + rows(200)))
 
+  // 77 records lost on the link: the rows after them are 77 samples later than their row numbers say
+  bad("a recording whose sample_index skips records", "sample_index steps by 78 from 999 to 1077 (data row 1001)")("explain", rec("gap.csv",
+    head + "sin,cos,sample_index\n" + rows(2000).linesIterator.zipWithIndex.collect { case (r, i) if i < 1000 || i >= 1077 => s"$r,$i" }.mkString("\n") + "\n"), "--quiet", "--no-rtl")
+
   behavior of "cost and timing"
   // an option the command would ignore is refused: the figures would be for a configuration nobody asked for
   bad("a sweep width out of range", "--sweep-widths: 7 is not in 8..48")("cost", "--sweep", "--sweep-widths", "7")

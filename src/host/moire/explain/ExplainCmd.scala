@@ -165,6 +165,7 @@ object ExplainCmd {
     for ((name, c) <- Seq("sin" -> rec.sin, "cos" -> rec.cos) if c.forall(_ == c(0)))
       throw new ExplainError(s"$p: $name channel constant at code ${c(0)} over all ${rec.length} samples: a dead or unconnected channel, nothing to fit")
     moire.recording.FormatCheck.mismatch(rec).foreach(why => throw new ExplainError(s"$p: $why"))
+    gap(rec).foreach(why => throw new ExplainError(s"$p: $why"))
     // a channel mostly at the end codes holds its fringe only near the zero crossings: too little to fit it by
     for ((name, c) <- Seq("sin" -> rec.sin, "cos" -> rec.cos)) {
       val h = rec.adc.half
@@ -173,6 +174,20 @@ object ExplainCmd {
         f"its samples (at most ${100 * MaxRailShare}%.0f %%): too little of the fringe is within the converter's range to fit; lower the gain before the ADC")
     }
   }
+  /** Why the rows are not evenly spaced in time, or None: a `sample_index` (a 32-bit count of ADC samples) that steps
+    * other than its first step (a decimated recording steps by its decimation throughout). The fit's time axis is the
+    * row number over the sample rate: records lost on the link would shift every later sample's time.
+    */
+  def gap(rec: Recording): Option[String] = rec.extra.get("sample_index").filter(_.length > 2).flatMap { ix =>
+    def step(i: Int) = (ix(i).toLong - ix(i - 1).toLong) & 0xffffffffL
+    val d = step(1)
+    (2 until ix.length).find(i => step(i) != d).map { i =>
+      def show(x: Double) = if (x == math.rint(x)) x.toLong.toString else x.toString
+      s"sample_index steps by ${step(i)} from ${show(ix(i - 1))} to ${show(ix(i))} (data row ${i + 1}) where it stepped by $d before: " +
+        "records are missing, and the fit's time axis needs every row in its place; explain the rows before and after apart"
+    }
+  }
+
   /** A channel's share of samples at the end codes above which a recording is not explained. */
   val MaxRailShare = 0.5
 
