@@ -87,4 +87,11 @@ class BoardCheckSpec extends AnyFlatSpec {
     assert(f.isEmpty && notes == Seq("board outputs not compared: dec.csv: the recording is decimated (decimation 8): " +
       "the RTL needs every ADC sample, so it cannot be replayed exactly"), notes)
   }
+
+  it should "say why --subdiv --counts other than the recording's counts_per_period is not compared" in {
+    val r = boardRecording(identity)
+    val (f, notes) = BoardCheck.run("c.csv", r.copy(meta = r.meta + ("counts_per_period" -> "1024")), Seq("--counts", "4096"), _ => ())
+    assert(f.isEmpty && notes.size == 1 && notes.head.startsWith("board outputs not compared: --subdiv gives --counts 4096, but the recording's " +
+      "counts_per_period is 1024"), notes)
+  }
 }

@@ -79,6 +79,11 @@ object BoardCheck {
   /** The check on one recording with a `position` column: a finding when the board differs, notes either way. */
   def run(file: String, rec: Recording, subdivOpts: Seq[String], log: String => Unit): (Option[Finding], Seq[String]) = {
     val pos = rec.extra.getOrElse("position", return (None, Nil))
+    // the board's position counts as its metadata says: an RTL of other counts would differ everywhere
+    val given = subdivOpts.indexOf("--counts") match { case i if i >= 0 => subdivOpts.lift(i + 1); case _ => None }
+    for (u <- given; v <- rec.meta.get("counts_per_period") if moire.numbers.Decimal.double(u) != moire.numbers.Decimal.double(v))
+      return (None, Seq(s"board outputs not compared: --subdiv gives --counts $u, but the recording's counts_per_period is $v " +
+        "(the board counted so); leave --counts out and the metadata gives it"))
     try {
       val d = ReplayDesign("subdiv", ReplayCmd.config(subdivOpts, rec.meta))
       ReplayCmd.matchAdc(file, rec, d)
