@@ -310,6 +310,10 @@ class BadInputSpec extends AnyFlatSpec with Matchers {
   bad("a recording whose sample_index skips records", "sample_index steps by 78 from 999 to 1077 (data row 1001)")("explain", rec("gap.csv",
     head + "sin,cos,sample_index\n" + rows(2000).linesIterator.zipWithIndex.collect { case (r, i) if i < 1000 || i >= 1077 => s"$r,$i" }.mkString("\n") + "\n"), "--quiet", "--no-rtl")
 
+  // a stray word before valid options: the word is named, not the options after it
+  bad("a stray word among emit's options", "Unexpected word 'extra'", Seq(dir / "o1"))("emit", "extra", "--out", (dir / "o1").toString)
+  bad("a board named twice", "Unexpected word 'de2-115'", Seq(dir / "b1"))("board", "de2-115", "de2-115", "--out", (dir / "b1").toString)
+
   behavior of "cost and timing"
   // an option the command would ignore is refused: the figures would be for a configuration nobody asked for
   bad("a sweep width out of range", "--sweep-widths: 7 is not in 8..48")("cost", "--sweep", "--sweep-widths", "7")

@@ -61,17 +61,18 @@ object SubdivCmd {
   def oneLine(msg: String): String = {
     val lines = msg.linesIterator.map(_.trim).filter(_.nonEmpty).toSeq
     // the first word after "Unknown argument(s):", quoted or not
-    val unknown = lines.find(_.startsWith("Unknown argument")).map(_.dropWhile(_ != ':').drop(1).trim)
+    val word = lines.find(_.startsWith("Unknown argument")).map(_.dropWhile(_ != ':').drop(1).trim)
       .flatMap(w => if (w.startsWith("\"")) firstQuoted.findFirstMatchIn(w).map(_.group(1)) else w.split("\\s+").headOption)
-      .filter(_.startsWith("-"))
     val head = lines.headOption.getOrElse("bad arguments")
-    val first = unknown match {
-      case Some(opt) if head.startsWith("Missing argument") || head.startsWith("Unknown argument") => s"Unknown argument: $opt"
+    val first = word match {
+      case Some(opt) if opt.startsWith("-") && (head.startsWith("Missing argument") || head.startsWith("Unknown argument")) => s"Unknown argument: $opt"
+      // a word that is no option: the options after it are not unknown, the word is
+      case Some(w) if head.startsWith("Unknown argument") => s"Unexpected word '$w': the options here are --name value pairs and flags"
       case _ => head
     }
     first.replaceFirst("""^moire\.[\w.$]+Error: """, "") match {
       case badValue(opt, tpe, v) => s"$opt: '$v' is not a valid $tpe"
-      case other if other.startsWith("Unknown argument") || other.startsWith("Missing argument") => s"$other (see --help)"
+      case other if other.startsWith("Unknown argument") || other.startsWith("Missing argument") || other.startsWith("Unexpected word") => s"$other (see --help)"
       case other => other
     }
   }
