@@ -401,10 +401,12 @@ object SignalExplain {
   val MinAmplitudeNoise = 2.0
 
   /** Why the record holds no fringe to explain (inputs floating, random codes, a head off the scale), or None: the
-    * default fit's amplitude is within `MinAmplitudeNoise` of its noise, so the fit's phase follows the noise.
+    * default fit's amplitude is within `MinAmplitudeNoise` of the noise, so the fit's phase follows the noise. The
+    * noise is the floor from neighbouring samples of the residual (`Adequacy.floor`), not the fit's: where the model
+    * does not follow the motion (stick-slip) the fit's residual is the misfit, not noise.
     */
   def noFringe(e: SignalEngine): Option[String] = {
-    val a = 0.5 * (e.ampS + e.ampC); val sd = math.sqrt(0.5 * (e.noise.varS + e.noise.varC))
+    val a = 0.5 * (e.ampS + e.ampC); val sd = Adequacy.floor(e)
     if (a > MinAmplitudeNoise * sd) None
     else Some(f"no fringe: the fitted amplitude ${a / e.lsb}%.3g LSB is not above ${MinAmplitudeNoise}%.0f x the noise " +
       f"(${sd / e.lsb}%.3g LSB rms); are the inputs connected, and the read head over the scale and moving?")
