@@ -314,6 +314,9 @@ class BadInputSpec extends AnyFlatSpec with Matchers {
   bad("a stray word among emit's options", "Unexpected word 'extra'", Seq(dir / "o1"))("emit", "extra", "--out", (dir / "o1").toString)
   bad("a board named twice", "Unexpected word 'de2-115'", Seq(dir / "b1"))("board", "de2-115", "de2-115", "--out", (dir / "b1").toString)
 
+  bad("record's burst trigger without --burst", "--trigger and --pre apply to a burst")("record", "--port", "/dev/null", "--out", (dir / "r.csv").toString,
+    "--seconds", "1", "--trigger", "z")
+
   behavior of "cost and timing"
   // an option the command would ignore is refused: the figures would be for a configuration nobody asked for
   bad("a sweep width out of range", "--sweep-widths: 7 is not in 8..48")("cost", "--sweep", "--sweep-widths", "7")

@@ -266,6 +266,8 @@ object Main {
              @arg(doc = "milliseconds to wait for each register reply (default 500)") timeoutMs: Int = 500,
              @arg(doc = "no progress bar") quiet: Flag = Flag()): Unit = {
     val secs = seconds.orElse(burst.map(_ => 10.0)).getOrElse(throw new UsageError("record: give --seconds S (continuous stream) or --burst N (one full-rate burst)"))
+    // the trigger and the samples before it belong to a burst: a stream would record without them
+    if (burst.isEmpty && (trigger != "now" || pre != 0)) throw new UsageError("--trigger and --pre apply to a burst; add --burst N, or leave them out")
     val o = moire.stream.RecordOptions(port, secs, out, baud, decimation, adcClockHz, adcFormat, countsPerPeriod,
       listenOnly.value, timeoutMs, quiet.value, refCountsPerPeriod, refCountsPerTurn)
     burst match {

@@ -26,7 +26,8 @@ final case class CalibrationData(file: String, meta: Map[String, String], points
     def onGrid(a: Double) = { val q = (a - as.head) / step; math.abs(q - math.round(q)) < 1e-6 }
     if (n < 4 || math.abs(n * step - 360) > 1e-6 || !as.forall(onGrid) || as.size * 2 < n) None
     else {
-      val missing = (0 until n).map(k => (as.head + k * step) % 360).filterNot(a => as.exists(b => math.abs(a - b) < 1e-6))
+      val sorted = as.toArray
+      val missing = (0 until n).map(k => (as.head + k * step) % 360).filterNot(a => CalibrationData.near(sorted, a))
       if (missing.isEmpty) None else Some((d, step, missing.sorted))
     }
   }
@@ -119,15 +120,22 @@ object CalibrationData {
     data
   }
 
+  /** An angle of the sorted `as` within 1e-6 degree of `a` (a binary search: a 0.001 degree table has 360,000). */
+  def near(as: Array[Double], a: Double): Boolean = {
+    val i = java.util.Arrays.binarySearch(as, a - 1e-6)
+    val at = if (i >= 0) i else -i - 1
+    at < as.length && as(at) - a < 1e-6
+  }
+
   /** With `# step_deg: s`, every angle k s in [0, 360) must be present in each direction. */
   private def checkGrid(d: CalibrationData, step: String, line: Int): Unit = {
     val s = moire.numbers.Decimal.double(step).filter(v => v > 0 && v <= 180 && !v.isNaN)
       .getOrElse(throw new CalibrationError(s"${d.file}:$line: step_deg '$step' must be a number in (0, 180]"))
     val n = math.round(360 / s).toInt
     if (math.abs(n * s - 360) > 1e-6) throw new CalibrationError(s"${d.file}:$line: step_deg $s does not divide 360")
-    for (dir <- d.directions; k <- 0 until n) {
+    for (dir <- d.directions; as = d.of(dir).map(_.angleDeg).sorted.toArray; k <- 0 until n) {
       val want = k * s
-      if (!d.of(dir).exists(p => math.abs(p.angleDeg - want) < 1e-6)) {
+      if (!near(as, want)) {
         val angle = BigDecimal(want).setScale(6, BigDecimal.RoundingMode.HALF_UP).bigDecimal.stripTrailingZeros.toPlainString
         val where = if (dir.isEmpty) "" else s" ($dir)"
         throw new CalibrationError(s"${d.file}: angle $angle deg missing$where (step_deg: $s on line $line)")
