@@ -416,7 +416,7 @@ object SignalExplain {
   def notes(e: SignalEngine): Seq[String] = {
     val sd = math.sqrt(math.min(e.noise.varS, e.noise.varC)) / e.step
     val unit = if (e.coarseBits == 0) "LSB" else s"steps of ${1 << e.coarseBits} LSB"
-    (if (sd < 0.5) Seq(f"noise is $sd%.2f $unit rms, below 0.5: the quantization error is not white noise here; value-bound structure below ${Quantization.biasBound(e) / e.step}%.2f of a step is taken for quantization, not physics") else Nil) ++
+    (if (sd < 0.5) Seq(f"noise is ${Effect.below(sd, 0.5)} $unit rms, below 0.5: the quantization error is not white noise here; value-bound structure below ${Quantization.biasBound(e) / e.step}%.2f of a step is taken for quantization, not physics") else Nil) ++
       (if (e.typicalHz * 4 > e.fs && e.reference.isEmpty) Seq("fewer than 4 samples per fringe period: the phase trajectory is poorly sampled") else Nil) ++
       railNote(e).toSeq ++ RefReport.notes(e)
   }

@@ -268,7 +268,8 @@ object CsvText {
   /** The lines of [[lineIterator]]; `lastEnded`, once `hasNext` is false, whether the last had a line end. */
   final class Lines(path: os.Path, in: java.io.BufferedReader) extends Iterator[String] {
     private val bounded = new BoundedLines(in, MaxLineChars, line => throw new RecordingError(
-      s"$path:$line: a line longer than $MaxLineChars characters: not a moire text file (it starts with '${Shown.head(path, 16)}')"))
+      if (line <= 1) s"$path:$line: a line longer than $MaxLineChars characters: not a moire text file (it starts with '${Shown.head(path, 16)}')"
+      else s"$path:$line: a line longer than $MaxLineChars characters, more than a moire text file's lines hold (a metadata value or a row run together?)"))
     private var first = true
     private var nextLine: String = read()
     private def read(): String = try bounded.readLine() catch {

@@ -120,6 +120,10 @@ trait Effect {
 }
 
 object Effect {
+  /** `x` (below `limit`) to two decimals, or to as many more as show it below: 0.4996 is not "0.50, below 0.5". */
+  def below(x: Double, limit: Double): String =
+    (2 to 6).map(d => s"%.${d}f".formatLocal(java.util.Locale.ROOT, x)).find(_.toDouble < limit).getOrElse(x.toString)
+
   type Described = (Map[String, Double], Map[String, Double], String, String)
 
   /** Amplitude and its sd of b0 cos + b1 sin. */
