@@ -23,7 +23,7 @@ class CalibrationDataSpec extends AnyFlatSpec {
       "angle_deg,error_arcsec\n0,1\n" -> "t.csv:1: first line must be '# moire-calibration v1'",
       "# moire-calibration v2\nangle_deg,error_arcsec\n" -> "t.csv:1: first line",
       "# moire-calibration v1\n#table: x\n" -> "t.csv:2: metadata must read '# key: value'",
-      "# moire-calibration v1\n# no colon here\n" -> "t.csv:2: metadata",
+      "# moire-calibration v1\n# measured on the rotary table\n" -> "t.csv:2: no header row", // a comment, as in a recording
       "# moire-calibration v1\n0,1.0\n10,2.0\n" -> "t.csv:2: header row must be 'angle_deg,error_arcsec'",
       "# moire-calibration v1\nangle,error\n" -> "t.csv:2: header row",
       "# moire-calibration v1\n# a: b\n" -> "t.csv:2: no header row",

@@ -36,7 +36,7 @@ final case class CalibrationData(file: String, meta: Map[String, String], points
 /** Reader of the `moire-calibration v1` CSV format:
   * {{{
   * # moire-calibration v1
-  * # table: air-bearing turntable   <- "# key: value" metadata, optional
+  * # table: air-bearing turntable   <- "# key: value" metadata, optional; "# text" without a colon: a comment
   * # step_deg: 10                   <- when given, every multiple of the step must be present
   * angle_deg,error_arcsec[,direction]
   * 0,-1.83[,cw]
@@ -75,10 +75,13 @@ object CalibrationData {
       if (l.startsWith("#")) {
         val kv = l.stripPrefix("#").trim
         val at = kv.indexOf(':')
-        if (!l.startsWith("# ") || at <= 0) fail(n, s"metadata must read '# key: value', got '${moire.files.Shown.text(l)}'")
-        val key = kv.substring(0, at).trim
-        if (meta.contains(key)) fail(n, s"metadata key '$key' appears twice")
-        meta(key) = kv.substring(at + 1).trim
+        // a line with no key (no colon) is a comment, as in a recording
+        if (at > 0 && !l.startsWith("# ")) fail(n, s"metadata must read '# key: value', got '${moire.files.Shown.text(l)}'")
+        if (at > 0) {
+          val key = kv.substring(0, at).trim
+          if (meta.contains(key)) fail(n, s"metadata key '$key' appears twice")
+          meta(key) = kv.substring(at + 1).trim
+        }
       } else header match {
         case None =>
           val h = l.split(",", -1).toSeq.map(_.trim.toLowerCase)
