@@ -168,8 +168,10 @@ object ExplainCmd {
     gap(rec).foreach(why => throw new ExplainError(s"$p: $why"))
     // a channel mostly at the end codes holds its fringe only near the zero crossings: too little to fit it by
     for ((name, c) <- Seq("sin" -> rec.sin, "cos" -> rec.cos)) {
-      val h = rec.adc.half
-      val share = c.count { x => val v = rec.adc.fromPins(x); v == -h || v == h - 1 }.toDouble / c.length
+      val (lo, hi) = (rec.adc.pins(-rec.adc.half), rec.adc.pins(rec.adc.half - 1))
+      var k = 0; var i = 0
+      while (i < c.length) { if (c(i) == lo || c(i) == hi) k += 1; i += 1 }
+      val share = k.toDouble / c.length
       if (share > MaxRailShare) throw new ExplainError(f"$p: the $name channel is at the ADC's end codes on ${100 * share}%.1f %% of " +
         f"its samples (at most ${100 * MaxRailShare}%.0f %%): too little of the fringe is within the converter's range to fit; lower the gain before the ADC")
     }
