@@ -51,6 +51,7 @@ class MonitorApiSpec extends AnyFlatSpec {
       // bad requests
       for ((url, body, code, msg) <- Seq(
         ("api/burst", """{"samples": 5}""", 400, "samples must be in"),
+        ("api/burst", """{"samples": 1e400}""", 400, "samples must be an integer"),
         ("api/burst", """{"samples": 4096, "pre": 4096}""", 400, "pre must be in"),
         ("api/burst", """{"trigger": "sometimes"}""", 400, "trigger 'sometimes'"),
         ("api/burst", """{"sample": 4096}""", 400, "unknown field 'sample'"),
