@@ -363,6 +363,10 @@ class BadInputSpec extends AnyFlatSpec with Matchers {
     "explain", good.toString, pInput.toString, "--quiet", "--no-rtl", "--plots", pdir.toString)
   bad("a simulate --out that ends with a slash (a folder)", "ends with /, so it names a folder", Seq(dir / "newdir"))(
     "simulate", "--out", (dir / "newdir").toString + "/", "--samples", "100")
+  bad("an explain option given twice (the last would win)", "--plots is given 2 times")(
+    "explain", good.toString, "--quiet", "--no-rtl", "--plots", (dir / "p1").toString, "--plots", (dir / "p2").toString)
+  bad("an explain flag given twice", "--quiet is given 2 times")("explain", good.toString, "--quiet", "--no-rtl", "--quiet")
+  bad("a replay option given twice", "--out is given more than once")("replay", good.toString, "--out", (dir / "r1.csv").toString, "--out", (dir / "r2.csv").toString)
   bad("a recording named twice", "given 2 times; name each recording once")("explain", good.toString, good.toString, "--quiet", "--no-rtl")
   for (o <- Seq("--json-dir", "--plots", "--html-dir"))
     bad(s"an explain $o that is empty", s"$o: the folder's name is empty")("explain", good.toString, "--quiet", "--no-rtl", o, "")

@@ -41,6 +41,16 @@ class RecordingSpec extends AnyFlatSpec with Matchers {
     Recording.read(p).warnings shouldBe Nil
   }
 
+  it should "say when an empty line stands among the data rows (a lost row or two files joined), not at the file's end" in {
+    val rowsAt = good.take(7) ++ Seq("", "") ++ good.drop(7) ++ Seq("", "") // lines 8 and 9 empty between rows, two at the end
+    val r = Recording.parse("f.csv", rowsAt)
+    r.length shouldBe 2
+    r.warnings shouldBe Seq("line 8 is empty among the data rows (2 such lines in all): skipped, the rows around it taken as " +
+      "consecutive samples; if rows were lost there, the time base is off from there on")
+    Recording.parse("f.csv", good ++ Seq("", "")).warnings shouldBe Nil
+    Recording.parse("f.csv", good.take(6) ++ Seq("") ++ good.drop(6)).warnings shouldBe Nil // before the first row
+  }
+
   it should "stream a long file into arrays of the right length, with or without a samples line, CRLF and Latin-1 bytes" in {
     val n = 200003 // more than the first block of 65536 rows: the arrays grow
     val rnd = new scala.util.Random(5)

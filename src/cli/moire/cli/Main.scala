@@ -355,6 +355,7 @@ object Main {
     }
     // `board de2-115 --out DIR`: the board name as a positional word.
     val argv = if (args.length > 1 && args(0) == "board" && !args(1).startsWith("-")) Array("board", "--name") ++ args.tail else args
+    repeated(mains, argv.toSeq).foreach { msg => System.err.println(s"moire: $msg"); return 2 }
     try {
       // runRaw hands back what a command threw (runEither would print it with its class name)
       parser.runRaw(argv.toSeq, allowPositional = false) match {
@@ -385,6 +386,32 @@ object Main {
         System.err.println(s"moire: internal error: ${plain(Option(e.getMessage).getOrElse("no message"))} (MOIRE_DEBUG=1 shows where)"); 2
     }
   }
+
+  /** An option of the command given twice (`explain --plots a --plots b` took the last): the parser refuses that for a
+    * command without a list of files, and this says it alike for every command. Only the command's own options count
+    * (a command that passes the rest on, as `replay` does, checks those where it reads them).
+    */
+  private def repeated(mains: Seq[mainargs.MainData[Any, Main.type]], argv: Seq[String]): Option[String] =
+    mains.find(m => argv.headOption.contains(m.name(mainargs.Util.kebabCaseNameMapper))).flatMap { m =>
+      def names(sigs: Seq[mainargs.ArgSig]): Seq[(String, Boolean)] = sigs.flatMap { a =>
+        a.reader match {
+          case c: mainargs.TokensReader.Class[_] => names(c.main.argSigs0)
+          case r if r.isLeftover => Nil
+          case r: mainargs.TokensReader.Simple[_] if r.alwaysRepeatable => Nil // a list option (`--effect`, repeated)
+          case r => a.longName(mainargs.Util.kebabCaseNameMapper).map(l => ("--" + l, r.isFlag)).toSeq
+        }
+      }
+      val known = names(m.argSigs0).toMap
+      // each option word with the value it took (a flag takes none); a word after `--` is no option
+      val said = argv.tail.takeWhile(_ != "--").zipWithIndex.flatMap { case (w, i) =>
+        val name = w.takeWhile(_ != '=')
+        known.get(name).map(flag => name -> (if (w.contains('=')) w.dropWhile(_ != '=').drop(1) else if (flag) "" else argv.tail.lift(i + 1).getOrElse("")))
+      }
+      said.groupBy(_._1).toSeq.filter(_._2.size > 1).sortBy(g => said.indexWhere(_._1 == g._1)).headOption.map { case (name, vs) =>
+        if (known(name)) s"$name is given ${vs.size} times; give it once"
+        else s"$name is given ${vs.size} times (${vs.map(v => "'" + v._2 + "'").mkString(", ")}); give it once"
+      }
+    }
 
   private val className = """\b(?:[a-z][\w]*\.)+[A-Z][\w$]*(?:Exception|Error)?(?::\s*)?""".r
   /** The first line of a message, without Java class names. */

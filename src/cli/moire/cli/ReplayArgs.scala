@@ -17,7 +17,10 @@ object ReplayArgs {
     val rest = Seq.newBuilder[String]
     var i = 0
     def value(opt: String) = { i += 1; args.lift(i).getOrElse(throw new ReplayError(s"$opt needs a value")) }
+    val seen = scala.collection.mutable.Set.empty[String]
     while (i < args.length) {
+      // an option given twice is refused, as the other commands do (the last would have won)
+      if (args(i).startsWith("--") && !seen.add(args(i))) throw new ReplayError(s"${args(i)} is given more than once; give it once")
       args(i) match {
         case "--design" => o = o.copy(design = value("--design"))
         case "--out" => o = o.copy(out = Some(value("--out")))

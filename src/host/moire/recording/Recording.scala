@@ -122,10 +122,15 @@ object Recording {
     val rows = new Rows(name, adc, header, si, ci, expect.fold(1 << 16)(math.min(_, 1 << 22)))
     var ln = headerAt + 1L
     var cut = 0L // the last line, when it has no line end
+    // empty lines between data rows (those after the last row are a file's usual end): the first and how many
+    var pending = 0L; var pendingAt = 0L; var blanks = 0L; var firstBlank = 0L
     while (it.hasNext) {
       val line = it.next(); ln += 1
-      if (line.trim.nonEmpty && !it.hasNext && !lastEnded()) cut = ln
-      else if (line.trim.nonEmpty) rows.add(line, ln)
+      if (line.trim.isEmpty) { if (rows.n > 0) { if (pending == 0) pendingAt = ln; pending += 1 } }
+      else {
+        if (pending > 0) { if (firstBlank == 0) firstBlank = pendingAt; blanks += pending; pending = 0 }
+        if (!it.hasNext && !lastEnded()) cut = ln else rows.add(line, ln)
+      }
     }
     val n = rows.n
     val cutShort = "has no line end: the file may be cut short; end it with a line break if it is complete"
@@ -136,7 +141,9 @@ object Recording {
         bad(ln, if (cut == 0) s"metadata samples says '$s' but the file has $n data rows: a truncated or edited file"
           else s"metadata samples says '$s' but the file has $n whole data rows; the last line ($cut), left out, $cutShort")
     }
-    val warnings = if (cut == 0) Nil else Seq(s"line $cut, the last, $cutShort; that row was left out")
+    val warnings = (if (cut == 0) Nil else Seq(s"line $cut, the last, $cutShort; that row was left out")) ++
+      (if (firstBlank == 0) Nil else Seq(s"line $firstBlank is empty among the data rows${if (blanks > 1) s" ($blanks such lines in all)" else ""}: " +
+        "skipped, the rows around it taken as consecutive samples; if rows were lost there, the time base is off from there on"))
     def trim[A](a: Array[A], copy: (Array[A], Int) => Array[A]): Array[A] = if (a.length == n) a else copy(a, n)
     Recording(fs, adc, trim[Int](rows.sin, (a, k) => java.util.Arrays.copyOf(a, k)), trim[Int](rows.cos, (a, k) => java.util.Arrays.copyOf(a, k)), meta,
       rows.extraIdx.indices.map(e => header(rows.extraIdx(e)) -> trim[Double](rows.extra(e), (a, k) => java.util.Arrays.copyOf(a, k))).toMap, comments, warnings)
