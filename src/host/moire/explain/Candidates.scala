@@ -166,6 +166,14 @@ final class Candidates(val engine: SignalEngine) {
     * (of `idx` when given: a fold), scaled to n.
     */
   def profile(sp: ModelSpec, stride: Int, idx: Array[Int] = null): Double = Laps("profile: every sample") {
+    val (ms, mc, cnt) = profileSums(sp, stride, idx)
+    whiteM2ll(Candidates.rss(ms) / cnt, Candidates.rss(mc) / cnt)
+  }
+
+  /** The normal equations of each channel's default part (offset, the two fundamentals under `sp`) on every stride-th
+    * sample (of `idx` when given), 10 sums per channel (see `Candidates.rss`), and the count of points.
+    */
+  private def profileSums(sp: ModelSpec, stride: Int, idx: Array[Int]): (Array[Double], Array[Double], Int) = {
     val resp = new ChannelResponse(sp)
     def acc(m: Array[Double], at: Int, x1: Double, x2: Double, y: Double): Unit = {
       m(at) += 1; m(at + 1) += x1; m(at + 2) += x2; m(at + 3) += x1 * x1; m(at + 4) += x1 * x2; m(at + 5) += x2 * x2
@@ -199,8 +207,7 @@ final class Candidates(val engine: SignalEngine) {
         q += 1
       }
     }
-    val ms = sums.slice(0, 10); val mc = sums.slice(10, 20)
-    whiteM2ll(Candidates.rss(ms) / cnt, Candidates.rss(mc) / cnt)
+    (sums.slice(0, 10), sums.slice(10, 20), cnt)
   }
 
   /** The profile a search minimises: from the binned sums of all samples (of the fold `idx`); on the reference path,
@@ -278,6 +285,51 @@ final class Candidates(val engine: SignalEngine) {
     if (f1 < f2) x1 else x2
   }
 
+  /** The nonlinear parameters of `sp0` (skew, each channel's 1 / cut-off) minimised together on the profile (`searched`
+    * on every `st`-th sample). A channel's low-pass delays it as a skew does, so the two lie along one valley of the
+    * profile: the first one found takes the other's part of the delay, and a search of the other with it held there
+    * finds little (a 700 kHz low-pass on sin with cos 20 ns late: the low-pass came out at 638 kHz, the skew at 2 ns,
+    * and the amplitude left over was called a contrast along the travel). Each turn minimises every parameter over its
+    * whole range in turn, then along the turn's move (down the valley), until a turn lowers the profile by less than 0.5
+    * (at most `Candidates.MaxTurns`). Returns the spec and how much it lowered the profile.
+    */
+  def joint(sp0: ModelSpec, st: Int): (ModelSpec, Double) = {
+    val chs = sp0.bw.keys.toSeq.sorted; val sk = if (sp0.hasSkew) 1 else 0
+    val dims = sk + chs.size
+    if (dims == 0) return (sp0, 0.0)
+    def specOf(v: Array[Double]): ModelSpec = {
+      val s = if (sp0.hasSkew) sp0.copy(skewS = v(0)) else sp0
+      s.copy(bw = s.bw ++ chs.indices.map(k => chs(k) -> 1 / v(sk + k)))
+    }
+    val limit = 0.5 / (2 * math.Pi * math.max(fMax, 1))
+    val v = Array.tabulate(dims)(d => if (d < sk) sp0.skewS else 1 / sp0.bw(chs(d - sk)))
+    // each parameter's range: the skew's as its search's, a cut-off from 50 x to 0.2 x the highest fringe frequency
+    val lo = Array.tabulate(dims)(d => math.min(v(d), if (d < sk) -limit else 1 / (50 * math.max(fMax, 1))))
+    val hi = Array.tabulate(dims)(d => math.max(v(d), if (d < sk) limit else 5 / math.max(fMax, 1)))
+    def f(x: Array[Double]): Double = searched(specOf(x), st)
+    val f0 = f(v); var cur = f0
+    // v moved along direction d by t in [a, b], where that lowers the profile
+    def line(d: Array[Double], a: Double, b: Double): Unit = if (b > a) {
+      val at = (t: Double) => Array.tabulate(dims)(q => v(q) + t * d(q))
+      val best = minimize(t => f(at(t)), a, b, golden = 30); val x = at(best); val fb = f(x)
+      if (fb < cur) { System.arraycopy(x, 0, v, 0, dims); cur = fb }
+    }
+    var gain = Double.PositiveInfinity; var k = 0
+    while (k < Candidates.MaxTurns && gain > 0.5) {
+      val start = cur; val before = v.clone()
+      for (q <- 0 until dims) line(Array.tabulate(dims)(r => if (r == q) 1.0 else 0.0), lo(q) - v(q), hi(q) - v(q))
+      // down the valley: along the turn's move, as far as the ranges allow (at most 16 times the move)
+      val d = Array.tabulate(dims)(q => v(q) - before(q))
+      if (dims > 1 && d.exists(_ != 0)) {
+        val reach = (0 until dims).filter(q => d(q) != 0).map(q => if (d(q) > 0) (hi(q) - v(q)) / d(q) else (lo(q) - v(q)) / d(q)).min
+        line(d, 0, math.min(16.0, reach))
+      }
+      gain = start - cur; k += 1
+      if (SignalEngine.debug) System.err.println(f"joint: turn $k ${v.map(x => f"$x%.4g").mkString(" ")} gain $gain%.1f")
+    }
+    (specOf(v), f0 - cur)
+  }
+
   /** Standard deviation of a profile parameter from the curvature of -2 ln L (full data). */
   def curvatureSd(f: Double => Double, x: Double, h0: Double): Double = {
     var h = h0; var sd = Double.NaN
@@ -292,6 +344,7 @@ final class Candidates(val engine: SignalEngine) {
   def fullM2ll(sp: ModelSpec, white: => Double): Double = {
     // white noise, nothing censored: the streaming profile on every sample is the same fit, without arrays (`white`)
     if (!sp.slopeNoise && cens.censS == null && cens.censC == null) return white
+    if (!FitPath.isReference) return Laps("profile: full -2 ln L")(streamedM2ll(sp))
     val a1 = new Array[Double](n); val a2 = new Array[Double](n); val b1 = new Array[Double](n); val b2 = new Array[Double](n)
     fundamentals(sp, a1, a2, b1, b2)
     val cols = baseCols(a1, a2, b1, b2)
@@ -299,6 +352,29 @@ final class Candidates(val engine: SignalEngine) {
     val s = LinearFit.solve(cols, ts, tcc)
     LinearFit.addTo(ts, cols, s.beta, sinCh = true, -1.0); LinearFit.addTo(tcc, cols, s.beta, sinCh = false, -1.0) // now the residual
     Noise.fit(ts, tcc, noiseSlopes(sp), cens).m2ll
+  }
+
+  /** `fullM2ll` from the profile's sums on every sample: the same least squares, its columns made where they are read.
+    * White noise: -2 ln L from the residual's sums of squares (the censored samples' terms as the full fit's). Noise
+    * growing with a slope: the residual made (two arrays of the record's length, not the six of the columns and data:
+    * at 20 M samples those were 960 MB on top of the fit's own) and the noise model fitted to it.
+    */
+  private def streamedM2ll(sp: ModelSpec): Double = {
+    val (ms, mc, _) = profileSums(sp, 1, null)
+    if (!sp.slopeNoise) return Noise.fromSums(Candidates.rss(ms), Candidates.rss(mc), n, cens).m2ll
+    val bs = Candidates.coefficients(ms); val bc = Candidates.coefficients(mc)
+    val resp = new ChannelResponse(sp)
+    val rs = new Array[Double](n); val rc = new Array[Double](n)
+    Par.blocks(n) { (lo, hi) =>
+      val o = new Array[Double](4); val sc = new Array[Double](2); var i = lo
+      while (i < hi) {
+        Turns.sinCos(turn(i), sc, 0); resp(freq(i), sc(0), sc(1), o)
+        rs(i) = repS(i) - termS(i) - (bs(0) + bs(1) * o(0) + bs(2) * o(1))
+        rc(i) = repC(i) - termC(i) - (bc(0) + bc(1) * o(2) + bc(2) * o(3))
+        i += 1
+      }
+    }
+    Noise.fit(rs, rc, noiseSlopes(sp), cens).m2ll
   }
 
   private def stride: Int = math.max(1, n / 50000)
@@ -321,10 +397,12 @@ final class Candidates(val engine: SignalEngine) {
     val limit = 0.5 / (2 * math.Pi * math.max(fMax, 1))
     val lo = math.max(-limit, t0 - span); val hi = math.min(limit, t0 + span)
     if (!(hi > lo)) return None
-    val tau = minimize(x => searched(spec.copy(hasSkew = true, skewS = x), stride), lo, hi)
-    val sp = spec.copy(hasSkew = true, skewS = tau)
-    val full = Candidates.memo(x => profile(spec.copy(hasSkew = true, skewS = x), 1))
-    val sd = curvatureSd(if (FitPath.isReference) full else x => curved(spec.copy(hasSkew = true, skewS = x)), tau, math.max(sd0, 1e-12))
+    val tau0 = minimize(x => searched(spec.copy(hasSkew = true, skewS = x), stride), lo, hi)
+    // with a low-pass in the spec, the two share the delay (`joint`)
+    val sp = if (spec.bw.isEmpty) spec.copy(hasSkew = true, skewS = tau0) else joint(spec.copy(hasSkew = true, skewS = tau0), stride)._1
+    val tau = sp.skewS
+    val full = Candidates.memo(x => profile(sp.copy(skewS = x), 1))
+    val sd = curvatureSd(if (FitPath.isReference) full else x => curved(sp.copy(skewS = x)), tau, math.max(sd0, 1e-12))
     val (p, u, where) = (Map("skew_s" -> tau), Map("skew_s" -> sd), f"against speed: cos channel phase, ${fMin / 1e3}%.1f to ${fMax / 1e3}%.1f kHz")
     Some(Cand(ChannelSkew.name, "cos", sp, fullM2ll(sp, full(tau)), 1, p, u, where))
   }
@@ -333,13 +411,15 @@ final class Candidates(val engine: SignalEngine) {
   def bandwidth(ch: String): Option[Cand] = {
     if (spec.bw.contains(ch) || fMax <= 0 || (fMax - fMin) < 0.05 * fMax) return None
     val hiX = 5 / fMax
-    val xs = minimize(x => searched(spec.copy(bw = spec.bw + (ch -> (if (x <= 0) Double.PositiveInfinity else 1 / x))), stride), 0, hiX, grid = 16)
+    val xs0 = minimize(x => searched(spec.copy(bw = spec.bw + (ch -> (if (x <= 0) Double.PositiveInfinity else 1 / x))), stride), 0, hiX, grid = 16)
     // a cut-off far above the fringe frequencies shows only as a delay, which is a skew, not a bandwidth
-    if (xs <= 1 / (50 * fMax)) return None
-    val fc = 1 / xs
-    val sp = spec.copy(bw = spec.bw + (ch -> fc))
-    val full = Candidates.memo(x => profile(spec.copy(bw = spec.bw + (ch -> 1 / x)), 1))
-    val sdx = curvatureSd(if (FitPath.isReference) full else x => curved(spec.copy(bw = spec.bw + (ch -> 1 / x))), xs, xs * 0.05)
+    if (xs0 <= 1 / (50 * fMax)) return None
+    // with a skew or another low-pass in the spec, they share the delay (`joint`)
+    val sp0 = spec.copy(bw = spec.bw + (ch -> 1 / xs0))
+    val sp = if (!spec.hasSkew && spec.bw.isEmpty) sp0 else joint(sp0, stride)._1
+    val fc = sp.bw(ch); val xs = 1 / fc
+    val full = Candidates.memo(x => profile(sp.copy(bw = sp.bw + (ch -> 1 / x)), 1))
+    val sdx = curvatureSd(if (FitPath.isReference) full else x => curved(sp.copy(bw = sp.bw + (ch -> 1 / x))), xs, xs * 0.05)
     val (p, u, where) = (Map("cutoff_hz" -> fc), Map("cutoff_hz" -> sdx / (xs * xs)),
       s"against speed: ${if (ch == "both") "amplitude of both channels" else s"$ch channel amplitude and phase"}")
     Some(Cand(Bandwidth.name, ch, sp, fullM2ll(sp, full(xs)), 1, p, u, where))
@@ -598,9 +678,13 @@ object Candidates {
     * y, y x1, y x2, y y.
     */
   def rss(m: Array[Double]): Double = {
-    val a = Array(Array(m(0), m(1), m(2), 0, m(6)), Array(m(1), m(3), m(4), 0, m(7)), Array(m(2), m(4), m(5), 0, m(8)), Array(0.0, 0, 0, 1, 0))
-    val x = Trajectory.solve4(a)
+    val x = coefficients(m)
     math.max(1e-300, m(9) - x(0) * m(6) - x(1) * m(7) - x(2) * m(8))
+  }
+  /** The least-squares coefficients (offset, the two fundamentals) of one channel's sums `m` (see `profile`). */
+  def coefficients(m: Array[Double]): Array[Double] = {
+    val a = Array(Array(m(0), m(1), m(2), 0, m(6)), Array(m(1), m(3), m(4), 0, m(7)), Array(m(2), m(4), m(5), 0, m(8)), Array(0.0, 0, 0, 1, 0))
+    Trajectory.solve4(a)
   }
 
   /** f with its values kept (a profile on every sample is evaluated at the same point more than once). */
@@ -612,6 +696,9 @@ object Candidates {
   /** Samples above which the linear candidates are screened on a spread subsample of `ScreenSamples`, and those that
     * are significant there fitted on all samples.
     */
+  /** Turns of `joint` at most (each moves every nonlinear parameter once). */
+  val MaxTurns = 8
+
   def ScreenAbove: Int = screen.value._1
   def ScreenSamples: Int = screen.value._2
   private val screen = new scala.util.DynamicVariable((1 << 22, 1 << 20))

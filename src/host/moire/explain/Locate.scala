@@ -84,7 +84,8 @@ object Locate {
           f"amplitude ${100 * amp.head}%+.3f %% .. ${100 * amp.last}%+.3f %%, phase ${ph.head}%+.3f .. ${ph.last}%+.3f degree from $lo%.1f to $hi%.1f kHz (chi-square $z%.1f sd)",
           Map("chi2_sd" -> z, "amplitude_low_rel" -> amp.head, "amplitude_high_rel" -> amp.last, "phase_low_deg" -> ph.head, "phase_high_deg" -> ph.last), z > Z)
       }
-      // noise against speed (jitter-like)
+      // noise against speed (jitter-like), relative to the noise the model gives each sample (white, or growing with
+      // a slope once jitter or phase noise is in the spec: what it takes up is then no departure)
       val all = ss.sum / math.max(1, cnt.sum)
       val ratio = (0 until sb).map(b => ss(b) / math.max(1, cnt(b)) / all)
       val zz = (0 until sb).map(b => (ratio(b) - 1) / math.sqrt(2.0 / math.max(1, cnt(b))))
@@ -104,6 +105,8 @@ object Locate {
     // the fitted fundamentals as `SignalEngine.us` etc. make them, from locals (the stores below may not be assumed
     // to leave the engine's arrays alone: read through the engine, its coefficients were loaded again every sample)
     val bs = e.base; val (b1, b2, b4, b5) = (bs(1), bs(2), bs(4), bs(5)); val (s1, s2, c1, c2, fr) = (e.s1, e.s2, e.c1, e.c2, e.freq)
+    // the noise model's slope term: jitter against time (the slope times 2 pi f), phase noise against the fringe phase
+    val j2 = if (e.spec.slopeNoise) e.noise.jitter2 else 0.0; val byTime = e.spec.jitter
     var i = 0
     while (i < n) {
       val f = math.abs(fr(i)); var b = 0; while (b < ed.length && f > ed(b)) b += 1
@@ -111,7 +114,12 @@ object Locate {
       val us = b1 * s1(i) + b2 * s2(i); val vs = b1 * s2(i) - b2 * s1(i); val uc = b4 * c1(i) + b5 * c2(i); val vc = b4 * c2(i) - b5 * c1(i)
       puS(b) += r * us; uuS(b) += us * us; pvS(b) += r * vs; vvS(b) += vs * vs
       puC(b) += q * uc; uuC(b) += uc * uc; pvC(b) += q * vc; vvC(b) += vc * vc
-      ss(b) += r * r / vS + q * q / vC; cnt(b) += 2
+      if (j2 == 0) ss(b) += r * r / vS + q * q / vC
+      else {
+        val k = if (byTime) 2 * math.Pi * fr(i) else 1.0; val ds = vs * k; val dc = vc * k
+        ss(b) += r * r / (vS + j2 * ds * ds) + q * q / (vC + j2 * dc * dc)
+      }
+      cnt(b) += 2
       i += 1
     }
   }

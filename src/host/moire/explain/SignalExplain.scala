@@ -374,26 +374,12 @@ object SignalExplain {
     }
   }
 
-  /** Re-optimises the nonlinear parameters (skew, cut-offs) of the current spec; returns how much they lowered the
-    * profile's -2 ln L (scaled to all samples).
+  /** Re-optimises the nonlinear parameters (skew, cut-offs) of the current spec together (`Candidates.joint`); returns
+    * how much they lowered the profile's -2 ln L (scaled to all samples).
     */
   def polish(e: SignalEngine): Double = {
-    val c = new Candidates(e); val st = math.max(1, e.n / 50000)
-    var gain = 0.0
-    if (e.spec.hasSkew) {
-      val t = e.spec.skewS; val span = math.max(math.abs(t) * 0.3, 1e-10)
-      def f(x: Double) = c.searched(e.spec.copy(skewS = x), st)
-      val best = c.minimize(f, t - span, t + span)
-      gain += f(t) - f(best)
-      e.spec = e.spec.copy(skewS = best)
-    }
-    for ((ch, fc) <- e.spec.bw) {
-      val x0 = 1 / fc
-      def f(x: Double) = c.searched(e.spec.copy(bw = e.spec.bw + (ch -> 1 / x)), st)
-      val best = c.minimize(f, x0 * 0.6, x0 * 1.6)
-      gain += f(x0) - f(best)
-      e.spec = e.spec.copy(bw = e.spec.bw + (ch -> 1 / best))
-    }
+    val (sp, gain) = new Candidates(e).joint(e.spec, math.max(1, e.n / 50000))
+    e.spec = sp
     gain
   }
 

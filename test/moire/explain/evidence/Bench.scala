@@ -14,6 +14,9 @@ final case class Harmonic(order: Int, rel: Double, phaseDeg: Double = 25, channe
   * pickup lines (mains hum, a switching line), a one-pole amplifier low-pass run sample by sample, capacitive
   * crosstalk (cos += tau d sin / dt), Gaussian noise, and ADCs with their own bowed transfer curve (INL) and an
   * optional stuck data line. Amplitudes are in full-scale units (1 = half the ADC range).
+  * The low-pass acts on `cutoffChannel` (sin, cos or both); `rampFilter`: as the analog filter's exact response to an
+  * input linear between samples (the one-pole IIR lags half a sample less than the analog filter, which on one
+  * channel alone is a skew of its own). `skewS`: the cos channel sampled that much later than sin.
   */
 final case class Bench(amp: Double = 0.8, offS: Double = 0.011, offC: Double = -0.007, gainC: Double = 1.012, quadDeg: Double = 0.9,
                        noiseLsb: Double = 1.0, bits: Int = 12, harmonics: Seq[Harmonic] = Nil,
@@ -21,7 +24,8 @@ final case class Bench(amp: Double = 0.8, offS: Double = 0.011, offC: Double = -
                        warmOffsetLsb: Double = 0, warmGainRel: Double = 0, warmTauS: Double = 1,
                        jitterS: Double = 0, phaseNoiseDeg: Double = 0, phaseNoiseTauS: Double = 0,
                        lines: Seq[(Double, Double)] = Nil,
-                       cutoffHz: Double = 0, crosstalkTauS: Double = 0,
+                       cutoffHz: Double = 0, crosstalkTauS: Double = 0, cutoffChannel: String = "both", rampFilter: Boolean = false,
+                       skewS: Double = 0,
                        inlSinLsb: Double = 0, inlCosLsb: Double = 0,
                        stuck: Option[(String, Int, Int)] = None, seed: Long = 1) {
   require(jitterS == 0 || cutoffHz == 0, "jitter is modelled before the low-pass; use one or the other")
@@ -38,6 +42,11 @@ final case class Bench(amp: Double = 0.8, offS: Double = 0.011, offC: Double = -
     val cs = new Array[Int](n); val cc = new Array[Int](n)
     val quad = math.toRadians(quadDeg)
     val alpha = if (cutoffHz > 0) 1 - math.exp(-2 * math.Pi * cutoffHz / fs) else 1.0
+    // the ramp-invariant one-pole: y[i] = e y[i-1] + b0 x[i] + b1 x[i-1]
+    val wc = 2 * math.Pi * cutoffHz / fs; val e1 = math.exp(-wc)
+    val b0 = if (cutoffHz > 0) 1 - (1 - e1) / wc else 1.0; val b1 = if (cutoffHz > 0) (1 - e1) / wc - e1 else 0.0
+    val onS = cutoffChannel != "cos"; val onC = cutoffChannel != "sin"
+    var xsPrev = 0.0; var xcPrev = 0.0
     val rho = if (phaseNoiseTauS > 0) math.exp(-1 / (phaseNoiseTauS * fs)) else 0.0
     val pnStep = math.toRadians(phaseNoiseDeg) * math.sqrt(1 - rho * rho)
     var phaseNoise = math.toRadians(phaseNoiseDeg) * pn.nextGaussian()
@@ -50,20 +59,24 @@ final case class Bench(amp: Double = 0.8, offS: Double = 0.011, offC: Double = -
       val a = 2 * math.Pi * (tr.periods(i) + tr.speed(i) * dt) + phaseNoise
       val warm = 1 - math.exp(-t / warmTauS)
       val g = amp * contrast(tr.periods(i) - x0) * (1 + warmGainRel * warm)
-      var s = math.sin(a); var c = math.cos(a + quad)
+      val ac = a + 2 * math.Pi * tr.speed(i) * skewS // the cos channel sampled skewS later
+      var s = math.sin(a); var c = math.cos(ac + quad)
       for (h <- harmonics) {
         val hp = math.toRadians(h.phaseDeg)
         if (h.channel != "cos") s += h.rel * math.sin(h.order * a + hp)
-        if (h.channel != "sin") c += h.rel * math.cos(h.order * (a + quad) + hp)
+        if (h.channel != "sin") c += h.rel * math.cos(h.order * (ac + quad) + hp)
       }
       var vs = g * s; var vc = gainC * g * c
       if (crosstalkTauS > 0) vc += crosstalkTauS * g * math.cos(a) * 2 * math.Pi * tr.speed(i)
       if (alpha < 1) {
         if (i == 0) { // the filter's steady state at the first sample's frequency: no switch-on transient
           val r = tr.speed(0) / cutoffHz; val gain = 1 / math.sqrt(1 + r * r); val lag = math.atan(r)
-          ys = g * gain * math.sin(a - lag); yc = gainC * g * gain * math.cos(a + quad - lag)
-        } else { ys += alpha * (vs - ys); yc += alpha * (vc - yc) }
-        vs = ys; vc = yc
+          ys = g * gain * math.sin(a - lag); yc = gainC * g * gain * math.cos(ac + quad - lag)
+        } else if (rampFilter) { ys = e1 * ys + b0 * vs + b1 * xsPrev; yc = e1 * yc + b0 * vc + b1 * xcPrev }
+        else { ys += alpha * (vs - ys); yc += alpha * (vc - yc) }
+        xsPrev = vs; xcPrev = vc
+        if (onS) vs = ys
+        if (onC) vc = yc
       }
       var pick = warmOffsetLsb * lsb * warm
       for ((hz, l) <- lines) pick += l * lsb * math.sin(2 * math.Pi * hz * t + 0.4)

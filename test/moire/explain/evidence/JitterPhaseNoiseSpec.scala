@@ -26,6 +26,17 @@ class JitterPhaseNoiseSpec extends AnyFlatSpec with Matchers {
     }
   }
 
+  it should "report 150 ps of jitter at 10 MS/s, near the white noise: its noise departure measured against the model's noise" in {
+    // the noise against speed was measured against the white noise alone, so a jitter in the model could not lower it
+    // and a true jitter was refused ("does not lower the located departure it claims")
+    val r = explain("jitter 150 ps, 10 MS/s, ramp 20-250 kHz", Interferometer.text(Motions.chirp(150000, 10e6, 20e3, 250e3), 10e6,
+      Bench(jitterS = 150e-12, noiseLsb = 1.0, seed = 87)))
+    withClue(line(r)) {
+      effects(r) shouldBe Seq("jitter")
+      r.findings.head.params("jitter_s") shouldBe 150e-12 +- 30e-12
+    }
+  }
+
   it should "not call phase noise of the motion jitter" in {
     withClue(line(vibration)) { effects(vibration) should not contain "jitter" }
   }
