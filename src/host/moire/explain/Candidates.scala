@@ -286,12 +286,14 @@ final class Candidates(val engine: SignalEngine) {
   }
 
   /** The nonlinear parameters of `sp0` (skew, each channel's 1 / cut-off) minimised together on the profile (`searched`
-    * on every `st`-th sample). A channel's low-pass delays it as a skew does, so the two lie along one valley of the
-    * profile: the first one found takes the other's part of the delay, and a search of the other with it held there
-    * finds little (a 700 kHz low-pass on sin with cos 20 ns late: the low-pass came out at 638 kHz, the skew at 2 ns,
-    * and the amplitude left over was called a contrast along the travel). Each turn minimises every parameter over its
-    * whole range in turn, then along the turn's move (down the valley), until a turn lowers the profile by less than 0.5
-    * (at most `Candidates.MaxTurns`). Returns the spec and how much it lowered the profile.
+    * on every `st`-th sample). A channel's low-pass delays it as a skew does, and two channels' low-passes share a
+    * delay the phase trajectory takes up: the parameters lie along valleys of the profile. One at a time, the first
+    * one found took the other's part of the delay, and a search of the other with it held there found little (a
+    * 700 kHz low-pass on sin with cos 20 ns late: 638 kHz, 2 ns and a contrast along the travel for what was left).
+    * Powell's method: each turn minimises along every direction of a set (at first each parameter's own) over the
+    * whole range, then along the turn's move, which replaces the direction that gained most (the set comes to follow
+    * the valleys); until a turn lowers the profile by less than 0.5 (at most `Candidates.MaxTurns`). Returns the spec
+    * and how much it lowered the profile.
     */
   def joint(sp0: ModelSpec, st: Int): (ModelSpec, Double) = {
     val chs = sp0.bw.keys.toSeq.sorted; val sk = if (sp0.hasSkew) 1 else 0
@@ -308,21 +310,29 @@ final class Candidates(val engine: SignalEngine) {
     val hi = Array.tabulate(dims)(d => math.max(v(d), if (d < sk) limit else 5 / math.max(fMax, 1)))
     def f(x: Array[Double]): Double = searched(specOf(x), st)
     val f0 = f(v); var cur = f0
-    // v moved along direction d by t in [a, b], where that lowers the profile
-    def line(d: Array[Double], a: Double, b: Double): Unit = if (b > a) {
-      val at = (t: Double) => Array.tabulate(dims)(q => v(q) + t * d(q))
+    // v moved along direction d to the profile's minimum within the ranges, where that lowers it; the gain
+    def line(d: Array[Double]): Double = {
+      var a = Double.NegativeInfinity; var b = Double.PositiveInfinity; var q = 0
+      while (q < dims) {
+        if (d(q) != 0) { val t1 = (lo(q) - v(q)) / d(q); val t2 = (hi(q) - v(q)) / d(q); a = math.max(a, math.min(t1, t2)); b = math.min(b, math.max(t1, t2)) }
+        q += 1
+      }
+      if (!(b > a)) return 0.0
+      val at = (t: Double) => Array.tabulate(dims)(r => math.min(hi(r), math.max(lo(r), v(r) + t * d(r))))
       val best = minimize(t => f(at(t)), a, b, golden = 30); val x = at(best); val fb = f(x)
-      if (fb < cur) { System.arraycopy(x, 0, v, 0, dims); cur = fb }
+      if (fb < cur) { val g = cur - fb; System.arraycopy(x, 0, v, 0, dims); cur = fb; g } else 0.0
     }
+    val dirs = Array.tabulate(dims, dims)((p, q) => if (p == q) 1.0 else 0.0)
     var gain = Double.PositiveInfinity; var k = 0
     while (k < Candidates.MaxTurns && gain > 0.5) {
       val start = cur; val before = v.clone()
-      for (q <- 0 until dims) line(Array.tabulate(dims)(r => if (r == q) 1.0 else 0.0), lo(q) - v(q), hi(q) - v(q))
-      // down the valley: along the turn's move, as far as the ranges allow (at most 16 times the move)
+      var most = 0; var mostGain = -1.0
+      for (p <- 0 until dims) { val g = line(dirs(p)); if (g > mostGain) { mostGain = g; most = p } }
       val d = Array.tabulate(dims)(q => v(q) - before(q))
       if (dims > 1 && d.exists(_ != 0)) {
-        val reach = (0 until dims).filter(q => d(q) != 0).map(q => if (d(q) > 0) (hi(q) - v(q)) / d(q) else (lo(q) - v(q)) / d(q)).min
-        line(d, 0, math.min(16.0, reach))
+        line(d)
+        // the move replaces the direction that gained most (Powell's rule: the set stays spanning)
+        dirs(most) = dirs(dims - 1); dirs(dims - 1) = d
       }
       gain = start - cur; k += 1
       if (SignalEngine.debug) System.err.println(f"joint: turn $k ${v.map(x => f"$x%.4g").mkString(" ")} gain $gain%.1f")
@@ -696,8 +706,8 @@ object Candidates {
   /** Samples above which the linear candidates are screened on a spread subsample of `ScreenSamples`, and those that
     * are significant there fitted on all samples.
     */
-  /** Turns of `joint` at most (each moves every nonlinear parameter once). */
-  val MaxTurns = 8
+  /** Turns of `joint` at most (each a line search along every direction of its set and one along the turn's move). */
+  val MaxTurns = 12
 
   def ScreenAbove: Int = screen.value._1
   def ScreenSamples: Int = screen.value._2
