@@ -37,4 +37,14 @@ class ContaminationSpec extends AnyFlatSpec with Matchers {
       r.unexplained shouldBe empty
     }
   }
+  "explain" should "name a read-head low-pass as a look-alike of a contrast change where the speed follows the position, and not where it does not" in {
+    // a low-pass's amplitude falls with speed: on a ramp of speed it looks like a contrast changing along the travel
+    val tr = Motions.formula(20000, fs)(t => 300 * t + 400 * t * t, t => 300 + 800 * t)
+    val b = Bench(contrast = LinearStage.band(20, 4000, 5000, 0.08), noiseLsb = 1.0, seed = 44)
+    val ramp = explain("contamination 8 % at 4.0 mm, speed growing with the position", LinearStage.text(LinearStage.Spec(tr, fs, b)))
+    def speedAlike(r: moire.explain.Report) =
+      r.findings.filter(_.effect == "contrast_along_travel").flatMap(_.lookAlikes).exists(_.startsWith("bandwidth predicts"))
+    withClue(line(ramp)) { effects(ramp) should contain("contrast_along_travel"); speedAlike(ramp) shouldBe true }
+    for ((_, r) <- runs) withClue(line(r)) { speedAlike(r) shouldBe false }
+  }
 }

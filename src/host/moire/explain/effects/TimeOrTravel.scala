@@ -16,4 +16,21 @@ object TimeOrTravel {
     else Seq(f"$other predicts nearly the same signal here: position along the travel and time correlate (r = $r%.3f); " +
       "a scan back over the same travel, or a wait at one position, separates a change in time from one along the travel")
   }
+
+  /** Speed follows the position in a ramp: the amplitude's fall with speed of a read-head low-pass then looks like a
+    * contrast changing along the travel (a 700 kHz low-pass on sin was called one while its cut-off was off). Named
+    * where |r| of position and speed is `Correlated` or more.
+    */
+  def speedLookAlike(e: SignalEngine): Seq[String] = {
+    val m = e.travelMean; val n = e.n
+    var sf = 0.0; var i = 0
+    while (i < n) { sf += math.abs(e.freq(i)); i += 1 }
+    val mf = sf / math.max(1, n)
+    var sxy = 0.0; var sxx = 0.0; var syy = 0.0; i = 0
+    while (i < n) { val x = e.phase(i) - m; val y = math.abs(e.freq(i)) - mf; sxy += x * y; sxx += x * x; syy += y * y; i += 1 }
+    val r = if (sxx > 0 && syy > 0) sxy / math.sqrt(sxx * syy) else 0.0
+    if (math.abs(r) < Correlated) Nil
+    else Seq(f"${Bandwidth.name} predicts a similar change of the amplitudes here: a read-head low-pass lowers them with speed, and " +
+      f"position along the travel and speed correlate (r = $r%.3f); a scan over the same travel at another speed separates them")
+  }
 }
