@@ -61,6 +61,8 @@ class DriftSpec extends AnyFlatSpec with Matchers {
     println(f"drift on a ramp: ${f.params("offset_sin_per_s")}%.5f +- ${f.unc("offset_sin_per_s")}%.1e full scale per second (true 0.1)")
     f.params("offset_sin_per_s") shouldBe 0.1 +- 3 * f.unc("offset_sin_per_s")
     f.lookAlikes.exists(_.startsWith("contrast_along_travel")) shouldBe true
+    // time and speed go together on the ramp, but an offset drift changes no amplitude: no low-pass is like it
+    f.lookAlikes.exists(_.startsWith("bandwidth")) shouldBe false
   }
 
   it should "call a contrast change along a one-way scan neither drift nor warm-up, and rank three sizes in order" in {

@@ -215,7 +215,7 @@ object ContrastAlongTravel extends Effect {
       (names.zip(b).toMap + ("travel_periods" -> span), names.zip(sd).toMap + ("travel_periods" -> 0.0), "against position: offset and amplitude", "both")
   }
   override def lookAlikes(f: Finding, e: SignalEngine): Seq[String] =
-    TimeOrTravel.lookAlikes(e, Warmup.name + " or " + Drift.name) ++ TimeOrTravel.speedLookAlike(e)
+    TimeOrTravel.lookAlikes(e, Warmup.name + " or " + Drift.name) ++ TimeOrTravel.speedLookAlike(e, alongTravel = true)
 
   override def forward(specs: Seq[EffectSpec], m: PhysicsModel, p: moire.signal.SignalParams): Forward = new Forward {
     private def d(k: String) = specs.map(_.p(k, 0.0)).sum

@@ -21,7 +21,8 @@ object Drift extends Effect {
     val names = params.map(_.name)
     (names.zip(b).toMap, names.zip(sd).toMap, "against time: offset and amplitude", "both")
   }
-  override def lookAlikes(f: Finding, e: SignalEngine): Seq[String] = TimeOrTravel.lookAlikes(e, ContrastAlongTravel.name)
+  override def lookAlikes(f: Finding, e: SignalEngine): Seq[String] = TimeOrTravel.lookAlikes(e, ContrastAlongTravel.name) ++
+    (if (TimeOrTravel.changesGain(f, Seq("gain_sin_per_s", "gain_cos_per_s"))) TimeOrTravel.speedLookAlike(e, alongTravel = false) else Nil)
 
   override def forward(specs: Seq[EffectSpec], m: PhysicsModel, p: moire.signal.SignalParams): Forward = new Forward {
     private def d(k: String) = specs.map(_.p(k, 0.0)).sum

@@ -17,20 +17,27 @@ object TimeOrTravel {
       "a scan back over the same travel, or a wait at one position, separates a change in time from one along the travel")
   }
 
-  /** Speed follows the position in a ramp: the amplitude's fall with speed of a read-head low-pass then looks like a
-    * contrast changing along the travel (a 700 kHz low-pass on sin was called one while its cut-off was off). Named
-    * where |r| of position and speed is `Correlated` or more.
+  /** Speed follows the position (or the time) in a ramp: the amplitude's fall with speed of a read-head low-pass then
+    * looks like a contrast changing along the travel, or an amplitude drifting in time (a 700 kHz low-pass on sin was
+    * called a contrast while its cut-off was off). Named where |r| of the axis and the speed is `Correlated` or more.
     */
-  def speedLookAlike(e: SignalEngine): Seq[String] = {
-    val m = e.travelMean; val n = e.n
+  def speedLookAlike(e: SignalEngine, alongTravel: Boolean): Seq[String] = {
+    val m = e.travelMean; val n = e.n; val mid = 0.5 * (n - 1)
+    @inline def axis(i: Int): Double = if (alongTravel) e.phase(i) - m else (i - mid) / e.fs
     var sf = 0.0; var i = 0
     while (i < n) { sf += math.abs(e.freq(i)); i += 1 }
     val mf = sf / math.max(1, n)
     var sxy = 0.0; var sxx = 0.0; var syy = 0.0; i = 0
-    while (i < n) { val x = e.phase(i) - m; val y = math.abs(e.freq(i)) - mf; sxy += x * y; sxx += x * x; syy += y * y; i += 1 }
+    while (i < n) { val x = axis(i); val y = math.abs(e.freq(i)) - mf; sxy += x * y; sxx += x * x; syy += y * y; i += 1 }
     val r = if (sxx > 0 && syy > 0) sxy / math.sqrt(sxx * syy) else 0.0
+    val (what, scan) = if (alongTravel) ("position along the travel", "a scan over the same travel at another speed")
+      else ("time", "a record at one speed, or with the speed going down and up again,")
     if (math.abs(r) < Correlated) Nil
     else Seq(f"${Bandwidth.name} predicts a similar change of the amplitudes here: a read-head low-pass lowers them with speed, and " +
-      f"position along the travel and speed correlate (r = $r%.3f); a scan over the same travel at another speed separates them")
+      f"$what and speed correlate (r = $r%.3f); $scan separates them")
   }
+
+  /** Whether a finding changes an amplitude: one of its `gains` parameters beyond 3 of its sd. */
+  def changesGain(f: Finding, gains: Seq[String]): Boolean =
+    gains.exists(g => f.params.get(g).exists(v => math.abs(v) > 3 * f.unc.getOrElse(g, 0.0) && v != 0))
 }

@@ -30,7 +30,8 @@ object Warmup extends Effect {
           "time_constant_s" -> Double.NaN), f"against time: offset and amplitude settling with a time constant of ${tau}%.3g s", "both")
     case _ => super.describe(t, b, sd, e)
   }
-  override def lookAlikes(f: Finding, e: SignalEngine): Seq[String] = TimeOrTravel.lookAlikes(e, ContrastAlongTravel.name)
+  override def lookAlikes(f: Finding, e: SignalEngine): Seq[String] = TimeOrTravel.lookAlikes(e, ContrastAlongTravel.name) ++
+    (if (TimeOrTravel.changesGain(f, Seq("gain_sin_step_rel", "gain_cos_step_rel"))) TimeOrTravel.speedLookAlike(e, alongTravel = false) else Nil)
 
   override def forward(specs: Seq[EffectSpec], m: PhysicsModel, p: moire.signal.SignalParams): Forward = new Forward {
     private def d(k: String) = specs.map(_.p(k, 0.0)).sum
