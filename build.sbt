@@ -5,6 +5,8 @@ ThisBuild / version := "0.1.0"
 ThisBuild / organization := "io.github.moire"
 
 val chiselVersion = "6.7.0"
+/** The staged launcher's and `./sbt run`'s heap; JAVA_OPTS=-Xmx... replaces it for the launcher (src/cli/heap.sh). */
+val defaultHeap = "-Xmx4g"
 // chiseltest 6.0.0 asks for chisel 6.1.0, which is not on Maven Central: everyone gets 6.7.0.
 ThisBuild / dependencyOverrides += "org.chipsalliance" %% "chisel" % chiselVersion
 
@@ -109,7 +111,7 @@ lazy val root = (project in file("."))
     Compile / run / mainClass := Some("moire.cli.SbtRun"),
     run / fork := true,
     run / outputStrategy := Some(StdoutOutput),
-    run / javaOptions ++= Seq("-Xss8m", "-Xmx4g", "-Dfile.encoding=UTF-8"),
+    run / javaOptions ++= Seq("-Xss8m", defaultHeap, "-Dfile.encoding=UTF-8"),
     Test / fork := true,
     Test / javaOptions ++= Seq("-Xss8m", "-Xmx6g"),
     Test / testOptions += Tests.Argument(TestFrameworks.ScalaTest, "-oD"),
@@ -142,6 +144,8 @@ lazy val root = (project in file("."))
     // a CDS archive (lib/moire.jsa, written by `stage`); `--help` stops at the first JIT tier.
     bashScriptExtraDefines ++= Seq(
       IO.read(baseDirectory.value / "src" / "cli" / "utf8-locale.sh"),
+      // JAVA_OPTS=-Xmx8g is honoured (the default heap from application.ini would come after it and win)
+      s"_moire_default_heap=$defaultHeap", IO.read(baseDirectory.value / "src" / "cli" / "heap.sh"),
       // -h is moire's, not the launcher script's (whose usage text would exit 1)
       """_moire_args=(); for a in "$@"; do [[ "$a" == "-h" ]] && a=--help; _moire_args+=("$a"); done; set -- "${_moire_args[@]}"""",
       "no_version_check=1",

@@ -175,6 +175,15 @@ class BadInputSpec extends AnyFlatSpec with Matchers {
     val (c2, e2) = runCli("explain", good.toString, "--quiet", "--no-rtl", "--model", m)
     withClue(e2) { c2 shouldBe 0 }
   }
+  "explain" should "say in one line that a recording does not fit the heap, with options that give more" in {
+    val big = dir / "big.csv"
+    runCli("simulate", "--out", big.toString, "--samples", "600000")._1 shouldBe 0
+    val (code, _, err) = CliProcess.runWith(Seq("-Xmx40m"))("explain", big.toString, "--quiet", "--no-rtl")
+    withClue(err) {
+      code shouldBe 2
+      err.trim shouldBe "moire: out of memory in a heap of 40 MB; give the JVM more (JAVA_OPTS=-Xmx8g moire ..., or moire -J-Xmx8g ...) or a shorter recording"
+    }
+  }
   bad("a --model that is not JSON", "not valid JSON", Seq(existing))(sim("--model", rec("nj.json", "not json")): _*)
 
   behavior of "calibrate"

@@ -380,7 +380,8 @@ object Main {
         System.err.println(s"moire: ${plain(Option(e.getMessage).getOrElse("invalid value").stripPrefix("requirement failed: "))}"); 2
       case e: OutOfMemoryError =>
         if (sys.env.contains("MOIRE_DEBUG")) e.printStackTrace()
-        System.err.println("moire: out of memory; give the JVM more (e.g. JAVA_OPTS=-Xmx8g) or a shorter recording"); 2
+        System.err.println(s"moire: out of memory in a heap of ${Runtime.getRuntime.maxMemory / 1048576} MB; give the JVM more " +
+          "(JAVA_OPTS=-Xmx8g moire ..., or moire -J-Xmx8g ...) or a shorter recording"); 2
       case e: Exception =>
         if (sys.env.contains("MOIRE_DEBUG")) e.printStackTrace()
         System.err.println(s"moire: internal error: ${plain(Option(e.getMessage).getOrElse("no message"))} (MOIRE_DEBUG=1 shows where)"); 2

@@ -1,0 +1,31 @@
+package moire.cli
+
+import org.scalatest.flatspec.AnyFlatSpec
+import org.scalatest.matchers.should.Matchers
+
+/** The launcher's heap lines (src/cli/heap.sh): java's last -Xmx wins, JAVA_OPTS comes first on the launcher's command
+  * line and application.ini's default after it, so JAVA_OPTS=-Xmx8g was ignored (the out-of-memory message advised it).
+  * The java options are put together as the launcher does and given to this java, which says the heap it took.
+  */
+class HeapSpec extends AnyFlatSpec with Matchers {
+  private val javaBin = new java.io.File(System.getProperty("java.home"), "bin/java").getPath
+  private val script = os.pwd / "src" / "cli" / "heap.sh"
+
+  /** The MB of heap java takes with JAVA_OPTS `opts` and the -J options `dashJ` given after the default. */
+  private def heapMb(opts: String, dashJ: String*): Long = {
+    val cmd = """java_args=(); addJava () { java_args+=( "$1" ); }; _moire_default_heap=-Xmx4g; . "$1"; shift
+                |addJava -Xss8m; addJava -Xmx4g; for a in "$@"; do addJava "$a"; done
+                |exec "$JAVA_BIN" ${JAVA_OPTS} "${java_args[@]}" -XX:+PrintFlagsFinal -version""".stripMargin
+    val r = os.proc(Seq("bash", "-c", cmd, "bash", script.toString) ++ dashJ).call(check = false, env = Map("JAVA_OPTS" -> opts, "JAVA_BIN" -> javaBin))
+    r.exitCode shouldBe 0
+    r.out.lines().find(_.contains(" MaxHeapSize ")).get.trim.split("\\s+")(3).toLong / 1048576
+  }
+
+  "the launcher" should "take the heap from JAVA_OPTS over its default, and a -J-Xmx over both" in {
+    heapMb("") shouldBe 4096
+    heapMb("-Xmx1g") shouldBe 1024
+    heapMb("-Dx=1 -Xmx1536m -Xss8m") shouldBe 1536
+    heapMb("-Xmx1g", "-Xmx768m") shouldBe 768
+    heapMb("-Dx=1", "-Xmx768m") shouldBe 768
+  }
+}
