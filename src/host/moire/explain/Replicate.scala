@@ -246,7 +246,7 @@ object Replicate {
       out.result()
     }
     agree(halves.map(est), what, name).orElse(agree(bands.map(est), "speed bands", name))
-      .orElse(quantizationJitter(e, ds, dc))
+      .orElse(quantizationJitter(e, ds, dc)).orElse(PhaseWhiteness.why(e))
   }
 
   /** Slope-dependent noise that quantization alone could make (its error variance depends on the signal value when the

@@ -20,6 +20,8 @@ object Crosstalk extends Effect {
     (Map("sin_from_cos_tau_s" -> b(0), "cos_from_sin_tau_s" -> b(1)), Map("sin_from_cos_tau_s" -> sd(0), "cos_from_sin_tau_s" -> sd(1)),
       "against speed: amplitude of each channel", "both")
 
+  override def lookAlikes(f: Finding, e: SignalEngine): Seq[String] = TimeOrTravel.changeLookAlikes(e)
+
   override def forward(specs: Seq[EffectSpec], m: PhysicsModel, p: moire.signal.SignalParams): Forward = new Forward {
     private val tauSC = specs.map(_.p("sin_from_cos_tau_s", 0.0)).sum; private val tauCS = specs.map(_.p("cos_from_sin_tau_s", 0.0)).sum
     private val eps = 1e-6

@@ -17,11 +17,34 @@ object TimeOrTravel {
       "a scan back over the same travel, or a wait at one position, separates a change in time from one along the travel")
   }
 
-  /** Speed follows the position (or the time) in a ramp: the amplitude's fall with speed of a read-head low-pass then
-    * looks like a contrast changing along the travel, or an amplitude drifting in time (a 700 kHz low-pass on sin was
-    * called a contrast while its cut-off was off). Named where |r| of the axis and the speed is `Correlated` or more.
+  /** Speed follows the position (or the time) in a ramp: the amplitudes' change with speed of a read-head low-pass or
+    * of crosstalk then looks like a contrast changing along the travel, or an amplitude drifting in time (a 700 kHz
+    * low-pass on sin was called a contrast while its cut-off was off). Named where |r| of the axis and the speed is
+    * `Correlated` or more.
     */
-  def speedLookAlike(e: SignalEngine, alongTravel: Boolean): Seq[String] = {
+  def speedLookAlike(e: SignalEngine, alongTravel: Boolean): Seq[String] =
+    correlated(e, alongTravel, s"${Bandwidth.name} predicts a similar change of the amplitudes here: a read-head low-pass lowers them with speed") ++
+      correlated(e, alongTravel, s"${Crosstalk.name} predicts a similar change of the amplitudes here: it changes each in proportion to the speed")
+
+  /** Crosstalk's amplitudes change with speed: on a ramp, as a drift's in time or a contrast's along the travel do
+    * (a gain drift on a chirp came out as crosstalk of -144 and +147 ns, with no drift).
+    */
+  def changeLookAlikes(e: SignalEngine): Seq[String] =
+    correlated(e, alongTravel = false, s"${Drift.name} predicts a similar change of the amplitudes here: they change in time") ++
+      correlated(e, alongTravel = true, s"${ContrastAlongTravel.name} predicts a similar change of the amplitudes here: the contrast changes along the travel")
+
+  /** `head`, then the correlation of the axis with the speed and the measurement that separates them; nothing where
+    * |r| is below `Correlated`.
+    */
+  private def correlated(e: SignalEngine, alongTravel: Boolean, head: String): Seq[String] = {
+    val r = speedCorrelation(e, alongTravel)
+    val (what, scan) = if (alongTravel) ("position along the travel", "a scan over the same travel at another speed")
+      else ("time", "a record at one speed, or with the speed going down and up again,")
+    if (math.abs(r) < Correlated) Nil else Seq(f"$head, and $what and speed correlate (r = $r%.3f); $scan separates them")
+  }
+
+  /** The correlation of the speed (the fringe frequency's size) with the position along the travel or with time. */
+  def speedCorrelation(e: SignalEngine, alongTravel: Boolean): Double = {
     val m = e.travelMean; val n = e.n; val mid = 0.5 * (n - 1)
     @inline def axis(i: Int): Double = if (alongTravel) e.phase(i) - m else (i - mid) / e.fs
     var sf = 0.0; var i = 0
@@ -29,12 +52,7 @@ object TimeOrTravel {
     val mf = sf / math.max(1, n)
     var sxy = 0.0; var sxx = 0.0; var syy = 0.0; i = 0
     while (i < n) { val x = axis(i); val y = math.abs(e.freq(i)) - mf; sxy += x * y; sxx += x * x; syy += y * y; i += 1 }
-    val r = if (sxx > 0 && syy > 0) sxy / math.sqrt(sxx * syy) else 0.0
-    val (what, scan) = if (alongTravel) ("position along the travel", "a scan over the same travel at another speed")
-      else ("time", "a record at one speed, or with the speed going down and up again,")
-    if (math.abs(r) < Correlated) Nil
-    else Seq(f"${Bandwidth.name} predicts a similar change of the amplitudes here: a read-head low-pass lowers them with speed, and " +
-      f"$what and speed correlate (r = $r%.3f); $scan separates them")
+    if (sxx > 0 && syy > 0) sxy / math.sqrt(sxx * syy) else 0.0
   }
 
   /** Whether a finding changes an amplitude: one of its `gains` parameters beyond 3 of its sd. */
