@@ -42,11 +42,12 @@ object Replicate {
         else if (sp.hasSkew && !prev.hasSkew) {
           val (f, w) = parts(effects.ChannelSkew)
           agree(profileFolds(e, cands, f, sp.skewS, x => sp.copy(skewS = x), math.max(math.abs(sp.skewS), 1e-10)), w, "skew")
-        } else sp.bw.find { case (ch, _) => !prev.bw.contains(ch) } match {
-          case Some((ch, fc)) =>
-            val (f, w) = parts(effects.Bandwidth)
-            agree(profileFolds(e, cands, f, 1 / fc, x => sp.copy(bw = sp.bw + (ch -> 1 / x)), 1 / fc), w, "1 / cut-off")
-          case None => None
+        } else {
+          // each new cut-off (both channels' when one of both was taken apart)
+          val (f, w) = parts(effects.Bandwidth)
+          sp.bw.filter { case (ch, _) => !prev.bw.contains(ch) }.toSeq.sortBy(_._1).iterator.map { case (ch, fc) =>
+            agree(profileFolds(e, cands, f, 1 / fc, x => sp.copy(bw = sp.bw + (ch -> 1 / x)), 1 / fc), w, s"1 / cut-off ($ch)")
+          }.collectFirst { case Some(why) => why }
         }
     }
   }

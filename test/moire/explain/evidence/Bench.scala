@@ -14,7 +14,8 @@ final case class Harmonic(order: Int, rel: Double, phaseDeg: Double = 25, channe
   * pickup lines (mains hum, a switching line), a one-pole amplifier low-pass run sample by sample, capacitive
   * crosstalk (cos += tau d sin / dt), Gaussian noise, and ADCs with their own bowed transfer curve (INL) and an
   * optional stuck data line. Amplitudes are in full-scale units (1 = half the ADC range).
-  * The low-pass acts on `cutoffChannel` (sin, cos or both); `rampFilter`: as the analog filter's exact response to an
+  * The low-pass acts on `cutoffChannel` (sin, cos or both); `cosCutoffHz`, when set, is the cos channel's own (each
+  * channel's amplifier with its own cut-off); `rampFilter`: as the analog filter's exact response to an
   * input linear between samples (the one-pole IIR lags half a sample less than the analog filter, which on one
   * channel alone is a skew of its own). `skewS`: the cos channel sampled that much later than sin.
   */
@@ -25,6 +26,7 @@ final case class Bench(amp: Double = 0.8, offS: Double = 0.011, offC: Double = -
                        jitterS: Double = 0, phaseNoiseDeg: Double = 0, phaseNoiseTauS: Double = 0,
                        lines: Seq[(Double, Double)] = Nil,
                        cutoffHz: Double = 0, crosstalkTauS: Double = 0, cutoffChannel: String = "both", rampFilter: Boolean = false,
+                       cosCutoffHz: Double = 0,
                        skewS: Double = 0,
                        inlSinLsb: Double = 0, inlCosLsb: Double = 0,
                        stuck: Option[(String, Int, Int)] = None, seed: Long = 1) {
@@ -41,11 +43,21 @@ final case class Bench(amp: Double = 0.8, offS: Double = 0.011, offC: Double = -
     val n = tr.n
     val cs = new Array[Int](n); val cc = new Array[Int](n)
     val quad = math.toRadians(quadDeg)
-    val alpha = if (cutoffHz > 0) 1 - math.exp(-2 * math.Pi * cutoffHz / fs) else 1.0
-    // the ramp-invariant one-pole: y[i] = e y[i-1] + b0 x[i] + b1 x[i-1]
-    val wc = 2 * math.Pi * cutoffHz / fs; val e1 = math.exp(-wc)
-    val b0 = if (cutoffHz > 0) 1 - (1 - e1) / wc else 1.0; val b1 = if (cutoffHz > 0) (1 - e1) / wc - e1 else 0.0
-    val onS = cutoffChannel != "cos"; val onC = cutoffChannel != "sin"
+    // each channel's cut-off (0: none) and its one-pole: y += alpha (x - y), or the ramp-invariant
+    // y[i] = e y[i-1] + b0 x[i] + b1 x[i-1]
+    val fcS = if (cutoffChannel != "cos") cutoffHz else 0.0
+    val fcC = if (cosCutoffHz > 0) cosCutoffHz else if (cutoffChannel != "sin") cutoffHz else 0.0
+    final case class Pole(fc: Double) {
+      val on: Boolean = fc > 0
+      val alpha: Double = if (on) 1 - math.exp(-2 * math.Pi * fc / fs) else 1.0
+      private val wc = 2 * math.Pi * fc / fs
+      val e1: Double = math.exp(-wc)
+      val b0: Double = if (on) 1 - (1 - e1) / wc else 1.0; val b1: Double = if (on) (1 - e1) / wc - e1 else 0.0
+      def next(y: Double, x: Double, xPrev: Double): Double = if (rampFilter) e1 * y + b0 * x + b1 * xPrev else y + alpha * (x - y)
+      /** The steady state's gain and lag at fringe frequency f. */
+      def at(f: Double): (Double, Double) = { val r = f / fc; (1 / math.sqrt(1 + r * r), math.atan(r)) }
+    }
+    val pS = Pole(fcS); val pC = Pole(fcC)
     var xsPrev = 0.0; var xcPrev = 0.0
     val rho = if (phaseNoiseTauS > 0) math.exp(-1 / (phaseNoiseTauS * fs)) else 0.0
     val pnStep = math.toRadians(phaseNoiseDeg) * math.sqrt(1 - rho * rho)
@@ -68,15 +80,14 @@ final case class Bench(amp: Double = 0.8, offS: Double = 0.011, offC: Double = -
       }
       var vs = g * s; var vc = gainC * g * c
       if (crosstalkTauS > 0) vc += crosstalkTauS * g * math.cos(a) * 2 * math.Pi * tr.speed(i)
-      if (alpha < 1) {
-        if (i == 0) { // the filter's steady state at the first sample's frequency: no switch-on transient
-          val r = tr.speed(0) / cutoffHz; val gain = 1 / math.sqrt(1 + r * r); val lag = math.atan(r)
-          ys = g * gain * math.sin(a - lag); yc = gainC * g * gain * math.cos(ac + quad - lag)
-        } else if (rampFilter) { ys = e1 * ys + b0 * vs + b1 * xsPrev; yc = e1 * yc + b0 * vc + b1 * xcPrev }
-        else { ys += alpha * (vs - ys); yc += alpha * (vc - yc) }
+      if (pS.on || pC.on) {
+        if (i == 0) { // the filters' steady state at the first sample's frequency: no switch-on transient
+          if (pS.on) { val (gain, lag) = pS.at(tr.speed(0)); ys = g * gain * math.sin(a - lag) }
+          if (pC.on) { val (gain, lag) = pC.at(tr.speed(0)); yc = gainC * g * gain * math.cos(ac + quad - lag) }
+        } else { ys = pS.next(ys, vs, xsPrev); yc = pC.next(yc, vc, xcPrev) }
         xsPrev = vs; xcPrev = vc
-        if (onS) vs = ys
-        if (onC) vc = yc
+        if (pS.on) vs = ys
+        if (pC.on) vc = yc
       }
       var pick = warmOffsetLsb * lsb * warm
       for ((hz, l) <- lines) pick += l * lsb * math.sin(2 * math.Pi * hz * t + 0.4)

@@ -18,8 +18,13 @@ object Bandwidth extends Effect {
     if (!(e.p("cutoff_hz") > 0)) throw new ExplainError("bandwidth needs cutoff_hz > 0")
   override def backward(sp: ModelSpec, e: EffectSpec): ModelSpec = sp.copy(bw = sp.bw + (e.channel -> e.p("cutoff_hz", 1e6)))
   override def searches(c: Candidates): Seq[() => Seq[Cand]] = Seq("both", "sin", "cos").map(ch => () => c.bandwidth(ch).toSeq)
-  override def refresh(f: Finding, e: SignalEngine): Finding =
-    f.copy(params = f.params + ("cutoff_hz" -> e.spec.bw.getOrElse(f.channel, f.params("cutoff_hz"))))
+  /** A low-pass of both channels that a later finding took apart into one on each is the sin channel's (the later
+    * one is the cos channel's, `Candidates.splitBandwidth`).
+    */
+  override def refresh(f: Finding, e: SignalEngine): Finding = {
+    val g = if (f.channel == "both" && !e.spec.bw.contains("both") && e.spec.bw.contains("sin")) f.copy(channel = "sin") else f
+    g.copy(params = g.params + ("cutoff_hz" -> e.spec.bw.getOrElse(g.channel, g.params("cutoff_hz"))))
+  }
 
   override def forward(specs: Seq[EffectSpec], m: PhysicsModel, p: moire.signal.SignalParams): Forward = new Forward {
     private val sin = Forward.on(specs, isSin = true).map(_.p("cutoff_hz")); private val cos = Forward.on(specs, isSin = false).map(_.p("cutoff_hz"))
