@@ -429,7 +429,7 @@ final class Candidates(val engine: SignalEngine) {
     * drift do (sin 750 kHz, cos 600 kHz: crosstalk 454,000 against 395,000 of BIC), and that was found instead. It
     * is still the common low-pass that is fitted and judged; the next round takes it apart (`splitBandwidth`).
     */
-  private def rankedAsEach(c: Cand): Cand = if (spec.bw.nonEmpty) c else {
+  private def rankedAsEach(c: Cand): Cand = if (spec.bw.nonEmpty || !apart(c.spec)) c else {
     val fb = c.spec.bw("both")
     val sp = joint(spec.copy(bw = Map("sin" -> fb, "cos" -> fb)), stride)._1
     val m2ll = fullM2ll(sp, profile(sp, 1))
@@ -450,7 +450,7 @@ final class Candidates(val engine: SignalEngine) {
     * `Bandwidth.refresh`); it is tried beside the one in series, and the better fit is the channel's candidate.
     */
   private def splitBandwidth(ch: String): Option[Cand] = {
-    if (ch != "cos" || spec.bw.keySet != Set("both")) return None
+    if (ch != "cos" || spec.bw.keySet != Set("both") || !apart(spec)) return None
     val fb = spec.bw("both")
     val sp = joint(spec.copy(bw = Map("sin" -> fb, "cos" -> fb)), stride)._1
     val fc = sp.bw("cos"); val xs = 1 / fc
@@ -458,6 +458,19 @@ final class Candidates(val engine: SignalEngine) {
     val sdx = curvatureSd(if (FitPath.isReference) full else x => curved(sp.copy(bw = sp.bw + ("cos" -> 1 / x))), xs, xs * 0.05)
     Some(Cand(Bandwidth.name, "cos", sp, fullM2ll(sp, full(xs)), 1, Map("cutoff_hz" -> fc), Map("cutoff_hz" -> sdx / (xs * xs)),
       "against speed: cos channel amplitude and phase, its own cut-off beside the sin channel's"))
+  }
+
+  /** Whether the common low-pass of `sp` taken apart gains: the binned profile along the two cut-offs moving apart
+    * (1 / cut-off up on one channel as much as down on the other) lowers -2 ln L by more than one parameter's BIC
+    * and the threshold. A screen: the searches of the candidates above cost some 0.3 s a round at 1 M samples, and
+    * a low-pass the same on both channels (the bench's) does not gain there.
+    */
+  private def apart(sp: ModelSpec): Boolean = {
+    val x = 1 / sp.bw("both")
+    def at(d: Double) = sp.copy(bw = sp.bw - "both" + ("sin" -> 1 / (x * (1 + d))) + ("cos" -> 1 / (x * (1 - d))))
+    val f0 = searched(at(0), stride)
+    val d = minimize(d => searched(at(d), stride), -0.9, 0.9, grid = 18, golden = 20)
+    f0 - searched(at(d), stride) > lnN + SignalExplain.Threshold
   }
 
   private def bandwidthOf(ch: String): Option[Cand] = {
