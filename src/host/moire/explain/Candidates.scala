@@ -295,19 +295,22 @@ final class Candidates(val engine: SignalEngine) {
     * the valleys); until a turn lowers the profile by less than 0.5 (at most `Candidates.MaxTurns`). Returns the spec
     * and how much it lowered the profile.
     */
-  def joint(sp0: ModelSpec, st: Int): (ModelSpec, Double) = {
+  def joint(sp0: ModelSpec, st: Int, gains: Boolean = false): (ModelSpec, Double) = {
     val chs = sp0.bw.keys.toSeq.sorted; val sk = if (sp0.hasSkew) 1 else 0
-    val dims = sk + chs.size
+    val nb = sk + chs.size; val dims = nb + (if (gains) 2 else 0)
     if (dims == 0) return (sp0, 0.0)
     def specOf(v: Array[Double]): ModelSpec = {
       val s = if (sp0.hasSkew) sp0.copy(skewS = v(0)) else sp0
-      s.copy(bw = s.bw ++ chs.indices.map(k => chs(k) -> 1 / v(sk + k)))
+      val g = if (gains) (v(nb), v(nb + 1)) else s.gainPerHz
+      s.copy(bw = s.bw ++ chs.indices.map(k => chs(k) -> 1 / v(sk + k)), gainPerHz = g)
     }
     val limit = 0.5 / (2 * math.Pi * math.max(fMax, 1))
-    val v = Array.tabulate(dims)(d => if (d < sk) sp0.skewS else 1 / sp0.bw(chs(d - sk)))
-    // each parameter's range: the skew's as its search's, a cut-off from 50 x to 0.2 x the highest fringe frequency
-    val lo = Array.tabulate(dims)(d => math.min(v(d), if (d < sk) -limit else 1 / (50 * math.max(fMax, 1))))
-    val hi = Array.tabulate(dims)(d => math.max(v(d), if (d < sk) limit else 5 / math.max(fMax, 1)))
+    val v = Array.tabulate(dims)(d => if (d < sk) sp0.skewS else if (d < nb) 1 / sp0.bw(chs(d - sk)) else if (d == nb) sp0.gainPerHz._1 else sp0.gainPerHz._2)
+    // each parameter's range: the skew's as its search's, a cut-off from 50 x to 0.2 x the highest fringe frequency, a
+    // gain per hertz up to 30 % at the highest
+    val gMax = 0.3 / math.max(fMax, 1)
+    val lo = Array.tabulate(dims)(d => math.min(v(d), if (d < sk) -limit else if (d < nb) 1 / (50 * math.max(fMax, 1)) else -gMax))
+    val hi = Array.tabulate(dims)(d => math.max(v(d), if (d < sk) limit else if (d < nb) 5 / math.max(fMax, 1) else gMax))
     def f(x: Array[Double]): Double = searched(specOf(x), st)
     val f0 = f(v); var cur = f0
     // v moved along direction d to the profile's minimum within the ranges, where that lowers it; the gain
@@ -338,6 +341,27 @@ final class Candidates(val engine: SignalEngine) {
       if (SignalEngine.debug) System.err.println(f"joint: turn $k ${v.map(x => f"$x%.4g").mkString(" ")} gain $gain%.1f")
     }
     (specOf(v), f0 - cur)
+  }
+
+  /** Crosstalk with the skew and cut-offs searched with it. Its linear candidate holds them where they are, and a
+    * low-pass found first has taken the amplitude's change with speed that crosstalk makes (sin += 5 ns x d(cos)/dt
+    * with sin at 800 kHz: a cut-off of 742 kHz, then a skew of -12.6 ns rather than the crosstalk). On the profile
+    * crosstalk is each channel's gain growing in proportion to the fringe frequency (its part is the other channel's
+    * derivative, in phase with the channel's own fundamental): the two gains are searched together with the skew and
+    * cut-offs, and the candidate is the crosstalk term at the skew and cut-offs found, ranked by that profile. Tried
+    * only where the spec has a skew or cut-off and the held candidate `held` (-2 ln L) is significant.
+    */
+  def crosstalkJoint(held: Option[Cand]): Option[Cand] = {
+    if ((!spec.hasSkew && spec.bw.isEmpty) || spec.terms.contains(Term.Crosstalk) || fMax <= 0) return None
+    if (!held.exists(c => bic - (c.m2ll + (params + c.extraK) * lnN) > SignalExplain.Threshold)) return None
+    val (sp, _) = joint(spec, stride, gains = true)
+    val m2ll = fullM2ll(sp, profile(sp, 1))
+    if (!(m2ll < held.get.m2ll)) return None
+    val (kS, kC) = sp.gainPerHz
+    // the gain per hertz back to each channel's tau: sin += tau_sc d(cos)/dt takes -2 pi tau_sc A_cos / A_sin per hertz
+    val p = Map("sin_from_cos_tau_s" -> -kS * ampS / (2 * math.Pi * math.max(ampC, 1e-12)), "cos_from_sin_tau_s" -> kC * ampC / (2 * math.Pi * math.max(ampS, 1e-12)))
+    Some(Cand(Crosstalk.name, "both", sp.copy(gainPerHz = (0.0, 0.0), terms = sp.terms :+ Term.Crosstalk), m2ll, 2, p,
+      p.map { case (k, _) => k -> Double.NaN }, "against speed: amplitude of each channel, with the skew and cut-offs searched again"))
   }
 
   /** Standard deviation of a profile parameter from the curvature of -2 ln L (full data). */

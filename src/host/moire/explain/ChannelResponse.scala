@@ -11,13 +11,14 @@ private[explain] final class ChannelResponse(sp: ModelSpec) {
   private val fcS = sp.bw.getOrElse("sin", Double.PositiveInfinity)
   private val fcC = sp.bw.getOrElse("cos", Double.PositiveInfinity)
   private val w = 2 * math.Pi * sp.skewS
+  private val (kS, kC) = sp.gainPerHz
 
   private val reference = FitPath.isReference
   /** A channel has a cut-off of its own (without, neither channel lags the other). */
   private val own = !fcS.isInfinite || !fcC.isInfinite
 
   def apply(f: Double, sn: Double, cs: Double, out: Array[Double]): Unit = if (reference) direct(f, sn, cs, out) else {
-    var gs = 1.0; var gc = 1.0
+    var gs = 1 + kS * f; var gc = 1 + kC * f
     if (!fcB.isInfinite) { val u = f / fcB; val g = 1 / math.sqrt(1 + u * u); gs *= g; gc *= g }
     // the sin channel turns by l = (lagC - lagS) / 2 - w f / 2 and the cos channel by -l; l's half of the lag difference
     // from exp(i (lagC - lagS)) = (1 + uC uS + i (uC - uS)) / (nS nC) by the half-angle formulas (no atan)
@@ -40,7 +41,7 @@ private[explain] final class ChannelResponse(sp: ModelSpec) {
 
   /** The reference path: the lags by atan, each channel's turn on its own. */
   private def direct(f: Double, sn: Double, cs: Double, out: Array[Double]): Unit = {
-    var gs = 1.0; var gc = 1.0; var ls = -0.5 * w * f; var lc = 0.5 * w * f
+    var gs = 1 + kS * f; var gc = 1 + kC * f; var ls = -0.5 * w * f; var lc = 0.5 * w * f
     if (!fcB.isInfinite) { val u = f / fcB; val g = 1 / math.sqrt(1 + u * u); gs *= g; gc *= g }
     var lagS = 0.0; var lagC = 0.0
     if (!fcS.isInfinite) { val u = f / fcS; gs /= math.sqrt(1 + u * u); lagS = math.atan(u) }

@@ -52,7 +52,11 @@ final case class ModelSpec(
   /** Phase noise of the motion (white per sample, radians of fringe phase): noise in proportion to the slope against
     * the fringe phase, not growing with speed as jitter's does.
     */
-  phaseNoise: Boolean = false
+  phaseNoise: Boolean = false,
+  /** A search's stand-in for crosstalk, on the profile only (never fitted): each channel's gain grows by this much
+    * per hertz of fringe frequency, as crosstalk makes it (`Candidates.crosstalkJoint`).
+    */
+  gainPerHz: (Double, Double) = (0.0, 0.0)
 ) {
   /** The noise model has a slope-dependent part (jitter or phase noise). */
   def slopeNoise: Boolean = jitter || phaseNoise

@@ -15,7 +15,11 @@ object Crosstalk extends Effect {
   override val plot: PlotKind = PlotKind.Speed(phaseOnly = false)
 
   override def backward(sp: ModelSpec, e: EffectSpec): ModelSpec = sp.copy(terms = sp.terms :+ Term.Crosstalk)
-  override def searches(c: Candidates): Seq[() => Seq[Cand]] = Seq(() => c.linear(Term.Crosstalk).map(_._1).toSeq)
+  /** The linear term with the skew and cut-offs held, or with them searched again when that fits better. */
+  override def searches(c: Candidates): Seq[() => Seq[Cand]] = Seq { () =>
+    val held = c.linear(Term.Crosstalk).map(_._1)
+    c.crosstalkJoint(held).orElse(held).toSeq
+  }
   override def describe(t: Term, b: Array[Double], sd: Array[Double], e: SignalEngine): Effect.Described =
     (Map("sin_from_cos_tau_s" -> b(0), "cos_from_sin_tau_s" -> b(1)), Map("sin_from_cos_tau_s" -> sd(0), "cos_from_sin_tau_s" -> sd(1)),
       "against speed: amplitude of each channel", "both")
