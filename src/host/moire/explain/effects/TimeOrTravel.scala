@@ -23,8 +23,8 @@ object TimeOrTravel {
     * `Correlated` or more.
     */
   def speedLookAlike(e: SignalEngine, alongTravel: Boolean): Seq[String] =
-    correlated(e, alongTravel, s"${Bandwidth.name} predicts a similar change of the amplitudes here: a read-head low-pass lowers them with speed") ++
-      correlated(e, alongTravel, s"${Crosstalk.name} predicts a similar change of the amplitudes here: it changes each in proportion to the speed")
+    correlated(e, alongTravel, s"${Bandwidth.name} predicts a similar change of the amplitudes here: a read-head low-pass lowers them with speed",
+      s"${Crosstalk.name} predicts a similar change of the amplitudes here: it changes each in proportion to the speed")
 
   /** Crosstalk's amplitudes change with speed: on a ramp, as a drift's in time or a contrast's along the travel do
     * (a gain drift on a chirp came out as crosstalk of -144 and +147 ns, with no drift).
@@ -33,14 +33,14 @@ object TimeOrTravel {
     correlated(e, alongTravel = false, s"${Drift.name} predicts a similar change of the amplitudes here: they change in time") ++
       correlated(e, alongTravel = true, s"${ContrastAlongTravel.name} predicts a similar change of the amplitudes here: the contrast changes along the travel")
 
-  /** `head`, then the correlation of the axis with the speed and the measurement that separates them; nothing where
-    * |r| is below `Correlated`.
+  /** Each of `heads`, then the correlation of the axis with the speed and the measurement that separates them;
+    * nothing where |r| is below `Correlated`.
     */
-  private def correlated(e: SignalEngine, alongTravel: Boolean, head: String): Seq[String] = {
+  private def correlated(e: SignalEngine, alongTravel: Boolean, heads: String*): Seq[String] = {
     val r = speedCorrelation(e, alongTravel)
     val (what, scan) = if (alongTravel) ("position along the travel", "a scan over the same travel at another speed")
       else ("time", "a record at one speed, or with the speed going down and up again,")
-    if (math.abs(r) < Correlated) Nil else Seq(f"$head, and $what and speed correlate (r = $r%.3f); $scan separates them")
+    if (math.abs(r) < Correlated) Nil else heads.map(h => f"$h, and $what and speed correlate (r = $r%.3f); $scan separates them")
   }
 
   /** The correlation of the speed (the fringe frequency's size) with the position along the travel or with time. */
