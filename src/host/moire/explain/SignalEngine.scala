@@ -641,7 +641,7 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
       _termIndex = spec.terms.zip(cols.offsets.tail).toMap
       // the terms' columns may be made again below: from the state they were fitted in (the old default part)
       Laps("refit: residual") { residual(cols); holdExcluded(); predictionSlope(cols, sol.beta.take(6)) }
-      _base = sol.beta.take(6)
+      _colBase = _base; _base = sol.beta.take(6)
       it += 1
       _noise = Laps("refit: noise")(Noise.fit(resS, resC, noiseSlopes(spec), cens))
       _version += 1
@@ -666,25 +666,34 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
 
   /** The fit as it stands (spec, trajectory, data, solution, residual), to go back to when a trial refit is not kept:
     * `restore` gives the same state to the bit, where fitting the old spec again would end near it after some refits.
-    * None when the residual's copy would take more than a 32nd of the heap (the heap, not `holdBytes`: whether the
-    * terms' columns are held does not change the result): a long record's trial then fits the old spec again (at 20 M
-    * samples in 4 GB the copy held through every trial ran the heap out).
+    * `light` (the default when the residual's copy would take more than a 32nd of the heap): the residual is not copied
+    * but made again from the solution, the data and the columns it was made from (a pass over the record; at 20 M
+    * samples in 4 GB the copy held through every trial ran the heap out, and fitting the old spec again took some
+    * refits). None where that cannot give the same residual: samples weighted out (their data are held in place) or
+    * an INL term (its columns come from the prediction).
     */
-  def save(): Option[() => Unit] = if (16L * n > Runtime.getRuntime.maxMemory / 32) None else {
+  def save(light: Boolean = 16L * n > Runtime.getRuntime.maxMemory / 32): Option[() => Unit] =
+    if (light && (_excluded != null || spec.terms.exists(_.isInstanceOf[Term.Inl]))) None else {
     val sp = spec; val tr = _traj; val trBack = tr.keep()
     val held = _excluded != null // the data of excluded samples are held at the prediction in place: copies then
     val (rS, rC, cn) = if (held) { val a = _repS.clone(); val b = _repC.clone(); (a, b, _cens.copy(s = a, c = b)) } else (_repS, _repC, _cens)
-    val (b, so, ti, no, gs, gc, lg) = (_base, _sol, _termIndex, _noise, slopeS, slopeC, _lastGain)
-    val resS0 = resS.clone(); val resC0 = resC.clone()
+    val (b, cb, so, ti, no, gs, gc, lg) = (_base, _colBase, _sol, _termIndex, _noise, slopeS, slopeC, _lastGain)
+    val resS0 = if (light) null else resS.clone(); val resC0 = if (light) null else resC.clone()
     shared = true
     Some { () =>
       spec = sp; _traj = tr; trBack(); evalTraj() // the phase, frequency and fundamentals from the trajectory
       _repS = rS; _repC = rC; _cens = cn; shared = true
-      _base = b; _sol = so; _termIndex = ti; _noise = no; slopeS = gs; slopeC = gc; _lastGain = lg
-      System.arraycopy(resS0, 0, resS, 0, n); System.arraycopy(resC0, 0, resC, 0, n)
+      _sol = so; _termIndex = ti; _noise = no; slopeS = gs; slopeC = gc; _lastGain = lg
+      if (light) {
+        // the residual as the last refit made it: its columns from the default part they were made with
+        _base = cb; groups().addToBoth(resS, resC, so.beta, -1.0, repS, repC)
+      } else { System.arraycopy(resS0, 0, resS, 0, n); System.arraycopy(resC0, 0, resC, 0, n) }
+      _base = b; _colBase = cb
       _version += 1
     }
   }
+  /** The default part the last residual's columns were made with (a refit makes them before it updates `base`). */
+  private var _colBase: Array[Double] = _base
 
   /** Refits until BIC stops falling (fault repairs and the trajectory settle over a few iterations). `moved`: only
     * nonlinear parameters of the spec moved a little (a polish), no effect is new: one refining step before the first
@@ -755,7 +764,7 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
 
   /** The fit at the solution `beta` and noise `nz`, on the current trajectory and data. */
   private def set(beta: Array[Double], nz: Noise): Unit = {
-    _base = beta.take(6)
+    _base = beta.take(6); _colBase = _base
     val cols = groups()
     cols.addToBoth(resS, resC, beta, -1.0, repS, repC); holdExcluded(); predictionSlope(cols, beta.take(6))
     _noise = nz; _version += 1
