@@ -12,12 +12,20 @@ object Axes {
     val raw = range / ticks; val p = math.pow(10, math.floor(math.log10(raw)))
     Seq(1.0, 2.0, 2.5, 5.0, 10.0).map(_ * p).find(_ >= raw * (1 - 1e-9)).get
   }
-  /** The range [lo, hi] widened to multiples of a round step; a flat range gets a margin. */
+  /** The range [lo, hi] widened to multiples of a round step; a flat range gets a margin. A range below a millionth of
+    * its values' size, or of 1 (the plots' units: LSB, degree, arcsec, %), is flat: XChart's tick search never ended
+    * on an axis of +-1e-9 with a decimal pattern (every label "0"), nor where a step does not change the value (5 +
+    * 1e-16 is 5); a constant calibration table's plots hung so.
+    */
   def span(lo: Double, hi: Double): (Double, Double) = {
-    val (a, b) = if (hi > lo) (lo, hi) else { val m = math.max(math.abs(lo) * 0.1, 1e-9); (lo - m, hi + m) }
+    val size = math.max(math.abs(lo), math.abs(hi))
+    val (a, b) = if (hi - lo > MinRange * math.max(size, 1.0)) (lo, hi)
+      else { val c = 0.5 * (lo + hi); val m = math.max(math.abs(c) * 0.1, MinRange); (c - m, c + m) }
     val s = step(b - a)
     (math.floor(a / s + 1e-9) * s, math.ceil(b / s - 1e-9) * s)
   }
+  /** The narrowest range an axis spans, relative to its values' size (and at least this much). */
+  val MinRange = 1e-6
   private def finite(a: Iterable[Double]) = a.filter(v => !v.isNaN && !v.isInfinite)
 
   def round(c: XYChart): Unit = {
