@@ -58,6 +58,14 @@ class HarmonicFitSpec extends AnyFlatSpec {
     assert(e.getMessage == s"${f.last}: 4 distinct angles support harmonics up to order 1, fewer than --harmonics 4")
   }
 
+  "calibrate on a table whose errors are all the same" should "say there is no harmonic to compensate" in {
+    val f = os.temp(CalibrationData.magic + "\nangle_deg,error_arcsec\n" + (0 until 360 by 10).map(a => s"$a,5.0").mkString("\n") + "\n", suffix = ".csv")
+    val text = Calibrate.report(Calibrate.run(f, os.temp.dir(), HarmonicParams(), -1))
+    assert(text.contains("there is no harmonic to compensate"), text)
+    val varied = os.temp(CalibrationData.magic + "\nangle_deg,error_arcsec\n" + (0 until 360 by 10).map(a => s"$a,${math.sin(math.toRadians(a))}").mkString("\n") + "\n", suffix = ".csv")
+    assert(!Calibrate.report(Calibrate.run(varied, os.temp.dir(), HarmonicParams(), -1)).contains("no harmonic"))
+  }
+
   "The register words of a fit" should "make the bit-accurate compensator remove the fitted harmonics" in {
     val p = HarmonicParams()
     val f = HarmonicFit.analyse(grid, grid.map(CalibrationSample.eq19), 17, 4)

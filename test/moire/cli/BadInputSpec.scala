@@ -126,6 +126,28 @@ class BadInputSpec extends AnyFlatSpec with Matchers {
   bad("--samples 0", "--samples must be at least 1", Seq(existing))(sim("--samples", "0"): _*)
   bad("--samples in Arabic-Indic digits", "--samples", Seq(existing))(sim("--samples", "\u0661\u0662"): _*)
   bad("--amplitude 0", "--amplitude must be above 0", Seq(existing))(sim("--amplitude", "0"): _*)
+  // a fringe faster than half the sample rate: the samples would alias (the record would not be the motion asked for)
+  bad("a motion above the Nyquist frequency", "the samples alias", Seq(existing))(sim("--samples", "2000", "--motion", "constant:1e300"): _*)
+  bad("a motion at 0.6 periods per sample", "0.6000 periods between samples", Seq(existing))(sim("--samples", "2000", "--sample-rate-hz", "1000000", "--motion", "constant:600000"): _*)
+  bad("a warm-up's gain step of -1", "gain_sin_step_rel must be above -1", Seq(existing))(
+    sim("--effect", "warmup:gain_sin_step_rel=-1,time_constant_s=0.001"): _*)
+
+  "simulate" should "say when the signal exceeds the converter's range" in {
+    val out = dir / "rails.csv"
+    val (code, outText, err) = CliInProcess.runCliOut("simulate", "--out", out.toString, "--samples", "2000", "--amplitude", "1e308")
+    withClue(err) { code shouldBe 0 }
+    outText should include("of the sin samples and")
+    outText should include("at the ADC's end codes")
+  }
+
+  "a command that fails" should "leave no empty output folder behind, and keep one that holds files" in {
+    val fresh = dir / "fresh" / "json"; val kept = dir / "kept"; os.makeDir.all(kept); os.write.over(kept / "a.txt", "a")
+    val (code, err) = runCli("explain", rec("text2.csv", "hello\n"), "--json-dir", fresh.toString, "--plots", (kept / "p").toString)
+    withClue(err) { code shouldBe 2 }
+    os.exists(dir / "fresh") shouldBe false
+    os.exists(kept / "p") shouldBe false
+    os.read(kept / "a.txt") shouldBe "a"
+  }
   bad("--offset-cos NaN", "--offset-cos must be a finite number", Seq(existing))(sim("--offset-cos", "NaN"): _*)
   bad("an unknown effect", "'wobble' is not an effect", Seq(existing))(sim("--effect", "wobble:x=1"): _*)
   bad("an unknown ADC format", "--adc", Seq(existing))(sim("--adc", "gray"): _*)
@@ -422,6 +444,8 @@ class BadInputSpec extends AnyFlatSpec with Matchers {
   bad("explain-bench --recording of a folder", "is a folder, not a file")("explain-bench", "--recording", folderIn.toString)
   bad("board-reg --load of a folder", "is a folder, not a file")("board-reg", "--port", port, "--load", folderIn.toString)
   bad("monitor --replay of a folder", "is a folder, not a file")("monitor", "--replay", folderIn.toString)
+  bad("monitor --replay of 10 rows", "monitor --replay (its bursts are explained) needs at least 64")(
+    "monitor", "--replay", rec("ten-replay.csv", head + "sin,cos\n" + rows(10)), "--out", (dir / "mon").toString)
   bad("record --port of a folder", "is a folder, not a serial port")("record", "--port", folderIn.toString, "--seconds", "1", "--out", (dir / "r.csv").toString)
   bad("record --port ''", "--port is empty")("record", "--port", "", "--seconds", "1", "--out", (dir / "r.csv").toString)
 

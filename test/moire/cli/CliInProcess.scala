@@ -5,12 +5,15 @@ package moire.cli
   */
 object CliInProcess {
   /** (exit code, stderr) of the command line; stdout is dropped. */
-  def runCli(args: String*): (Int, String) = synchronized {
+  def runCli(args: String*): (Int, String) = { val (c, _, e) = runCliOut(args: _*); (c, e) }
+
+  /** (exit code, stdout, stderr) of the command line. */
+  def runCliOut(args: String*): (Int, String, String) = synchronized {
     val err = new java.io.ByteArrayOutputStream(); val out = new java.io.ByteArrayOutputStream()
     val (e0, o0) = (System.err, System.out)
     System.setErr(new java.io.PrintStream(err, true)); System.setOut(new java.io.PrintStream(out, true))
     val code = try Console.withOut(out)(Console.withErr(err)(Main.run(args.toArray))) finally { System.setErr(e0); System.setOut(o0) }
-    (code, err.toString)
+    (code, out.toString, err.toString)
   }
 
   /** A Java/Scala class name, an exception's name or a stack frame. */

@@ -45,7 +45,7 @@ class ReplayCliSpec extends AnyFlatSpec {
       Seq(ok, "--input-bits", "10") -> "the recording has 12-bit ADC codes, the design reads 10 bits (--input-bits)",
       Seq(ok, "--design", "fir") -> "--design: 'fir' is not a replayable design; allowed: subdiv, corrected",
       Seq(ok, "--counts", "5") -> "--counts (M) must be a power of two in 4..65536, got 5",
-      Seq(ok, "--check-rows", "x") -> "--check-rows: 'x' is not an integer >= 1",
+      Seq(ok, "--check-rows", "x") -> "--check-rows: 'x' is not a whole number from 1 to 2147483647",
       Seq((dir / "none.csv").toString) -> "no such file")
     for ((args, msg) <- cases) {
       val (code, _, err) = CliProcess.runWith(jvm)("replay" +: args: _*)

@@ -146,7 +146,7 @@ object Main {
   }
 
   @main(doc = "Cheapest (iterations, width) whose error bound meets a target, confirmed by simulation.")
-  def design(@arg(doc = "sin | asin | atan2") function: String,
+  def design(@arg(doc = "sin | asin | atan2 (cos and sincos name sin's unit, acos asin's)") function: String,
              @arg(doc = "largest error allowed (full scale 1.0 for sin, radians for angles)") maxError: Double,
              @arg(doc = "truncate | half-even") rounding: String = "half-even",
              @arg(doc = "asin only: peak lookup table entries (power of two, 0 = none)") peakTable: Int = 0): Unit = {
@@ -356,7 +356,8 @@ object Main {
     // `board de2-115 --out DIR`: the board name as a positional word.
     val argv = if (args.length > 1 && args(0) == "board" && !args(1).startsWith("-")) Array("board", "--name") ++ args.tail else args
     repeated(mains, argv.toSeq).foreach { msg => System.err.println(s"moire: $msg"); return 2 }
-    try {
+    moire.files.SafeWrite.forgetMade()
+    val code = try {
       // runRaw hands back what a command threw (runEither would print it with its class name)
       parser.runRaw(argv.toSeq, allowPositional = false) match {
         case mainargs.Result.Success(_) => return 0
@@ -386,6 +387,9 @@ object Main {
         if (sys.env.contains("MOIRE_DEBUG")) e.printStackTrace()
         System.err.println(s"moire: internal error: ${plain(Option(e.getMessage).getOrElse("no message"))} (MOIRE_DEBUG=1 shows where)"); 2
     }
+    // a command that failed leaves no empty output folder behind (its outputs' folders are made before the work)
+    if (code != 0) moire.files.SafeWrite.removeEmptyMade()
+    code
   }
 
   /** An option of the command given twice (`explain --plots a --plots b` took the last): the parser refuses that for a

@@ -13,7 +13,7 @@ object ReplayArgs {
   def parse(args: Seq[String]): ReplayCmd.Options = {
     var o = ReplayCmd.Options(None)
     def count(opt: String, v: String, min: Int) =
-      moire.numbers.Decimal.int(v).filter(_ >= min).getOrElse(throw new ReplayError(s"$opt: '$v' is not an integer >= $min"))
+      moire.numbers.Decimal.int(v).filter(_ >= min).getOrElse(throw new ReplayError(s"$opt: '$v' is not a whole number from $min to ${Int.MaxValue}"))
     val rest = Seq.newBuilder[String]
     var i = 0
     def value(opt: String) = { i += 1; args.lift(i).getOrElse(throw new ReplayError(s"$opt needs a value")) }

@@ -70,6 +70,9 @@ object Calibrate {
     b ++= f"${r.data.file}: ${r.data.points.size} points, harmonics up to order ${r.maxOrder} fitted, ${r.fit.harmonics.size} kept\n"
     b ++= f"  offset c0 ${r.fit.offset}%+.4f arcsec (not compensated)\n"
     for (h <- r.fit.harmonics) b ++= f"  k=${h.order}%-3d c=${h.c}%9.4f arcsec  phi=${h.phiDeg}%+9.3f deg\n"
+    // every error the same: the amplitudes kept are rounding errors and their phases mean nothing
+    if (!(rmsData > 1e-9 * math.max(1.0, math.abs(mean))))
+      b ++= "  note: the errors do not vary with the angle: there is no harmonic to compensate (the amplitudes above are rounding errors, their phases meaningless)\n"
     b ++= f"  rms about the mean ${rmsData}%.4f arcsec, residual rms ${r.fit.rms}%.4f arcsec, max |residual| ${r.fit.maxAbs}%.4f arcsec\n"
     for ((d, f) <- r.byDirection) b ++= f"  $d%-4s offset ${f.offset}%+.4f arcsec, residual rms ${f.rms}%.4f arcsec\n"
     r.reversal.foreach(v => b ++= f"  reversal cw - ccw over ${v.shared} angles: mean ${v.meanArcsec}%+.4f arcsec, max |d| ${v.maxAbsArcsec}%.4f arcsec\n")

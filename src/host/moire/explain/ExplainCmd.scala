@@ -33,11 +33,33 @@ object ExplainCmd {
 
   def simulate(o: SimOptions): String = {
     val m = model(o)
-    val (rec, _) = try m.generate() catch { case e: IllegalArgumentException => throw new ExplainError(e.getMessage.stripPrefix("requirement failed: ")) }
+    val (rec, truth) = try m.generate() catch { case e: IllegalArgumentException => throw new ExplainError(e.getMessage.stripPrefix("requirement failed: ")) }
+    aliased(truth, o.sampleRateHz).foreach(w => throw new ExplainError(w))
     val path = moire.files.SafeWrite.fileArg(o.out)
     moire.files.SafeWrite.refuseInputs(path, o.model.toSeq.map(os.Path(_, os.pwd)))
     Recording.write(path, rec)
-    s"wrote $path (${rec.length} samples, ${m.effects.map(_.effect).mkString(", ") match { case "" => "default model only"; case s => s }})"
+    s"wrote $path (${rec.length} samples, ${m.effects.map(_.effect).mkString(", ") match { case "" => "default model only"; case s => s }})" +
+      atRails(rec).fold("")(w => s"; note: $w")
+  }
+
+  /** Why a simulated fringe cannot be sampled (it moves half a period or more between samples: the samples alias), or
+    * None. `truth`: the fringe phase in periods at each sample.
+    */
+  def aliased(truth: Array[Double], fs: Double): Option[String] = {
+    var mx = 0.0; var i = 1
+    while (i < truth.length) { val d = math.abs(truth(i) - truth(i - 1)); if (!(d <= mx)) mx = d; i += 1 }
+    if (mx < 0.5) None
+    else Some(f"the fringe moves up to ${mx}%.4g periods between samples (${mx * fs}%.4g Hz at ${fs}%.4g samples/s): at half a " +
+      "period or more the samples alias; slow the motion or raise --sample-rate-hz")
+  }
+
+  /** The share of a simulated record's samples at the ADC's end codes, when above 1 % on a channel. */
+  def atRails(rec: Recording): Option[String] = {
+    val lo = -rec.adc.half; val hi = rec.adc.half - 1
+    def share(c: Array[Int]) = { var k = 0; var i = 0; while (i < c.length) { val v = rec.adc.fromPins(c(i)); if (v <= lo || v >= hi) k += 1; i += 1 }; k.toDouble / math.max(1, c.length) }
+    val (s, c) = (share(rec.sin), share(rec.cos))
+    if (math.max(s, c) <= 0.01) None
+    else Some(f"${100 * s}%.1f %% of the sin samples and ${100 * c}%.1f %% of the cos samples are at the ADC's end codes (the signal exceeds the converter's range)")
   }
 
   /** Explains each file; writes `<stem>.json` into jsonDir and PNGs into plotDir. Returns the text reports. */
@@ -159,9 +181,9 @@ object ExplainCmd {
   val MinSamples = 64
 
   /** What no fit can use: too few samples, a channel that never changes (dead or unconnected). */
-  def checkSignals(p: os.Path, rec: Recording): Unit = {
+  def checkSignals(p: os.Path, rec: Recording, who: String = "explain"): Unit = {
     if (rec.length < MinSamples)
-      throw new ExplainError(s"$p: ${rec.length} samples; explain needs at least $MinSamples (and a few fringe periods)")
+      throw new ExplainError(s"$p: ${rec.length} samples; $who needs at least $MinSamples (and a few fringe periods)")
     for ((name, c) <- Seq("sin" -> rec.sin, "cos" -> rec.cos) if c.forall(_ == c(0)))
       throw new ExplainError(s"$p: $name channel constant at code ${c(0)} over all ${rec.length} samples: a dead or unconnected channel, nothing to fit")
     moire.recording.FormatCheck.mismatch(rec).foreach(why => throw new ExplainError(s"$p: $why"))

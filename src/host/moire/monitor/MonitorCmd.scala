@@ -32,7 +32,7 @@ object MonitorCmd {
       moire.files.PathKind.notAFile(p).foreach(m => throw new MonitorError(m))
       val rec = Recording.read(p)
       rec.warnings.foreach(w => warn(s"WARNING: $f: $w"))
-      moire.explain.ExplainCmd.checkSignals(p, rec)
+      moire.explain.ExplainCmd.checkSignals(p, rec, "monitor --replay (its bursts are explained)")
       new ReplaySource(rec, s"replay of ${p.last}", o.scale)
     case _ => new ReplaySource(SimBoard.recording(if (o.effects.isEmpty) SimBoard.DefaultEffects else o.effects), "simulated board", o.scale)
   }

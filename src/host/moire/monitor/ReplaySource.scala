@@ -51,7 +51,7 @@ final class ReplaySource(rec: Recording, label: String, user: Scale) extends Sou
   }
 
   def burst(b: BurstOptions, file: os.Path): Recording = {
-    if (b.trigger != "now") throw new MonitorError(s"trigger '${b.trigger}': a replayed recording has no trigger hardware; use now")
+    if (b.trigger != "now") throw new MonitorError(s"trigger '${b.trigger}': the $label has no trigger hardware; use now")
     if (b.samples < ExplainMin || b.samples > n)
       throw new MonitorError(s"samples must be in $ExplainMin..$n (the recording's length), got ${b.samples}")
     val start = math.max(0L, cursor - b.pre)

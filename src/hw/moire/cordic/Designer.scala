@@ -3,7 +3,8 @@ package moire.cordic
 /** Picks the cheapest (n, b) whose a priori bound meets a target, then checks it by simulation. */
 final case class Design(function: String, target: Double, p: CordicParams, bound: Double, measured: Measured, adderBits: Int) {
   def report: String = {
-    val unit = if (function == "sin") "(full scale 1.0)" else "rad"
+    // the sine and cosine (one SinCos unit) are values of full scale 1; the inverse functions' results are angles
+    val unit = if (p.mode == CordicMode.SinCos) "(full scale 1.0)" else "rad"
     f"""$function with max error $target%.3e $unit
        |  cheapest: iterations n = ${p.iterations}, width b = ${p.width} (${p.dataFrac} fractional bits), mode ${p.mode.name}
        |  error bound ${bound}%.3e, measured ${measured.maxError}%.3e over ${measured.samples} inputs: ${if (measured.ok && measured.maxError <= target) "confirmed" else "NOT confirmed"}
@@ -26,7 +27,7 @@ object Designer {
     case "sin" | "cos" | "sincos" => Right(CordicMode.SinCos)
     case "asin" | "acos" => Right(CordicMode.AsinDouble)
     case "atan2" => Right(CordicMode.Atan2)
-    case other => Left(s"--function: '$other' is not supported; allowed: sin, asin, atan2")
+    case other => Left(s"--function: '$other' is not supported; allowed: sin (or cos, sincos), asin (or acos), atan2")
   }
 
   /** Adder bits of the iterations, a proxy for logic cells. */

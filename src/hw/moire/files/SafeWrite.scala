@@ -101,9 +101,26 @@ object SafeWrite {
   /** Checks, before any work, that `dir` is (or can become) a writable folder. */
   def checkFolder(dir: os.Path): Unit = {
     if (os.exists(dir) && !os.isDir(dir)) throw new FileError(s"$dir: is ${PathKind.of(dir).getOrElse("a file")}, not a folder")
+    // the folders this makes, the deepest first (`removeEmptyMade`)
+    val missing = Iterator.iterate(dir)(_ / os.up).takeWhile(p => p.segmentCount > 0 && !os.exists(p, followLinks = false)).toList
     try os.makeDir.all(dir) catch { case e: IOException => throw new FileError(s"$dir: cannot make the folder (${reason(e)})") }
+    missing.reverse.foreach(made.push)
     if (!Files.isWritable(dir.toNIO)) throw new FileError(s"$dir: the folder is not writable")
   }
+  private val made = new java.util.concurrent.ConcurrentLinkedDeque[os.Path]()
+
+  /** Removes the folders `checkFolder` made that are still empty, the deepest first: a command that failed after
+    * checking its outputs leaves no empty folder behind (one that holds anything stays).
+    */
+  def removeEmptyMade(): Unit = {
+    var p = made.poll()
+    while (p != null) {
+      try if (os.isDir(p, followLinks = false) && os.list(p).isEmpty) os.remove(p) catch { case _: IOException => () }
+      p = made.poll()
+    }
+  }
+  /** Forgets the folders made so far (a new command starts). */
+  def forgetMade(): Unit = made.clear()
 
   /** Checks, before any work, that `target` can be written: its folder is writable and it is no folder. */
   def checkFile(target: os.Path): Unit = {

@@ -15,6 +15,10 @@ object Warmup extends Effect {
   val domain: Domain = Domain.Time
   override val plot: PlotKind = PlotKind.Time
 
+  // a relative gain step of -1 or less leaves no signal, or turns it over: no warm-up
+  override def check(e: EffectSpec): Option[String] =
+    Seq("gain_sin_step_rel", "gain_cos_step_rel").flatMap(k => e.params.get(k).filter(v => !(v > -1)).map(v =>
+      s"$k must be above -1 (a gain step of -1 leaves no signal), got ${Effect.show(v)}")).headOption
   override def validate(e: EffectSpec, m: PhysicsModel): Unit =
     if (!(e.p("time_constant_s") > 0)) throw new ExplainError("warmup needs time_constant_s > 0")
   override def backward(sp: ModelSpec, e: EffectSpec): ModelSpec = sp.copy(terms = sp.terms :+ Term.Warmup(e.p("time_constant_s", 1.0)))
