@@ -444,6 +444,9 @@ class BadInputSpec extends AnyFlatSpec with Matchers {
   bad("explain-bench --recording of a folder", "is a folder, not a file")("explain-bench", "--recording", folderIn.toString)
   bad("board-reg --load of a folder", "is a folder, not a file")("board-reg", "--port", port, "--load", folderIn.toString)
   bad("monitor --replay of a folder", "is a folder, not a file")("monitor", "--replay", folderIn.toString)
+  // an option's value that reads --help is the option's, not a request for help that would do nothing and exit 0
+  bad("--subdiv --help", "--subdiv")("explain", good.toString, "--subdiv", "--help")
+  bad("--json-dir --help", "no such file")("explain", (dir / "missing.csv").toString, "--json-dir", "--help")
   bad("monitor --replay of 10 rows", "monitor --replay (its bursts are explained) needs at least 64")(
     "monitor", "--replay", rec("ten-replay.csv", head + "sin,cos\n" + rows(10)), "--out", (dir / "mon").toString)
   bad("record --port of a folder", "is a folder, not a serial port")("record", "--port", folderIn.toString, "--seconds", "1", "--out", (dir / "r.csv").toString)

@@ -350,7 +350,7 @@ object Main {
       case Seq("help", _*) => System.err.println("moire: help takes one command name, e.g. moire help explain"); return 2
       case a if a.head.startsWith("-") =>
         System.err.println(s"moire: '${a.head}' is not a command; moire COMMAND [options] (moire --help lists the commands)"); return 2
-      case a if a.tail.exists(x => x == "--help" || x == "-h") => return commandHelp(mains, a.head)
+      case a if helpAsked(mains, a) => return commandHelp(mains, a.head)
       case _ => ()
     }
     // `board de2-115 --out DIR`: the board name as a positional word.
@@ -397,16 +397,7 @@ object Main {
     * (a command that passes the rest on, as `replay` does, checks those where it reads them).
     */
   private def repeated(mains: Seq[mainargs.MainData[Any, Main.type]], argv: Seq[String]): Option[String] =
-    mains.find(m => argv.headOption.contains(m.name(mainargs.Util.kebabCaseNameMapper))).flatMap { m =>
-      def names(sigs: Seq[mainargs.ArgSig]): Seq[(String, Boolean)] = sigs.flatMap { a =>
-        a.reader match {
-          case c: mainargs.TokensReader.Class[_] => names(c.main.argSigs0)
-          case r if r.isLeftover => Nil
-          case r: mainargs.TokensReader.Simple[_] if r.alwaysRepeatable => Nil // a list option (`--effect`, repeated)
-          case r => a.longName(mainargs.Util.kebabCaseNameMapper).map(l => ("--" + l, r.isFlag)).toSeq
-        }
-      }
-      val known = names(m.argSigs0).toMap
+    optionsOf(mains, argv.headOption.getOrElse("")).flatMap { known =>
       // each option word with the value it took (a flag takes none); a word after `--` is no option
       val said = argv.tail.takeWhile(_ != "--").zipWithIndex.flatMap { case (w, i) =>
         val name = w.takeWhile(_ != '=')
@@ -417,6 +408,33 @@ object Main {
         else s"$name is given ${vs.size} times (${vs.map(v => "'" + v._2 + "'").mkString(", ")}); give it once"
       }
     }
+
+  /** A command's options: name -> whether it is a flag (takes no value); None for no such command. List options (given
+    * several times) are not named: `repeated` does not count them.
+    */
+  private def optionsOf(mains: Seq[mainargs.MainData[Any, Main.type]], cmd: String, lists: Boolean = false): Option[Map[String, Boolean]] =
+    mains.find(_.name(mainargs.Util.kebabCaseNameMapper) == cmd).map { m =>
+      def names(sigs: Seq[mainargs.ArgSig]): Seq[(String, Boolean)] = sigs.flatMap { a =>
+        a.reader match {
+          case c: mainargs.TokensReader.Class[_] => names(c.main.argSigs0)
+          case r if r.isLeftover => Nil
+          case r: mainargs.TokensReader.Simple[_] if r.alwaysRepeatable && !lists => Nil // a list option (`--effect`, repeated)
+          case r => a.longName(mainargs.Util.kebabCaseNameMapper).map(l => ("--" + l, r.isFlag)).toSeq
+        }
+      }
+      names(m.argSigs0).toMap
+    }
+
+  /** `--help` or `-h` among a command's words, not as an option's value (`explain f.csv --subdiv --help` gives --subdiv
+    * the value "--help", which its own check then refuses, instead of showing the help and doing nothing).
+    */
+  private def helpAsked(mains: Seq[mainargs.MainData[Any, Main.type]], argv: Seq[String]): Boolean = {
+    val known = optionsOf(mains, argv.head, lists = true).getOrElse(Map.empty)
+    val words = argv.tail.takeWhile(_ != "--")
+    words.indices.exists { i =>
+      (words(i) == "--help" || words(i) == "-h") && !(i > 0 && known.get(words(i - 1)).contains(false))
+    }
+  }
 
   private val className = """\b(?:[a-z][\w]*\.)+[A-Z][\w$]*(?:Exception|Error)?(?::\s*)?""".r
   /** The first line of a message, without Java class names. */

@@ -219,7 +219,9 @@ object ExplainCmd {
   def explainArgs(rest: Seq[String], jsonDir: Option[String], plots: Option[String], model: Option[String], quiet: Boolean,
                   subdiv: Option[String] = None, noRtl: Boolean = false, html: Option[String] = None, htmlDir: Option[String] = None,
                   minEffectLsb: Option[Double] = None, minEffectNoise: Option[Double] = None): Unit = {
-    if (rest.contains("--help") || rest.contains("-h")) { println(Usage); return }
+    // help where --help or -h is a word of its own, not an option's value (`--subdiv --help` is --subdiv's, refused there)
+    val valued = Set("--json-dir", "--plots", "--model", "--subdiv", "--html", "--html-dir", "--min-effect-lsb", "--min-effect-noise")
+    if (rest.indices.exists(k => (rest(k) == "--help" || rest(k) == "-h") && !(k > 0 && valued(rest(k - 1))))) { println(Usage); return }
     var j = jsonDir; var p = plots; var m = model; var q = quiet; val files = Seq.newBuilder[String]
     var h = html; var hd = htmlDir
     var sd = subdiv; var nr = noRtl; var ml = minEffectLsb; var mn = minEffectNoise
