@@ -447,6 +447,22 @@ class BadInputSpec extends AnyFlatSpec with Matchers {
   // an option's value that reads --help is the option's, not a request for help that would do nothing and exit 0
   bad("--subdiv --help", "--subdiv")("explain", good.toString, "--subdiv", "--help")
   bad("--json-dir --help", "no such file")("explain", (dir / "missing.csv").toString, "--json-dir", "--help")
+  // explain --model checks the whole file as simulate does (it fits only the effects), and bounds the terms it adds
+  bad("a --model with an unknown key", "unknown key 'frobnicate'")("explain", good.toString, "--model", rec("m-key.json", """{"frobnicate": 1, "effects": []}"""))
+  bad("a --model whose amplitude is text", "amplitude must be a number")("explain", good.toString, "--model", rec("m-amp.json", """{"amplitude": "x"}"""))
+  bad("a --model of 76 harmonics", "explain --model fits at most 64")("explain", good.toString, "--model", rec("m-many.json",
+    ujson.write(ujson.Obj("effects" -> ujson.Arr.from(for (k <- 2 until 40; ch <- Seq("sin", "cos")) yield
+      ujson.Obj("effect" -> "harmonic", "order" -> k, "amplitude_rel" -> 1e-3, "channel" -> ch))))))
+  // a channel that carries only noise: the other's phase fitted against it left "pickup at 80 kHz, 0.45 full scale"
+  bad("a recording whose cos channel is only noise", "no fringe on the cos channel")("explain", "--no-rtl", "--quiet", rec("cos-dead.csv", head + "sin,cos\n" + {
+    val r = new scala.util.Random(4)
+    (0 until 6000).map { i => s"${2048 + (1500 * math.sin(2 * math.Pi * i / 150.0)).round},${2048 + (90 * r.nextGaussian()).round}" }.mkString("\n") + "\n"
+  }))
+  "explain --model" should "take one effect named many times as one term" in {
+    val m = rec("m-same.json", ujson.write(ujson.Obj("effects" -> ujson.Arr.from(Seq.fill(5000)(ujson.Obj("effect" -> "harmonic", "order" -> 3, "amplitude_rel" -> 1e-3))))))
+    val (code, err) = runCli("explain", good.toString, "--quiet", "--no-rtl", "--model", m)
+    withClue(err) { code shouldBe 0 }
+  }
   bad("monitor --replay of 10 rows", "monitor --replay (its bursts are explained) needs at least 64")(
     "monitor", "--replay", rec("ten-replay.csv", head + "sin,cos\n" + rows(10)), "--out", (dir / "mon").toString)
   bad("record --port of a folder", "is a folder, not a serial port")("record", "--port", folderIn.toString, "--seconds", "1", "--out", (dir / "r.csv").toString)

@@ -3,7 +3,7 @@ package moire.explain
 import scala.jdk.CollectionConverters._
 
 import moire.recording.{Calibration, CsvText, Recording}
-import moire.signal.{Adc, AdcFormat, SignalParams}
+import moire.signal.{Adc, AdcFormat, Motion, SignalParams}
 
 /** The logic behind `simulate`, `explain` and `explain-bench`. */
 object ExplainCmd {
@@ -70,7 +70,15 @@ object ExplainCmd {
     if (html.isDefined && files.size > 1) throw new ExplainError(s"--html names one file, but ${files.size} recordings were given; use --html-dir DIR (one DIR/<name>.html each)")
     if (html.isDefined && htmlDir.isDefined) throw new ExplainError("give --html FILE or --html-dir DIR, not both")
     html.foreach(f => moire.files.SafeWrite.checkFile(moire.files.SafeWrite.fileArg(f)))
-    val givenEffects = modelFile.map(f => PhysicsModel.effectsFromJson(PhysicsModel.jsonObject(readText(f), f), f, Nil)).getOrElse(Nil)
+    val givenEffects = modelFile.map { f =>
+      val text = readText(f)
+      // the whole file checked as simulate checks it (a misspelled key, a number that is text): explain uses its effects
+      PhysicsModel.fromJson(text, f, ModelCheck)
+      val fx = PhysicsModel.effectsFromJson(PhysicsModel.jsonObject(text, f), f, Nil)
+      val terms = SignalExplain.specOf(fx).terms.size
+      if (terms > MaxModelTerms) throw new ExplainError(s"$f: ${fx.size} effects make $terms terms of the backward model; explain --model fits at most $MaxModelTerms")
+      fx
+    }.getOrElse(Nil)
     val paths = files.map(f => os.Path(f, os.pwd))
     // one file named twice would be explained twice, the second report over the first
     paths.groupBy(identity).collectFirst { case (p, ps) if ps.size > 1 => throw new ExplainError(s"$p: given ${ps.size} times; name each recording once") }
@@ -176,6 +184,11 @@ object ExplainCmd {
     jsonDir.foreach(d => moire.files.SafeWrite.text(os.Path(d, os.pwd) / s"$stem.json", ujson.write(json, indent = 2)))
     report
   }
+
+  /** The defaults a `--model` file is checked against (its own values replace them; explain uses only its effects). */
+  private lazy val ModelCheck: PhysicsModel = PhysicsModel(SignalParams(0.8, 0, 0, 1, 1, 0, Nil, 1e-3, 1), Motion.Constant(1e3), 1e6, 1000, Adc(12), None, Nil)
+  /** The most linear terms a `--model` file's effects may add to the backward model (each is fitted at every refit). */
+  val MaxModelTerms = 64
 
   /** Fewest samples explain fits (a one-period recording of 1000 samples is fine; ten rows are not). */
   val MinSamples = 64

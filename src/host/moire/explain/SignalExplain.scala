@@ -51,8 +51,11 @@ object SignalExplain {
   final case class Result(report: Report, engine: SignalEngine, before: Snapshot, steps: Seq[(Finding, Snapshot, Snapshot)],
                           rerun: Seq[Adequacy.Window] = Nil)
 
-  def specOf(model: Seq[EffectSpec]): ModelSpec =
-    model.foldLeft(ModelSpec())((sp, e) => Effects(e.effect).fold(sp)(_.backward(sp, e)))
+  /** The backward model of given effects; an effect named twice is one term. */
+  def specOf(model: Seq[EffectSpec]): ModelSpec = {
+    val sp = model.foldLeft(ModelSpec())((sp, e) => Effects(e.effect).fold(sp)(_.backward(sp, e)))
+    sp.copy(terms = sp.terms.distinct, faults = sp.faults.distinct, clips = sp.clips.distinct)
+  }
 
   /** Explains a recording. Adequacy first: where the final model does not follow the signal in some windows but does
     * in others, the search is made again with those windows weighted out (effects fitted and judged where it follows).
@@ -393,9 +396,19 @@ object SignalExplain {
     */
   def noFringe(e: SignalEngine): Option[String] = {
     val a = 0.5 * (e.ampS + e.ampC); val sd = Adequacy.floor(e)
-    if (a > MinAmplitudeNoise * sd) None
-    else Some(f"no fringe: the fitted amplitude ${a / e.lsb}%.3g LSB is not above ${MinAmplitudeNoise}%.0f x the noise " +
-      f"(${sd / e.lsb}%.3g LSB rms); are the inputs connected, and the read head over the scale and moving?")
+    if (!(a > MinAmplitudeNoise * sd))
+      Some(f"no fringe: the fitted amplitude ${a / e.lsb}%.3g LSB is not above ${MinAmplitudeNoise}%.0f x the noise " +
+        f"(${sd / e.lsb}%.3g LSB rms); are the inputs connected, and the read head over the scale and moving?")
+    else {
+      // one channel without its fringe (a dead or unconnected input that only carries noise): the other's phase is then
+      // fitted against noise, and what is left looks like pickup of half the full scale
+      def floorOf(r: Array[Double]) = Adequacy.floorOf(r, null, 0, e.n, Adequacy.JudgeOrder, null)
+      Seq(("sin", e.ampS, e.resS), ("cos", e.ampC, e.resC)).collectFirst { case (ch, amp, res) if !(amp > MinAmplitudeNoise * floorOf(res)) =>
+        val f = floorOf(res)
+        f"no fringe on the $ch channel: its fitted amplitude ${amp / e.lsb}%.3g LSB is not above ${MinAmplitudeNoise}%.0f x its noise " +
+          f"(${f / e.lsb}%.3g LSB rms) while the other channel's is ${(if (ch == "sin") e.ampC else e.ampS) / e.lsb}%.3g LSB; is the $ch input connected?"
+      }
+    }
   }
 
   /** Warnings about the recording itself. */
