@@ -71,10 +71,8 @@ object ExplainCmd {
     if (html.isDefined && htmlDir.isDefined) throw new ExplainError("give --html FILE or --html-dir DIR, not both")
     html.foreach(f => moire.files.SafeWrite.checkFile(moire.files.SafeWrite.fileArg(f)))
     val givenEffects = modelFile.map { f =>
-      val text = readText(f)
       // the whole file checked as simulate checks it (a misspelled key, a number that is text): explain uses its effects
-      PhysicsModel.fromJson(text, f, ModelCheck)
-      val fx = PhysicsModel.effectsFromJson(PhysicsModel.jsonObject(text, f), f, Nil)
+      val fx = PhysicsModel.fromJson(readText(f), f, ModelCheck).effects
       val terms = SignalExplain.specOf(fx).terms.size
       if (terms > MaxModelTerms) throw new ExplainError(s"$f: ${fx.size} effects make $terms terms of the backward model; explain --model fits at most $MaxModelTerms")
       fx
