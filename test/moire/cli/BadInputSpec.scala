@@ -449,6 +449,8 @@ class BadInputSpec extends AnyFlatSpec with Matchers {
   bad("--json-dir --help", "no such file")("explain", (dir / "missing.csv").toString, "--json-dir", "--help")
   // explain --model checks the whole file as simulate does (it fits only the effects), and bounds the terms it adds
   bad("a --model with an unknown key", "unknown key 'frobnicate'")("explain", good.toString, "--model", rec("m-key.json", """{"frobnicate": 1, "effects": []}"""))
+  bad("a --model whose motion has a misspelled key", "motion: unknown key 'hz_'")("simulate", "--out", (dir / "mm.csv").toString,
+    "--model", rec("m-motion.json", """{"motion": {"kind": "constant", "hz": 1000, "hz_": 2000}}"""))
   bad("a --model whose amplitude is text", "amplitude must be a number")("explain", good.toString, "--model", rec("m-amp.json", """{"amplitude": "x"}"""))
   bad("a --model of 76 harmonics", "explain --model fits at most 64")("explain", good.toString, "--model", rec("m-many.json",
     ujson.write(ujson.Obj("effects" -> ujson.Arr.from(for (k <- 2 until 40; ch <- Seq("sin", "cos")) yield

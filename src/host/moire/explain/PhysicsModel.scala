@@ -170,6 +170,11 @@ object PhysicsModel {
       case Some("oscillate") => Motion.Oscillate(n("periods_peak"), n("rate_hz"), n("start", Some(0)))
       case other => throw new ExplainError(s"$where: motion.kind '${other.getOrElse("")}' must be constant, ramp or oscillate")
     }
+    // a key the kind does not read (a misspelled one) is refused, as at the model's top level
+    val keys = "kind" +: "start" +: (m match {
+      case _: Motion.Constant => Seq("hz"); case _: Motion.Ramp => Seq("hz0", "hz1", "duration_s"); case _ => Seq("periods_peak", "rate_hz") })
+    o.keys.find(k => !keys.contains(k)).foreach(k =>
+      throw new ExplainError(s"$where: motion: unknown key '$k' (a ${o("kind").str} motion has ${keys.mkString(", ")})"))
     checkMotion(m).foreach(w => throw new ExplainError(s"$where: motion: $w"))
     m
   }
