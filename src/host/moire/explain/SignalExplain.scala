@@ -402,8 +402,10 @@ object SignalExplain {
     else {
       // one channel without its fringe (a dead or unconnected input that only carries noise): the other's phase is then
       // fitted against noise, and what is left looks like pickup of half the full scale
+      // (the residual's rms first: the floor is below it, and only a channel that fails it pays for the floor's passes)
       def floorOf(r: Array[Double]) = Adequacy.floorOf(r, null, 0, e.n, Adequacy.JudgeOrder, null)
-      Seq(("sin", e.ampS, e.resS), ("cos", e.ampC, e.resC)).collectFirst { case (ch, amp, res) if !(amp > MinAmplitudeNoise * floorOf(res)) =>
+      Seq(("sin", e.ampS, e.resS, e.noise.varS), ("cos", e.ampC, e.resC, e.noise.varC)).collectFirst {
+        case (ch, amp, res, v) if !(amp > MinAmplitudeNoise * math.sqrt(v)) && !(amp > MinAmplitudeNoise * floorOf(res)) =>
         val f = floorOf(res)
         f"no fringe on the $ch channel: its fitted amplitude ${amp / e.lsb}%.3g LSB is not above ${MinAmplitudeNoise}%.0f x its noise " +
           f"(${f / e.lsb}%.3g LSB rms) while the other channel's is ${(if (ch == "sin") e.ampC else e.ampS) / e.lsb}%.3g LSB; is the $ch input connected?"
