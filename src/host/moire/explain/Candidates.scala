@@ -278,7 +278,7 @@ final class Candidates(val engine: SignalEngine) {
   def minimize(f: Double => Double, lo: Double, hi: Double, grid: Int = 12, golden: Int = 14): Double = minimizeAt(f, lo, hi, grid, golden)._1
 
   /** `minimize` and f at the minimum. The joint search's lines at 1 M samples (30 golden sections before): 4,583
-    * binned profiles a bench explain, 2,958 with the parabolas to the same bracket.
+    * binned profiles a bench explain, 2,963 with the parabolas to the same bracket.
     */
   def minimizeAt(f: Double => Double, lo: Double, hi: Double, grid: Int = 12, golden: Int = 14): (Double, Double) = {
     import org.hipparchus.optim.{MaxEval, nonlinear}, org.hipparchus.optim.univariate._
