@@ -392,6 +392,11 @@ class BadInputSpec extends AnyFlatSpec with Matchers {
   os.write.over(pInput, head + "sin,cos\n" + rows(2000))
   bad("an explain --plots folder where a plot would replace an input", "--plots writes good_*.png", Seq(pInput))(
     "explain", good.toString, pInput.toString, "--quiet", "--no-rtl", "--plots", pdir.toString)
+  // '-' is standard output to other tools: no file of that name is written in the working folder
+  bad("a simulate --out of - (standard output)", "no output to standard output", Seq(os.pwd / "-"))("simulate", "--out", "-", "--samples", "100")
+  bad("a replay --out of -", "no output to standard output", Seq(os.pwd / "-"))("replay", good.toString, "--out", "-")
+  bad("an explain --html of -", "no output to standard output", Seq(os.pwd / "-"))("explain", good.toString, "--quiet", "--no-rtl", "--html", "-")
+  bad("an explain --json-dir of -", "--json-dir: - names no folder", Seq(os.pwd / "-"))("explain", good.toString, "--quiet", "--no-rtl", "--json-dir", "-")
   bad("a simulate --out that ends with a slash (a folder)", "ends with /, so it names a folder", Seq(dir / "newdir"))(
     "simulate", "--out", (dir / "newdir").toString + "/", "--samples", "100")
   bad("an explain option given twice (the last would win)", "--plots is given 2 times")(

@@ -124,6 +124,7 @@ object SafeWrite {
 
   /** Checks, before any work, that `target` can be written: its folder is writable and it is no folder. */
   def checkFile(target: os.Path): Unit = {
+    if (target.last == "-") throw new FileError(Stdout)
     if (os.isDir(target, followLinks = false)) throw new FileError(s"$target: is a folder, not a file")
     checkReplaceable(target)
     checkFolder(target / os.up)
@@ -144,11 +145,17 @@ object SafeWrite {
     finally in.close()
   }
 
+  /** An output named `-`: other tools' name for standard output, which no command here writes to (a file named `-`
+    * would be written in the working folder instead).
+    */
+  val Stdout = "-: moire writes no output to standard output; give a file name (e.g. out.csv)"
+
   /** An output file's name as the user gave it: a name ending in a slash names a folder (a file of the folder's name
     * would be written), an empty one no file at all.
     */
   def fileArg(given: String): os.Path = {
     if (given.trim.isEmpty) throw new FileError("an output file's name is empty; give a file name")
+    if (given.trim == "-") throw new FileError(Stdout)
     if (given.endsWith("/")) throw new FileError(s"$given: ends with /, so it names a folder; give a file name (e.g. ${given}out.csv)")
     os.Path(given, os.pwd)
   }
@@ -158,6 +165,7 @@ object SafeWrite {
     */
   def folderArg(given: String, option: String): os.Path = {
     if (given.trim.isEmpty) throw new FileError(s"$option: the folder's name is empty; give a folder (. for the working folder)")
+    if (given.trim == "-") throw new FileError(s"$option: - names no folder (moire writes nothing to standard output); give a folder")
     os.Path(given, os.pwd)
   }
 
