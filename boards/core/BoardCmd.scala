@@ -22,6 +22,8 @@ object BoardCmd {
     val f = AdcFormat.parse(adcFormat).fold(e => bad(s"--adc-format: $e"), identity)
     val c = ClockSource.parse(clockSource).fold(bad, identity)
     if (clockHz < 1000000 || clockHz > 200000000) bad(s"--clock-hz must be in 1000000..200000000, got $clockHz")
+    // the host's record, board-reg and monitor take these rates only: a board at another could not be talked to
+    if (baud < 300 || baud > 12000000) bad(s"--baud must be in 300..12000000, got $baud")
     Boards.find(board).toOption.flatMap(_.clockProblem(clockHz, c)).foreach(bad)   // the board's clock first: --adc-clock-hz derives from it
     checked {
       val base = BoardParams()

@@ -120,7 +120,8 @@ class QuartusProjectSpec extends AnyFlatSpec {
       Seq("de2-115", "--design", "fast") -> "--design: 'fast' is not a board design",
       Seq("de2-115", "--adc-format", "gray") -> "--adc-format: ADC format 'gray' is unknown",
       Seq("de2-115", "--decimation", "0") -> "--decimation must be in 1..16777216",
-      Seq("de2-115", "--baud", "20000000") -> "--baud must be in 1..12500000",
+      Seq("de2-115", "--baud", "20000000") -> "--baud must be in 300..12000000, got 20000000",
+      Seq("de2-115", "--baud", "1") -> "--baud must be in 300..12000000, got 1",
       Seq("de2-115", "--fifo-depth", "4") -> "--fifo-depth must be in 8..65536",
       Seq("de2-115", "--clock-source", "xtal") -> "--clock-source: 'xtal' is unknown")) {
       val (code, _, err) = moire.cli.CliProcess.run("board" +: args: _*)

@@ -357,6 +357,25 @@ class BadInputSpec extends AnyFlatSpec with Matchers {
   bad("a design with --sweep", "--design, --keep and the CORDIC options")("cost", "--sweep", "--design", "subdiv")
   bad("timing's CORDIC options with another design", "apply to --design cordic only, not quadcomp")("timing", "--design", "quadcomp", "--width", "12")
 
+  behavior of "fuzzed inputs that passed (2026-11-30)"
+  bad("a coarse_quantization of 5.5 bits", "--effect coarse_quantization: effective_bits must be a whole number from 4 to 24", Seq(existing))(
+    sim("--samples", "1000", "--effect", "coarse_quantization:effective_bits=5.5"): _*)
+  bad("a jitter of 1 ms at 10 MS/s", "jitter jitter_s must be at most a quarter of the sample period", Seq(existing))(
+    sim("--samples", "1000", "--effect", "jitter:jitter_s=1e-3"): _*)
+  bad("a skew longer than the record", "channel_skew |skew_s| must be below the record's length", Seq(existing))(
+    sim("--samples", "2000", "--effect", "channel_skew:skew_s=1e-3"): _*)
+  bad("a gain of 0", "--gain-sin must be above 0", Seq(existing))(sim("--samples", "1000", "--gain-sin", "0"): _*)
+  bad("a phase error of 90 degree", "--phase-error-deg must be between -90 and 90 degree", Seq(existing))(sim("--samples", "1000", "--phase-error-deg", "90"): _*)
+  bad("a model file with a key given twice", "dup.json: key 'order' is given twice in one object", Seq(existing))(
+    sim("--model", rec("dup.json", """{"effects": [{"effect": "harmonic", "order": 3, "amplitude_rel": 0.01, "channel": "sin", "order": 5}]}""")): _*)
+  bad("a model file with a top-level key given twice", "dup2.json: key 'amplitude' is given twice in one object", Seq(existing))(
+    sim("--model", rec("dup2.json", """{"amplitude": 0.9, "amplitude": 0.5}""")): _*)
+  bad("a board at 1 baud", "--baud must be in 300..12000000, got 1")("board", "de2-115", "--out", (dir / "bd").toString, "--baud", "1")
+  bad("an empty --widths list", "--widths: '' is not an integer list")("bounds", "--widths", ",")
+  bad("a --iterations list with a repeat", "--iterations: 8 is given twice")("bounds", "--iterations", "8,8")
+  bad("a board-reg decimation of -1", "decimation must be in 1..16777216, got -1")("board-reg", "--port", "/dev/null", "--write", "decimation=-1")
+  bad("a monitor --bind that is empty", "--bind: the address is empty")("monitor", "--simulate", "--bind", "")
+
   behavior of "explain-bench"
   bad("--samples 0", "--samples must be in 10000..")("explain-bench", "--samples", "0")
   bad("--runs 0", "--runs must be in 1..10, got 0")("explain-bench", "--runs", "0")
@@ -429,6 +448,33 @@ class BadInputSpec extends AnyFlatSpec with Matchers {
   if (isRoot && !os.exists(device, followLinks = false)) os.proc("mknod", device.toString, "c", "1", "3").call()
   if (isRoot) bad("an --out that is a device node", "is a character device")("simulate", "--out", device.toString, "--samples", "100")
   else bad("an --out that is a device node", "is a character device")("simulate", "--out", "/dev/null", "--samples", "100")
+  // a recording is data: a measured one is written over by no command, a simulated one only by a recording
+  private val measured = dir / "measured.csv"
+  os.write.over(measured, head + "# source: bench 3\nsin,cos\n" + rows(2000))
+  private val simulated = dir / "simulated.csv"
+  os.write.over(simulated, head + "# model: {}\n# source: moire simulate\nsin,cos\n" + rows(2000))
+  bad("an explain --html over a measured recording", "is a measured recording (simulate did not write it", Seq(measured))(
+    "explain", good.toString, "--quiet", "--no-rtl", "--html", measured.toString)
+  bad("a simulate --out over a measured recording", "is a measured recording", Seq(measured))("simulate", "--out", measured.toString, "--samples", "100")
+  bad("a replay --out over a measured recording", "is a measured recording", Seq(measured))("replay", good.toString, "--out", measured.toString)
+  bad("an explain --html over a simulated recording", "is a recording, and this command's output is not one", Seq(simulated))(
+    "explain", good.toString, "--quiet", "--no-rtl", "--html", simulated.toString)
+  bad("an output name with a line break", "an output name holds a control character (U+000A")("simulate", "--out", (dir / "a\nb.csv").toString, "--samples", "100")
+  bad("a replay --out that is empty", "an output file's name is empty")("replay", good.toString, "--out", "")
+  bad("an accuracy --json that is empty", "an output file's name is empty")("accuracy", "--json", "")
+  "simulate" should "write over a recording it wrote (its model line makes it again)" in {
+    val f = dir / "again.csv"
+    for (seed <- Seq("1", "2")) { val (code, err) = runCli("simulate", "--out", f.toString, "--samples", "100", "--seed", seed); withClue(err) { code shouldBe 0 } }
+    os.read(f) should include("\"seed\":2")
+  }
+  "explain" should "name the outputs of a recording called .csv after it, not as hidden files" in {
+    val d = dir / "dotcsv"; os.makeDir.all(d); os.copy.over(good, d / ".csv")
+    val (code, err) = runCli("explain", (d / ".csv").toString, "--quiet", "--no-rtl", "--json-dir", d.toString)
+    withClue(err) { code shouldBe 0 }
+    os.exists(d / "csv.json") shouldBe true
+    os.exists(d / ".json") shouldBe false
+  }
+
   it should "keep the pipe, the link and the device what they were" in {
     os.isLink(link) shouldBe true
     os.read(existing) shouldBe "keep me\n"

@@ -18,7 +18,7 @@ class CliSpec extends AnyFlatSpec {
       Seq("emit", "--frac-bits", "30") -> "--frac-bits must be in 1..17",
       Seq("emit", "--bogus", "1") -> "Unknown argument",
       Seq("design", "--function", "tan", "--max-error", "1e-3") -> "--function: 'tan'",
-      Seq("design", "--function", "sin", "--max-error", "-1") -> "--max-error must be a positive number",
+      Seq("design", "--function", "sin", "--max-error", "-1") -> "--max-error must be a positive finite number",
       Seq("nosuch") -> "Unable to find subcommand")
     for ((args, expected) <- cases) {
       val (code, out, err) = run(args: _*)

@@ -102,7 +102,7 @@ class MonitorApiSpec extends AnyFlatSpec {
     assert(err(o.copy(port = Some("/dev/ttyUSB9"))).contains("give one of"))
     assert(err(o.copy(httpPort = 70000)).contains("--http-port must be in 0..65535"))
     assert(err(o.copy(bind = "192.0.2.1")).contains("--bind '192.0.2.1' is not an address of this computer")) // TEST-NET-1
-    assert(err(o.copy(scale = Scale(None, Some(-1), None, None))).contains("--period-um must be a positive number"))
+    assert(err(o.copy(scale = Scale(None, Some(-1), None, None))).contains("--period-um must be a positive finite number"))
     assert(err(o.copy(simulate = false, replay = Some("x.csv"), effects = Seq("jitter:jitter_s=1e-9"))).contains("--effect belongs to --simulate"))
     assert(intercept[MonitorError](MonitorCmd.source(o.copy(simulate = false, replay = Some("/nonexistent.csv")))).getMessage.contains("no such file"))
     val warned = Seq.newBuilder[String]

@@ -45,12 +45,19 @@ class ReplayCliSpec extends AnyFlatSpec {
       Seq(ok, "--input-bits", "10") -> "the recording has 12-bit ADC codes, the design reads 10 bits (--input-bits)",
       Seq(ok, "--design", "fir") -> "--design: 'fir' is not a replayable design; allowed: subdiv, corrected",
       Seq(ok, "--counts", "5") -> "--counts (M) must be a power of two in 4..65536, got 5",
+      Seq(ok, "--design", "corrected", "--iterations", "99") -> "--iterations applies to --design subdiv only: the corrected chain takes --counts, --adc-format",
+      Seq(ok, "--design", "corrected", "--input-bits", "10") -> "--input-bits: the corrected chain reads 12-bit codes only",
       Seq(ok, "--check-rows", "x") -> "--check-rows: 'x' is not a whole number from 1 to 2147483647",
       Seq((dir / "none.csv").toString) -> "no such file")
     for ((args, msg) <- cases) {
       val (code, _, err) = CliProcess.runWith(jvm)("replay" +: args: _*)
       assert(code == 2 && err.trim.linesIterator.size == 1 && err.contains(msg), s"$args: $code $err")
     }
+  }
+
+  it should "run the corrected chain at the recording's counts per period (M), not at its default" in {
+    for (m <- Seq(4, 4096)) assert(ReplayDesign("corrected", ReplayCmd.config(Nil, Map("counts_per_period" -> m.toString))).out.counts == m)
+    assert(ReplayDesign("corrected", ReplayCmd.config(Seq("--counts", "256"), Map("counts_per_period" -> "4096"))).out.counts == 256)
   }
 
   "explain" should "report a board position that differs from the RTL as a finding" in {

@@ -12,7 +12,7 @@ object CostCmd {
     val d = Designs.find(design, p).fold(e => throw new UsageError(e), identity)
     if (timeout < 1) throw new UsageError(s"--timeout must be at least 1 second, got $timeout")
     // outputs before the work: a bad path fails now, not after yosys
-    json.foreach(f => moire.files.SafeWrite.checkFile(os.Path(f, os.pwd)))
+    json.foreach(f => moire.files.SafeWrite.checkFile(moire.files.SafeWrite.fileArg(f)))
     keep.foreach(k => moire.files.SafeWrite.checkFolder(os.Path(k, os.pwd)))
     if (!Yosys.available) throw new UsageError("yosys not found on PATH (install yosys 0.23 or newer)")
     val work = keep.map(k => os.Path(k, os.pwd)).getOrElse(Cost.tempDir())
@@ -48,7 +48,7 @@ object CostCmd {
     }
     if (pts.isEmpty) throw new UsageError(s"--sweep: no (n, b) with b - $spread <= n <= b in these lists")
     moire.files.SafeWrite.checkFolder(os.Path(out, os.pwd))
-    json.foreach(f => moire.files.SafeWrite.checkFile(os.Path(f, os.pwd)))
+    json.foreach(f => moire.files.SafeWrite.checkFile(moire.files.SafeWrite.fileArg(f)))
     if (!Yosys.available) throw new UsageError("yosys not found on PATH (install yosys 0.23 or newer)")
     val dir = os.Path(out, os.pwd)
     log(s"${pts.size} configurations; results cached in ${dir / "cache"}")

@@ -107,7 +107,7 @@ object Main {
 
   @main(doc = "Reproduce the papers' accuracy tables; exit code 0 only when every row holds.")
   def accuracy(@arg(doc = "also write the rows as JSON to this file") json: Option[String] = None): Unit = {
-    json.foreach(f => moire.files.SafeWrite.checkFile(os.Path(f, os.pwd)))   // before the work, not after it
+    json.foreach(f => moire.files.SafeWrite.checkFile(moire.files.SafeWrite.fileArg(f)))   // before the work, not after it
     val rows = Reproduce.rows(s => System.err.println(s"accuracy: $s ..."))
     AccuracyTable.print(rows)
     json.foreach { f =>
@@ -124,8 +124,12 @@ object Main {
   def bounds(@arg(doc = "one mode, or all when left out") mode: Option[String] = None,
              @arg(doc = "comma-separated iteration counts") iterations: String = "8,12,16,20,24",
              @arg(doc = "comma-separated data widths") widths: String = "12,16,18,24,32"): Unit = {
-    def ints(opt: String, s: String) = s.split(",").toSeq.map(v => moire.numbers.Decimal.int(v).getOrElse(
-      throw new UsageError(s"--$opt: '$v' is not an integer list like 8,12,16")))
+    def ints(opt: String, s: String) = {
+      val vs = s.split(",", -1).toSeq.map(v => moire.numbers.Decimal.int(v).getOrElse(
+        throw new UsageError(s"--$opt: '$v' is not an integer list like 8,12,16")))
+      vs.diff(vs.distinct).headOption.foreach(v => throw new UsageError(s"--$opt: $v is given twice"))
+      vs
+    }
     val modes = mode.map(m => Seq(CordicMode.parse(m).fold(e => throw new UsageError(e), identity))).getOrElse(CordicMode.all)
     val ns = ints("iterations", iterations); val bs = ints("widths", widths)
     val configs = for (m <- modes; n <- ns; b <- bs) yield (m, n, b)
@@ -151,7 +155,7 @@ object Main {
              @arg(doc = "truncate | half-even") rounding: String = "half-even",
              @arg(doc = "asin only: peak lookup table entries (power of two, 0 = none)") peakTable: Int = 0): Unit = {
     val r = Rounding.parse(rounding).fold(e => throw new UsageError(e), identity)
-    if (!(maxError > 0) || maxError.isInfinite) throw new UsageError(s"--max-error must be a positive number, got $maxError")
+    if (!(maxError > 0) || maxError.isInfinite) throw new UsageError(s"--max-error must be a positive finite number, got $maxError")
     val d = Designer.cheapest(function, maxError, r, peakTable).fold(e => throw new UsageError(e), identity)
     println(d.report)
   }
@@ -199,8 +203,8 @@ object Main {
                @arg(doc = "grating lines per revolution (amplitude_modulation)") linesPerRev: Option[Double] = None,
                @arg(doc = "an effect NAME:key=value,...,channel=sin|cos|both (repeat); `explain --help` lists the effects and their keys") effect: Seq[String] = Nil,
                @arg(doc = "a model JSON file (the JSON simulate writes into the # model: line); overrides the options") model: Option[String] = None): Unit =
-    println(moire.explain.ExplainCmd.simulate(moire.explain.ExplainCmd.SimOptions(out, samples, sampleRateHz, adcBits, adc, motion,
-      amplitude, offsetSin, offsetCos, gainSin, gainCos, phaseErrorDeg, noise, seed, linesPerRev, effect, model)))
+    println(moire.files.SafeWrite.writesRecordings.withValue(true)(moire.explain.ExplainCmd.simulate(moire.explain.ExplainCmd.SimOptions(out, samples, sampleRateHz, adcBits, adc, motion,
+      amplitude, offsetSin, offsetCos, gainSin, gainCos, phaseErrorDeg, noise, seed, linesPerRev, effect, model))))
 
   @main(doc = "Fit the physics model to recordings, locate the misfit, name the effects left out (JSON and PNG per file).")
   def explain(@arg(doc = "recording or calibration files") files: mainargs.Leftover[String],
@@ -270,10 +274,10 @@ object Main {
     if (burst.isEmpty && (trigger != "now" || pre != 0)) throw new UsageError("--trigger and --pre apply to a burst; add --burst N, or leave them out")
     val o = moire.stream.RecordOptions(port, secs, out, baud, decimation, adcClockHz, adcFormat, countsPerPeriod,
       listenOnly.value, timeoutMs, quiet.value, refCountsPerPeriod, refCountsPerTurn)
-    burst match {
+    moire.files.SafeWrite.writesRecordings.withValue(true)(burst match {
       case Some(n) => moire.stream.BurstRecorder.run(o, moire.stream.BurstOptions(n, trigger, pre, secs), println(_), System.err.println(_))
       case None => moire.stream.Recorder.run(o, println(_), System.err.println(_))
-    }
+    })
   }
 
   @main(doc = "Read and write the board's registers by name (load, writes, coefficients, reads, save; none: read all).")

@@ -24,7 +24,7 @@ object TimingCmd {
     if (!Seq("router1", "router2").contains(router)) throw new UsageError(s"--router: '$router' is not a nextpnr router; allowed: router1, router2")
     if (timeout < 1) throw new UsageError(s"--timeout must be at least 1 second, got $timeout")
     // outputs and the cache before any tool runs
-    (json ++ markdown).foreach(f => moire.files.SafeWrite.checkFile(os.Path(f, os.pwd)))
+    (json ++ markdown).foreach(f => moire.files.SafeWrite.checkFile(moire.files.SafeWrite.fileArg(f)))
     cache.foreach(c => moire.files.SafeWrite.checkFolder(os.Path(c, os.pwd)))
     for (j <- json; m <- markdown if os.Path(j, os.pwd) == os.Path(m, os.pwd))
       throw new UsageError(s"--json and --markdown name one file ($j); give two names")

@@ -49,7 +49,7 @@ object Calibrate {
     // a harmonic beyond the compensator's coefficient range: one line naming the file
     val (json, listing) = try (CoefficientFile.json(p, data.file, fit, extra.result()), CoefficientFile.listing(p, fit))
       catch { case e: CalibrationError => throw new CalibrationError(s"${data.file}: ${e.getMessage}") }
-    val stem = data.file.stripSuffix(".csv")
+    val stem = moire.files.Stem.of(data.file)
     val jf = out / s"$stem.coefficients.json"
     val rf = out / s"$stem.registers.txt"
     val pf = out / s"$stem.png"

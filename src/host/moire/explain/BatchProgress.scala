@@ -18,7 +18,7 @@ final class BatchProgress(total: Int, terminal: Boolean = moire.progress.Bar.ter
 
   /** File `i` starts: its progress (on a terminal, a part of the one line; elsewhere its own lines). */
   def start(i: Int, file: os.Path): Progress =
-    if (!terminal) Progress.bar(file.last.stripSuffix(".csv"))
+    if (!terminal) Progress.bar(moire.files.Stem.of(file))
     else {
       synchronized { running(i) = new Running(file.last); draw(force = true) }
       new Progress {

@@ -69,7 +69,11 @@ object ExplainCmd {
     if (files.isEmpty) throw new ExplainError("explain: name at least one recording file")
     if (html.isDefined && files.size > 1) throw new ExplainError(s"--html names one file, but ${files.size} recordings were given; use --html-dir DIR (one DIR/<name>.html each)")
     if (html.isDefined && htmlDir.isDefined) throw new ExplainError("give --html FILE or --html-dir DIR, not both")
-    html.foreach(f => moire.files.SafeWrite.checkFile(moire.files.SafeWrite.fileArg(f)))
+    html.foreach { f =>
+      val p = moire.files.SafeWrite.fileArg(f)
+      moire.files.SafeWrite.refuseInputs(p, files.map(os.Path(_, os.pwd)) ++ modelFile.map(os.Path(_, os.pwd)))
+      moire.files.SafeWrite.checkFile(p)
+    }
     val givenEffects = modelFile.map { f =>
       // the whole file checked as simulate checks it (a misspelled key, a number that is text): explain uses its effects
       val fx = PhysicsModel.fromJson(readText(f), f, ModelCheck).effects
@@ -89,25 +93,25 @@ object ExplainCmd {
     outDirs.foreach(moire.files.SafeWrite.checkFolder)
     // no report written over a recording or the model file
     val inputs = paths ++ modelFile.map(os.Path(_, os.pwd))
-    for (d <- jsonDir; p <- paths) moire.files.SafeWrite.refuseInputs(os.Path(d, os.pwd) / s"${p.last.stripSuffix(".csv")}.json", inputs)
+    for (d <- jsonDir; p <- paths) moire.files.SafeWrite.refuseInputs(os.Path(d, os.pwd) / s"${moire.files.Stem.of(p)}.json", inputs)
     html.foreach(f => moire.files.SafeWrite.refuseInputs(os.Path(f, os.pwd), inputs))
-    for (d <- htmlDir; p <- paths) moire.files.SafeWrite.refuseInputs(os.Path(d, os.pwd) / s"${p.last.stripSuffix(".csv")}.html", inputs)
+    for (d <- htmlDir; p <- paths) moire.files.SafeWrite.refuseInputs(os.Path(d, os.pwd) / s"${moire.files.Stem.of(p)}.html", inputs)
     // the plots' names depend on the findings (<stem>_<what>.png): no input may have such a name in --plots
-    for (d <- plotDir; p <- paths; i <- inputs; stem = p.last.stripSuffix(".csv"))
+    for (d <- plotDir; p <- paths; i <- inputs; stem = moire.files.Stem.of(p))
       if (i.last.startsWith(stem + "_") && i.last.endsWith(".png") && moire.files.SafeWrite.same(os.Path(d, os.pwd) / i.last, i))
         throw new ExplainError(s"$i: is an input of this command, and --plots writes ${stem}_*.png into its folder; choose another --plots folder")
-    if (outDirs.nonEmpty) paths.groupBy(_.last.stripSuffix(".csv")).collectFirst { case (stem, ps) if ps.distinct.size > 1 =>
+    if (outDirs.nonEmpty) paths.groupBy(p => moire.files.Stem.of(p)).collectFirst { case (stem, ps) if ps.distinct.size > 1 =>
       throw new ExplainError(s"${ps.distinct.mkString(" and ")} share the name $stem: their reports would overwrite each other; rename one")
     }
     // the plotting library's start (fonts, image classes) on a side thread while the first file is read and fitted
     if (plotDir.isDefined || html.isDefined || htmlDir.isDefined) Plots.warmUp()
     // Every file gets its report or its one-line error; the command fails after all were tried.
-    def htmlOf(p: os.Path) = html.map(os.Path(_, os.pwd)).orElse(htmlDir.map(d => os.Path(d, os.pwd) / s"${p.last.stripSuffix(".csv")}.html"))
+    def htmlOf(p: os.Path) = html.map(os.Path(_, os.pwd)).orElse(htmlDir.map(d => os.Path(d, os.pwd) / s"${moire.files.Stem.of(p)}.html"))
     def one(p: os.Path, progress: Progress, say: String => Unit) =
       explainOne(p, givenEffects, jsonDir, plotDir, progress, say, rtl, htmlOf(p), materiality)
     val results = if (paths.size > 1) batch(paths, quiet, one) else {
       val p = paths.head
-      val r = one(p, if (quiet) Progress.none else Progress.bar(p.last.stripSuffix(".csv")), s => if (!quiet) System.err.println(s"explain: $s"))
+      val r = one(p, if (quiet) Progress.none else Progress.bar(moire.files.Stem.of(p)), s => if (!quiet) System.err.println(s"explain: $s"))
       if (!quiet) print(r.text)
       Seq(Right(r))
     }
@@ -141,7 +145,7 @@ object ExplainCmd {
                          progress: Progress, say: String => Unit, rtl: Option[Seq[String]], html: Option[os.Path],
                          materiality: Materiality): Report = {
     val kind = kindOf(p)
-    val stem = p.last.stripSuffix(".csv")
+    val stem = moire.files.Stem.of(p)
     // plots go to --plots, or (for the HTML alone) to a temporary folder
     val plotFolder = plotDir.map(os.Path(_, os.pwd)).orElse(html.map(_ => os.temp.dir(prefix = "moire-explain-plots")))
     var plotFiles = Seq.empty[os.Path]

@@ -6,8 +6,8 @@ package moire.explain
   * What is significant but smaller goes to the report's `negligible` list with its size.
   */
 final case class Materiality(minLsb: Double = Materiality.MinLsb, minNoise: Double = Materiality.MinNoise) {
-  require(minLsb >= 0 && !minLsb.isInfinite, s"--min-effect-lsb must be 0 or more, got $minLsb")
-  require(minNoise >= 0 && !minNoise.isInfinite, s"--min-effect-noise must be 0 or more, got $minNoise")
+  require(minLsb >= 0 && !minLsb.isInfinite, s"--min-effect-lsb must be a finite number, 0 or more, got $minLsb")
+  require(minNoise >= 0 && !minNoise.isInfinite, s"--min-effect-noise must be a finite number, 0 or more, got $minNoise")
   /** The floor in full-scale units for a recording with this LSB and noise rms. */
   def floor(lsb: Double, noise: Double): Double = math.max(minLsb * lsb, minNoise * noise)
 }

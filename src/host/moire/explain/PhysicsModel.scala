@@ -198,6 +198,9 @@ object PhysicsModel {
       .orElse(Option.when(at("noise_rms") < 0)(s"${name("noise_rms")} must be 0 or more (full-scale rms), got ${at("noise_rms")}"))
       .orElse(Option.when(at("samples") < 1)(s"${name("samples")} must be at least 1, got ${at("samples").toLong}"))
       .orElse(Option.when(!(at("amplitude") > 0))(s"${name("amplitude")} must be above 0, got ${at("amplitude")}"))
+      .orElse(Seq("gain_sin", "gain_cos").filter(v.contains).collectFirst { case k if !(at(k) > 0) => s"${name(k)} must be above 0 (a channel's gain), got ${at(k)}" })
+      .orElse(v.get("phase_error_deg").filter(p => !(math.abs(p) < 90)).map(p =>
+        s"${name("phase_error_deg")} must be between -90 and 90 degree (at 90 the two channels carry one signal: no quadrature), got $p"))
       .orElse(v.get("lines_per_rev").filter(l => !(l > 0)).map(l => s"${name("lines_per_rev")} must be above 0, got $l"))
   }
 
@@ -206,7 +209,10 @@ object PhysicsModel {
     */
   /** The object of a model file, or one line saying why the text is not one. */
   def jsonObject(text: String, where: String): collection.Map[String, ujson.Value] = {
-    val v = try ujson.read(text) catch { case e: Exception => throw new ExplainError(s"$where: not valid JSON (${e.getMessage.linesIterator.next()})") }
+    val v = try moire.options.StrictJson.read(text) catch {
+      case e: moire.options.StrictJson.DuplicateKey => throw new ExplainError(s"$where: ${e.getMessage}")
+      case e: Exception => throw new ExplainError(s"$where: not valid JSON (${e.getMessage.linesIterator.next()})")
+    }
     v.objOpt.getOrElse(throw new ExplainError(s"$where: the model must be a JSON object"))
   }
 

@@ -15,7 +15,7 @@ final class Monitor(val live: Live, source: Source, out: os.Path, work: os.Path)
 
   /** Parses a burst request {"samples": N, "trigger": "now", "pre": P, "wait_seconds": S}; Left with a message. */
   def burstOptions(body: String): Either[String, BurstOptions] = {
-    val j = try ujson.read(if (body.trim.isEmpty) "{}" else body) catch { case e: Exception => return Left(s"not JSON: ${e.getMessage.linesIterator.next().take(80)}") }
+    val j = try moire.options.StrictJson.read(if (body.trim.isEmpty) "{}" else body) catch { case e: Exception => return Left(s"not JSON: ${e.getMessage.linesIterator.next().take(80)}") }
     val o = j.objOpt.getOrElse(return Left("expected a JSON object like {\"samples\": 16384, \"trigger\": \"now\"}"))
     val known = Set("samples", "trigger", "pre", "wait_seconds")
     o.keys.find(!known(_)).foreach(k => return Left(s"unknown field '$k'; known: ${known.mkString(", ")}"))

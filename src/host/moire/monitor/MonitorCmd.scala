@@ -17,7 +17,8 @@ object MonitorCmd {
       throw new MonitorError(s"--decimation must be in 1..${moire.protocol.Registers.MaxDecimation}, got $d"))
     for ((k, v) <- Seq("--counts-per-period" -> o.scale.countsPerPeriod, "--period-um" -> o.scale.periodUm,
       "--lines-per-rev" -> o.scale.linesPerRev, "--full-scale-v" -> o.scale.fullScaleV); x <- v)
-      if (!(x > 0) || x.isInfinite) throw new MonitorError(s"$k must be a positive number, got $x")
+      if (!(x > 0) || x.isInfinite) throw new MonitorError(s"$k must be a positive finite number, got $x")
+    if (o.bind.trim.isEmpty) throw new MonitorError("--bind: the address is empty; give one of this computer's (127.0.0.1 by default, 0.0.0.0 for all)")
     val notHere = new MonitorError(s"--bind '${o.bind}' is not an address of this computer")
     val a = try java.net.InetAddress.getByName(o.bind) catch { case _: java.net.UnknownHostException => throw notHere }
     if (!a.isAnyLocalAddress && !a.isLoopbackAddress && java.net.NetworkInterface.getByInetAddress(a) == null) throw notHere

@@ -15,7 +15,7 @@ object Tolerances {
 
   /** Changes from a JSON object of some of [[keys]]; Left with a message for anything else. */
   def update(t: Tolerances, body: String): Either[String, Tolerances] = {
-    val j = try ujson.read(body) catch { case e: Exception => return Left(s"not JSON: ${e.getMessage.linesIterator.next().take(80)}") }
+    val j = try moire.options.StrictJson.read(body) catch { case e: Exception => return Left(s"not JSON: ${e.getMessage.linesIterator.next().take(80)}") }
     val o = j.objOpt.getOrElse(return Left("expected a JSON object like {\"phase_deg\": 1.5}"))
     val bad = o.keys.filterNot(keys.contains)
     if (bad.nonEmpty) return Left(s"unknown tolerance ${bad.mkString(", ")}; known: ${keys.mkString(", ")}")

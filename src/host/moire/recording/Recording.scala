@@ -46,8 +46,8 @@ object Recording {
     val rest = r.meta.filter { case (k, _) => !fixed.exists(_._1 == k) }.toSeq.sortBy(_._1)
     val cols = r.extra.keys.toSeq.sorted
     val colData = cols.map(r.extra).toArray
-    // streamed row by row: a file of 20 million rows is never held as text
-    moire.files.SafeWrite(path) { tmp =>
+    // streamed row by row: a file of 20 million rows is never held as text; a recording may replace a simulated one
+    moire.files.SafeWrite.writesRecordings.withValue(true)(moire.files.SafeWrite(path) { tmp =>
       val w = new java.io.BufferedWriter(new java.io.OutputStreamWriter(java.nio.file.Files.newOutputStream(tmp.toNIO), "UTF-8"), 1 << 16)
       try {
         w.write(Magic); w.write('\n')
@@ -64,7 +64,7 @@ object Recording {
           sb.append('\n'); w.append(sb); i += 1
         }
       } finally w.close()
-    }
+    })
   }
 
   private def fmt(d: Double): String = if (d == math.rint(d) && math.abs(d) < 1e15) d.toLong.toString else d.toString

@@ -12,7 +12,8 @@ object ReplayCmd {
       |  Runs a moire-recording v1 file's ADC codes through the generated RTL (Verilator, built once per
       |  configuration and cached), writes the outputs (row i = outputs for input sample i) and checks a
       |  sample of the rows against the bit-accurate model. Design options default from the recording's
-      |  metadata (adc_bits -> --input-bits, adc -> --adc-format, counts_per_period -> --counts).
+      |  metadata (adc_bits -> --input-bits, adc -> --adc-format, counts_per_period -> --counts); the corrected
+      |  chain takes --counts and --adc-format and reads 12-bit codes, the rest at its defaults.
       |    --check-rows N      rows checked clock by clock from the start (default 100000)
       |    --check-windows W   windows of 5000 rows checked over the rest (default 20)""".stripMargin
 
@@ -51,8 +52,10 @@ object ReplayCmd {
 
   /** Checks that the design reads the recording's ADC. */
   def matchAdc(file: String, rec: Recording, d: ReplayDesign): Unit = {
-    if (rec.adc.bits != d.inputBits)
-      throw new ReplayError(s"$file: the recording has ${rec.adc.bits}-bit ADC codes, the design reads ${d.inputBits} bits (--input-bits)")
+    if (rec.adc.bits != d.inputBits) throw new ReplayError(d match {
+      case _: ReplayDesign.Corrected => s"$file: the recording has ${rec.adc.bits}-bit ADC codes, the corrected chain reads ${d.inputBits}-bit codes (--design subdiv --input-bits ${rec.adc.bits} reads them)"
+      case _ => s"$file: the recording has ${rec.adc.bits}-bit ADC codes, the design reads ${d.inputBits} bits (--input-bits)"
+    })
     if (rec.adc.format != d.format)
       throw new ReplayError(s"$file: the recording's ADC format is ${rec.adc.format.name}, the design reads ${d.format.name} (--adc-format)")
   }
@@ -89,9 +92,12 @@ object ReplayCmd {
   def run(opts: Options): Boolean = {
     val (design, out, file, quiet, head, windows) = (opts.design, opts.out, opts.file, opts.quiet, opts.checkRows, opts.checkWindows)
     val f = file.getOrElse(throw new ReplayError("replay: name a recording file (see --help)"))
+    if (design == "corrected") opts.subdiv.filter(_.startsWith("--")).map(_.takeWhile(_ != '=')).find(o => !ReplayDesign.correctedOptions.contains(o)).foreach { o =>
+      throw new ReplayError(s"$o applies to --design subdiv only: the corrected chain takes ${ReplayDesign.correctedOptions.mkString(", ")} (the rest at its defaults)")
+    }
     val path = os.Path(f, os.pwd)
     // The output is checked before the long work: never one of the inputs, always writable.
-    val dest = os.Path(out.getOrElse(path.last.stripSuffix(".csv") + "-replay.csv"), os.pwd)
+    val dest = out.fold(os.Path(moire.files.Stem.of(path) + "-replay.csv", os.pwd))(moire.files.SafeWrite.fileArg)
     moire.files.SafeWrite.refuseInputs(dest, Seq(path))
     if (out.isEmpty) moire.files.SafeWrite.checkPicked(dest, OutputCsv.Magic, "--out FILE") else moire.files.SafeWrite.checkFile(dest)
     var t = System.nanoTime()
@@ -101,6 +107,8 @@ object ReplayCmd {
     val readS = lap()
     moire.recording.FormatCheck.mismatch(rec).foreach(why => throw new ReplayError(s"$f: $why"))
     val d = ReplayDesign(design, config(opts.subdiv, rec.meta))
+    if (d.isInstanceOf[ReplayDesign.Corrected] && config(opts.subdiv, rec.meta).inputBits != d.inputBits && opts.subdiv.exists(_.takeWhile(_ != '=') == "--input-bits"))
+      throw new ReplayError(s"--input-bits: the corrected chain reads ${d.inputBits}-bit codes only")
     matchAdc(f, rec, d)
     val p = pins(f, rec)
     def log(s: String): Unit = if (!quiet) System.err.println(s"replay: $s")

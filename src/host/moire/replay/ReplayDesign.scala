@@ -40,11 +40,20 @@ object ReplayDesign {
   /** The registry's designs that have a pin-level model. */
   val names: Seq[String] = Seq("subdiv", "corrected")
 
-  /** `subdiv` takes the emit-subdiv options; `corrected` is the corrected chain at its defaults (M = 1024). */
+  /** The emit-subdiv options the corrected chain takes (the rest of it is at its defaults; it reads 12-bit codes). */
+  val correctedOptions: Seq[String] = Seq("--counts", "--adc-format", "--input-bits")
+
+  /** `subdiv` takes the emit-subdiv options; `corrected` is the corrected chain at its defaults but for its counts per
+    * period (M) and ADC format (`correctedOptions`).
+    */
   def apply(name: String, config: SubdivConfig): ReplayDesign =
     moire.choice.Choice(names, name, s"--design: '$name' is not a replayable design")(identity).fold(e => throw new ReplayError(e), identity) match {
       case "subdiv" => Subdiv(config.params, config.format)
-      case _ => Corrected(CorrectedSubdivParams(format = config.format))
+      case _ =>
+        // as the board projects make it (`BoardCmd.params`): the default chain with its counts per period
+        val sub = try CorrectedSubdivParams().subdiv.copy(counts = config.counts)
+          catch { case e: IllegalArgumentException => throw new ReplayError("--" + e.getMessage.stripPrefix("requirement failed: ")) }
+        Corrected(CorrectedSubdivParams(subdiv = sub, format = config.format))
     }
 
   final case class Subdiv(p: SubdivParams, format: AdcFormat) extends ReplayDesign {

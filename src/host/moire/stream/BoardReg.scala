@@ -14,7 +14,11 @@ object BoardReg {
       val a = Registers.parse(n).fold(e => throw new StreamError(s"--write $s: $e"), identity)
       if (!Registers.writable(a)) throw new StreamError(
         s"--write $s: ${Registers.name(a)} is read-only; writable: ${Registers.all.filter(_.writable).map(_.name).mkString(", ")}, h<slot>_<order|c|phi>")
-      a -> Registers.parseValue(v).fold(e => throw new StreamError(s"--write $s: $e"), identity)
+      val x = Registers.parseValue(v).fold(e => throw new StreamError(s"--write $s: $e"), identity)
+      // the decimation as record, board and monitor take it (0 or 2^32 - 1 would stop or starve the stream)
+      if (a == Registers.Decimation.addr && (x < 1 || x > Registers.MaxDecimation))
+        throw new StreamError(s"--write $s: decimation must be in 1..${Registers.MaxDecimation}, got ${if (v.trim.startsWith("-")) v.trim else x}")
+      a -> x
     case _ => throw new StreamError(s"--write '$s' must be NAME=VALUE, like decimation=100")
   }
 
@@ -106,7 +110,7 @@ object BoardReg {
     def hex(where: String, s: String): Long = scala.util.Try(java.lang.Long.parseLong(s.trim.stripPrefix("0x").stripPrefix("0X"), 16))
       .getOrElse(throw new StreamError(s"$where: '$s' is not a hex number"))
     val ws = if (text.trim.startsWith("{")) {
-      val j = try ujson.read(text) catch { case e: Exception => throw new StreamError(s"$path: not valid JSON (${e.getMessage.linesIterator.next()})") }
+      val j = try moire.options.StrictJson.read(text) catch { case e: Exception => throw new StreamError(s"$path: not valid JSON (${e.getMessage.linesIterator.next()})") }
       val fmt = j.obj.get("format").flatMap(_.strOpt)
       if (!fmt.contains(CoefficientFile.format)) throw new StreamError(s"$path: format is ${fmt.getOrElse("missing")}, expected '${CoefficientFile.format}'")
       val regs = j.obj.get("registers").flatMap(_.arrOpt).getOrElse(throw new StreamError(s"$path: no 'registers' list"))

@@ -39,7 +39,7 @@ object BoardRegFile {
 
   def read(file: os.Path): Saved = {
     moire.files.PathKind.notAFile(file).foreach(m => throw new StreamError(m))
-    val j = try ujson.read(os.read(file)) catch { case e: Exception => throw new StreamError(s"$file: not valid JSON (${e.getMessage.linesIterator.next().take(80)})") }
+    val j = try moire.options.StrictJson.read(os.read(file)) catch { case e: Exception => throw new StreamError(s"$file: not valid JSON (${e.getMessage.linesIterator.next().take(80)})") }
     val o = j.objOpt.getOrElse(throw new StreamError(s"$file: expected a JSON object"))
     val fmt = o.get("format").flatMap(_.strOpt)
     if (!fmt.contains(Format)) throw new StreamError(s"$file: format is ${fmt.getOrElse("missing")}, expected '$Format' (written by board-reg --save)")

@@ -54,7 +54,7 @@ object Recorder {
     o.adcFormat.foreach(f => AdcFormat.parse(f).left.foreach(e => throw new StreamError(s"--adc-format: $e")))
     o.countsPerPeriod.foreach(m => if (m < 1 || m > StreamV1.MaxU32) throw new StreamError(s"--counts-per-period must be a positive u32, got $m"))
     for ((k, v) <- Seq("--ref-counts-per-period" -> o.refCountsPerPeriod, "--ref-counts-per-turn" -> o.refCountsPerTurn); x <- v)
-      if (!(x > 0) || x.isInfinite) throw new StreamError(s"$k must be a positive number, got $x")
+      if (!(x > 0) || x.isInfinite) throw new StreamError(s"$k must be a positive finite number, got $x")
     if (o.refCountsPerPeriod.isDefined && o.refCountsPerTurn.isDefined) throw new StreamError("give --ref-counts-per-period or --ref-counts-per-turn, not both")
     if (o.timeoutMs < 10 || o.timeoutMs > 60000) throw new StreamError(s"--timeout-ms must be in 10..60000, got ${o.timeoutMs}")
     if (o.listenOnly) {

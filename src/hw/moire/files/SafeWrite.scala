@@ -122,13 +122,38 @@ object SafeWrite {
   /** Forgets the folders made so far (a new command starts). */
   def forgetMade(): Unit = made.clear()
 
-  /** Checks, before any work, that `target` can be written: its folder is writable and it is no folder. */
+  /** Checks, before any work, that `target` can be written: its folder is writable, it is no folder, and it is no
+    * recording this output would lose (`guardRecording`).
+    */
   def checkFile(target: os.Path): Unit = {
     if (target.last == "-") throw new FileError(Stdout)
     if (os.isDir(target, followLinks = false)) throw new FileError(s"$target: is a folder, not a file")
     checkReplaceable(target)
+    guardRecording(target)
     checkFolder(target / os.up)
     if (os.exists(target) && !Files.isWritable(target.toNIO)) throw new FileError(s"$target: the file is read-only")
+  }
+
+  /** The command running writes recordings (simulate, record): its outputs may replace a simulated recording. */
+  val writesRecordings = new scala.util.DynamicVariable[Boolean](false)
+
+  /** A moire recording is replaced only by a recording, and only when `simulate` wrote it (its header holds the
+    * `model` it was made from, so it can be made again): a measured one is never written over, whatever the command.
+    */
+  private def guardRecording(target: os.Path): Unit = if (os.isFile(target)) {
+    val head = headerLines(target)
+    if (head.headOption.exists(_.startsWith("# moire-recording"))) {
+      if (!head.exists(_.startsWith("# model:")))
+        throw new FileError(s"$target: is a measured recording (simulate did not write it, so it cannot be made again); moire does not write over it: move it, or give another output name")
+      if (!writesRecordings.value)
+        throw new FileError(s"$target: is a recording, and this command's output is not one; give another output name")
+    }
+  }
+  /** The file's first lines while they start with '#' (at most 64 KB read). */
+  private def headerLines(p: os.Path): Seq[String] = {
+    val in = Files.newInputStream(p.toNIO)
+    val text = try new String(in.readNBytes(1 << 16), java.nio.charset.StandardCharsets.UTF_8) finally in.close()
+    text.linesIterator.takeWhile(_.startsWith("#")).toSeq
   }
 
   /** An output whose name the command picks (the user did not name it) replaces only a file of its own kind: one whose
@@ -155,6 +180,7 @@ object SafeWrite {
     */
   def fileArg(given: String): os.Path = {
     if (given.trim.isEmpty) throw new FileError("an output file's name is empty; give a file name")
+    controlChar(given).foreach(m => throw new FileError(m))
     if (given.trim == "-") throw new FileError(Stdout)
     if (given.endsWith("/")) throw new FileError(s"$given: ends with /, so it names a folder; give a file name (e.g. ${given}out.csv)")
     os.Path(given, os.pwd)
@@ -165,9 +191,16 @@ object SafeWrite {
     */
   def folderArg(given: String, option: String): os.Path = {
     if (given.trim.isEmpty) throw new FileError(s"$option: the folder's name is empty; give a folder (. for the working folder)")
+    controlChar(given).foreach(m => throw new FileError(s"$option: $m"))
     if (given.trim == "-") throw new FileError(s"$option: - names no folder (moire writes nothing to standard output); give a folder")
     os.Path(given, os.pwd)
   }
+
+  /** A name with a line break, tab or other control character: legal on the file system, but no listing or message
+    * shows it as one name (a `wrote` line would split over two).
+    */
+  def controlChar(given: String): Option[String] = given.find(_.isControl).map(c =>
+    f"an output name holds a control character (U+${c.toInt}%04X, e.g. a line break) in '${given.map(x => if (x.isControl) '?' else x)}'; give a plain name")
 
   /** Refuses an output that is one of the inputs (also through links or another spelling of the path). */
   def refuseInputs(output: os.Path, inputs: Seq[os.Path]): Unit =

@@ -15,6 +15,10 @@ object ChannelSkew extends Effect {
 
   override val needs: Seq[String] = Seq("skew_s")
   override def check(e: EffectSpec): Option[String] = Effect.within(e, "skew_s", -1e-3, 1e-3, "from -1e-3 to 1e-3 s (1 ms either way)")
+  override def validate(e: EffectSpec, m: PhysicsModel): Unit = {
+    val k = e.p("skew_s", 0.0); val len = m.samples / m.sampleRateHz
+    if (math.abs(k) >= len) throw new ExplainError(f"$name |skew_s| must be below the record's length ($len%.3g s), got ${Effect.show(k)}")
+  }
   override def backward(sp: ModelSpec, e: EffectSpec): ModelSpec = sp.copy(hasSkew = true, skewS = e.p("skew_s", 0.0))
   override def searches(c: Candidates): Seq[() => Seq[Cand]] = Seq(() => c.skew().toSeq)
   override def refresh(f: Finding, e: SignalEngine): Finding = f.copy(params = f.params + ("skew_s" -> e.spec.skewS))

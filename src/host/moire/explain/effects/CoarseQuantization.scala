@@ -14,6 +14,8 @@ object CoarseQuantization extends Effect {
   override val confoundedWithMotion = false
   override val searched = false
 
+  override def check(e: EffectSpec): Option[String] =
+    Effect.within(e, "effective_bits", 4, 24, "a whole number from 4 to 24 (and at most the ADC's bits)", whole = true)
   override def validate(e: EffectSpec, m: PhysicsModel): Unit =
     if (!(e.p("effective_bits") >= 4 && e.p("effective_bits") <= m.adc.bits))
       throw new ExplainError(s"$name effective_bits must be in 4..${m.adc.bits}")

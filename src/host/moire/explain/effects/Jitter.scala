@@ -15,6 +15,11 @@ object Jitter extends Effect {
 
   override val needs: Seq[String] = Seq("jitter_s")
   override def check(e: EffectSpec): Option[String] = Effect.within(e, "jitter_s", 0, 1e-3, "from 0 to 1e-3 s rms (1 ms)")
+  override def validate(e: EffectSpec, m: PhysicsModel): Unit = {
+    val j = e.p("jitter_s", 0.0)
+    if (j * m.sampleRateHz > 0.25)
+      throw new ExplainError(f"$name jitter_s must be at most a quarter of the sample period (${0.25 / m.sampleRateHz}%.3g s at ${m.sampleRateHz}%.6g samples/s), got ${Effect.show(j)}: a clock that wanders by more is no sampling clock")
+  }
   override def backward(sp: ModelSpec, e: EffectSpec): ModelSpec = sp.copy(jitter = true)
   override def searches(c: Candidates): Seq[() => Seq[Cand]] = Seq(() => c.jitter().toSeq)
   override def refresh(f: Finding, e: SignalEngine): Finding = f.copy(params = f.params + ("jitter_s" -> math.sqrt(e.noise.jitter2)))
