@@ -370,6 +370,8 @@ class BadInputSpec extends AnyFlatSpec with Matchers {
     sim("--model", rec("dup.json", """{"effects": [{"effect": "harmonic", "order": 3, "amplitude_rel": 0.01, "channel": "sin", "order": 5}]}""")): _*)
   bad("a model file with a top-level key given twice", "dup2.json: key 'amplitude' is given twice in one object", Seq(existing))(
     sim("--model", rec("dup2.json", """{"amplitude": 0.9, "amplitude": 0.5}""")): _*)
+  bad("a flag column holding 2", "otr_sin is a flag: 0 or 1, got '2'")("explain", "--no-rtl", "--quiet",
+    rec("flag2.csv", head + "sin,cos,otr_sin\n" + rows(2000).linesIterator.zipWithIndex.map { case (r, i) => s"$r,${if (i == 7) 2 else 0}" }.mkString("\n") + "\n"))
   bad("a board at 1 baud", "--baud must be in 300..12000000, got 1")("board", "de2-115", "--out", (dir / "bd").toString, "--baud", "1")
   bad("an empty --widths list", "--widths: '' is not an integer list")("bounds", "--widths", ",")
   bad("a --iterations list with a repeat", "--iterations: 8 is given twice")("bounds", "--iterations", "8,8")

@@ -24,6 +24,8 @@ class ConcealedEffectSpec extends AnyFlatSpec with Matchers {
     val f = first(explain(sim(Seq(EffectSpec("channel_skew", Map("skew_s" -> 30e-9))), phaseErrorDeg = 2.0)), "channel_skew")
     assert(within(f.params("skew_s"), 30e-9), f.params)
     f.summary should include("after sin")
+    // on a ramp time and speed go together: a phase error that changes in time is the skew's look-alike
+    f.lookAlikes.exists(_.startsWith("a phase error between the channels that changes in time")) shouldBe true
   }
 
   it should "call a skew at one constant speed a phase error, not a skew" in {

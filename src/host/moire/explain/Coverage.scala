@@ -13,8 +13,8 @@ object Coverage {
     val refs = ReferenceColumns.filter(rec.extra.contains)
     Seq(
       Some(f"interference below ${effects.Interference.MinCycles / seconds}%.4g Hz: the ${seconds}%.4g s record holds fewer than ${effects.Interference.MinCycles}%.0f cycles of it"),
-      if (fMax <= 0 || fMax - fMin < 0.05 * fMax)
-        Some(f"channel skew and bandwidth: the fringe frequency spans only ${fMin}%.4g .. ${fMax}%.4g Hz; a skew there is a phase error")
+      if (Identifiable.oneSpeed(fMin, fMax))
+        Some(f"channel skew, bandwidth and crosstalk: the fringe frequency spans only ${fMin}%.4g .. ${fMax}%.4g Hz; a skew there is a phase error, a low-pass or crosstalk a change of the amplitudes and phase")
       else None,
       if (rec.linesPerRev.isEmpty && !refs.exists(_ != "position"))
         Some("amplitude modulation and eccentricity with the mechanical angle: no lines_per_rev and no reference column")

@@ -32,6 +32,8 @@ final case class Recording(
 
 object Recording {
   val Magic = "# moire-recording v1"
+  /** Columns that hold a flag or a pin level, 0 or 1 (docs/recording.md). */
+  val FlagColumns: Set[String] = Set("otr_sin", "otr_cos", "present", "over_range", "step_fault", "direction", "ref_a", "ref_b", "ref_z")
   /** The fastest sample rate a file may state (100 GS/s, beyond any ADC a read head is sampled with). */
   val MaxSampleRateHz = 1e11
   /** The slowest (one sample in about 12 days): below it a sample's time overflows or is no number. */
@@ -156,6 +158,8 @@ object Recording {
   private final class Rows(name: String, adc: Adc, header: Array[String], si: Int, ci: Int, cap0: Int) {
     private val bits = adc.bits
     val extraIdx: Array[Int] = header.indices.filter(i => i != si && i != ci).toArray
+    // the documented flag columns (docs/recording.md): 0 or 1 only (a 2 read as set would pass as sense)
+    private val flag: Array[Boolean] = extraIdx.map(c => Recording.FlagColumns.contains(header(c)))
     private val plainTwo = header.length == 2
     private var cap = cap0
     var sin = new Array[Int](cap); var cos = new Array[Int](cap)
@@ -229,6 +233,7 @@ object Recording {
         val c = extraIdx(e)
         extra(e)(n) = moire.numbers.Decimal.double(cells(c)).filter(v => !v.isNaN && !v.isInfinite)
           .getOrElse(badRow(ln, line, s"${Shown.text(header(c))} '${Shown.text(cells(c).trim)}' is not a finite number"))
+        if (flag(e) && extra(e)(n) != 0 && extra(e)(n) != 1) badRow(ln, line, s"${header(c)} is a flag: 0 or 1, got '${Shown.text(cells(c).trim)}'")
         e += 1
       }
     }

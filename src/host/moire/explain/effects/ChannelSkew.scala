@@ -22,6 +22,7 @@ object ChannelSkew extends Effect {
   override def backward(sp: ModelSpec, e: EffectSpec): ModelSpec = sp.copy(hasSkew = true, skewS = e.p("skew_s", 0.0))
   override def searches(c: Candidates): Seq[() => Seq[Cand]] = Seq(() => c.skew().toSeq)
   override def refresh(f: Finding, e: SignalEngine): Finding = f.copy(params = f.params + ("skew_s" -> e.spec.skewS))
+  override def lookAlikes(f: Finding, e: SignalEngine): Seq[String] = TimeOrTravel.phaseLookAlike(e)
 
   override def forward(specs: Seq[EffectSpec], m: PhysicsModel, p: moire.signal.SignalParams): Forward = new Forward {
     override val cosDelay: Double = specs.map(_.p("skew_s", 0.0)).sum

@@ -33,6 +33,13 @@ object TimeOrTravel {
     correlated(e, alongTravel = false, s"${Drift.name} predicts a similar change of the amplitudes here: they change in time") ++
       correlated(e, alongTravel = true, s"${ContrastAlongTravel.name} predicts a similar change of the amplitudes here: the contrast changes along the travel")
 
+  /** A skew's phase error grows with speed: on a ramp, as a phase error between the channels that wanders in time
+    * does (a 0.2 degree random walk of it on a ramp came out as a skew of 4.7 +- 0.014 ns, with no skew planted).
+    */
+  def phaseLookAlike(e: SignalEngine): Seq[String] =
+    correlated(e, alongTravel = false, "a phase error between the channels that changes in time (the read head's alignment or " +
+      "its electronics drifting) predicts a similar phase here: it changes in time as a skew's grows with speed")
+
   /** Each of `heads`, then the correlation of the axis with the speed and the measurement that separates them;
     * nothing where |r| is below `Correlated`.
     */
