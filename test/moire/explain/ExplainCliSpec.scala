@@ -37,13 +37,15 @@ class ExplainCliSpec extends AnyFlatSpec with Matchers {
     read should fullyMatch regex """explain-bench: read and checked 40000 rows \([0-9]+ MB file\) in [0-9.]+ s; peak heap in use [0-9]+ MB of [0-9]+ MB \([0-9.]+ MB per million samples\)"""
     all should fullyMatch regex """explain-bench: 40000 samples explained in [0-9.]+ s .* = [0-9]+ samples/s, [0-9.]+ us per sample; CPU [0-9.]+ s \([0-9.]+ cores busy\); peak heap in use [0-9]+ MB of [0-9]+ MB \([0-9.]+ MB per million samples\); .*findings: .*"""
     // without --out its temporary folder (recording, JSON, plots) does not outlive it
-    val before = os.list(os.temp.dir() / os.up).count(_.last.startsWith("moire-bench"))
+    // this JVM's bench folders only: another test run on the machine makes and removes its own beside this one
+    val mine = s"moire-bench-${ProcessHandle.current().pid()}-"
+    val before = os.list(os.temp.dir() / os.up).count(_.last.startsWith(mine))
     // --runs 2: the same file again in the same JVM, each run's figures on its own line
     val again = Seq.newBuilder[String]
     ExplainCmd.bench(20000, None, None, again += _, runs = 2)
     again.result().tail.map(_.takeWhile(_ != ':')) shouldBe Seq("explain-bench", "explain-bench")
     again.result().tail.map(_.split(": ")(1)) shouldBe Seq("run 1 of 2 (new JVM)", "run 2 of 2 (same JVM)")
-    os.list(os.temp.dir() / os.up).count(_.last.startsWith("moire-bench")) shouldBe before
+    os.list(os.temp.dir() / os.up).count(_.last.startsWith(mine)) shouldBe before
     // the peak is what the heap held at one time: never more than the heap itself, never nothing
     for (l <- Seq(read, all)) {
       val Seq(peak, max) = """heap in use ([0-9]+) MB of ([0-9]+) MB""".r.findFirstMatchIn(l).get.subgroups.map(_.toDouble)

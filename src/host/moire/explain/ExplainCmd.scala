@@ -310,7 +310,8 @@ object ExplainCmd {
     if (runs < 1 || runs > BenchMaxRuns) throw new ExplainError(s"--runs must be in 1..$BenchMaxRuns, got $runs")
     out.foreach(d => moire.files.SafeWrite.checkFolder(os.Path(d, os.pwd)))
     // without --out the recording, JSON and plots go to a temporary folder, removed at the end (a 20 M recording is 180 MB)
-    val temp = if (out.isEmpty) Some(os.temp.dir(prefix = "moire-bench", deleteOnExit = false)) else None
+    // named by the process: a test counts its own (other processes' benches come and go beside it)
+    val temp = if (out.isEmpty) Some(os.temp.dir(prefix = s"moire-bench-${ProcessHandle.current().pid()}-", deleteOnExit = false)) else None
     try benchIn(out.map(os.Path(_, os.pwd)).orElse(temp).get, samples, recording, say, runs)
     finally temp.foreach(d => try os.remove.all(d) catch { case _: java.io.IOException => () })
   }

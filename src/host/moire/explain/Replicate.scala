@@ -33,7 +33,11 @@ object Replicate {
     def parts(x: effects.Effect, d: Option[effects.Domain] = None) = splits(e, x, d)
     sp.terms.diff(prev.terms).headOption match {
       case Some(t: Term.Interference) => val (f, w) = parts(t.effect); interferenceWhy(e, t, f, w)
-      case Some(t) => val (f, w) = parts(t.effect, Some(t.effect.domainOf(t))); agree(linearFolds(e, t, f), w, t.name)
+      case Some(t) =>
+        val (f, w) = parts(t.effect, Some(t.effect.domainOf(t)))
+        // contiguous halves: their levels may differ where the whole's effect says a change (interleaved parts are mixed)
+        val whole = if (w == "halves") Some(e.sol.beta.slice(e.termIndex(t), e.termIndex(t) + e.termCols(t).size)) else None
+        agree(linearFolds(e, t, f), w, t.name, whole)
       case None =>
         if (sp.jitter && !prev.jitter) { val (f, w) = parts(effects.Jitter); jitterWhy(e, f, w, e.slopes(), "jitter variance") }
         else if (sp.phaseNoise && !prev.phaseNoise) {
@@ -262,8 +266,13 @@ object Replicate {
     else Some(f"its extra variance ${jitterVar / (e.step * e.step)}%.3g step^2 at the mean slope is within what quantization makes (${q / (e.step * e.step)}%.3g step^2)")
   }
 
-  /** None when the fold estimates agree; else the fold values, the chi-square and its equivalent in sd. */
-  def agree(ests: Seq[Option[Est]], what: String, name: String): Option[String] = {
+  /** None when the fold estimates agree, with each other and (`whole`) their mean with the whole record's estimate;
+    * else the values, the chi-square and its equivalent in sd. The parts' mean against the whole: halves that agree
+    * with each other may still not say what the whole does (an offset step of 10 LSB between two flat halves is a drift
+    * of 15 LSB over the record, while each half, its offset free, shows none); the mean's covariance from the parts
+    * alone (the whole's own is smaller, and correlated with it) makes the test conservative.
+    */
+  def agree(ests: Seq[Option[Est]], what: String, name: String, whole: Option[Array[Double]] = None): Option[String] = {
     val ok0 = ests.flatten
     if (ok0.size < 2) return None
     val p = ok0.head.theta.length
@@ -279,7 +288,20 @@ object Replicate {
     }.sum
     val dof = (ok.size - 1) * p
     val pv = 1 - new ChiSquaredDistribution(dof).cumulativeProbability(chi2)
-    if (pv >= PValue) None
+    if (pv >= PValue) whole.filter(_.length == p).flatMap { w =>
+      val d = Array.tabulate(p)(a => mean(a) - w(a))
+      val chiW = (0 until p).map(a => (0 until p).map(b => d(a) * wSum(a)(b) * d(b)).sum).sum
+      val pw = 1 - new ChiSquaredDistribution(p).cumulativeProbability(chiW)
+      if (pw >= PValue) None
+      else {
+        val z = if (pw > 0) -new NormalDistribution().inverseCumulativeProbability(pw / 2) else wilsonHilferty(chiW, p)
+        val sdM = inv(wSum).map(c => Array.tabulate(p)(a => math.sqrt(c(a)(a)))).getOrElse(Array.fill(p)(Double.NaN))
+        val shown = if (p <= MaxShown) 0 until p else Seq((0 until p).maxBy(a => math.abs(d(a)) / sdM(a)))
+        val partsV = shown.map(a => f"${mean(a)}%.3g +- ${sdM(a)}%.2g").mkString("(", ", ", ")")
+        val wholeV = shown.map(a => f"${w(a)}%.3g").mkString("(", ", ", ")")
+        Some(f"it does not replicate on the $what: they agree with each other, but their mean $name $partsV is not the whole record's $wholeV (chi-square $chiW%.1f for $p, $z%.1f sd)")
+      }
+    }
     else {
       val z = if (pv > 0) -new NormalDistribution().inverseCumulativeProbability(pv / 2) else wilsonHilferty(chi2, dof)
       // a long parameter vector (a spline's knots) is shown by the parameter whose folds disagree most
