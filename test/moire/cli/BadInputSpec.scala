@@ -372,6 +372,12 @@ class BadInputSpec extends AnyFlatSpec with Matchers {
     sim("--model", rec("dup2.json", """{"amplitude": 0.9, "amplitude": 0.5}""")): _*)
   bad("a flag column holding 2", "otr_sin is a flag: 0 or 1, got '2'")("explain", "--no-rtl", "--quiet",
     rec("flag2.csv", head + "sin,cos,otr_sin\n" + rows(2000).linesIterator.zipWithIndex.map { case (r, i) => s"$r,${if (i == 7) 2 else 0}" }.mkString("\n") + "\n"))
+  bad("an unknown effect in a model file (named as the file's, not --effect's)", "noeff.json: 'nosuch' is not an effect; allowed:", Seq(existing))(
+    sim("--model", rec("noeff.json", """{"effects": [{"effect": "nosuch"}]}""")): _*)
+  bad("a board --harmonics for the subdiv design", "--harmonics applies to --design compensated only, not subdiv")(
+    "board", "de2-115", "--out", (dir / "bd2").toString, "--harmonics", "8")
+  bad("an emit-subdiv --asin-amplitude with atan2", "--asin-amplitude applies to --method asin-double only, not atan2")(
+    "emit-subdiv", "--asin-amplitude", "0.5", "--out", (dir / "es").toString)
   bad("a board at 1 baud", "--baud must be in 300..12000000, got 1")("board", "de2-115", "--out", (dir / "bd").toString, "--baud", "1")
   bad("an empty --widths list", "--widths: '' is not an integer list")("bounds", "--widths", ",")
   bad("a --iterations list with a repeat", "--iterations: 8 is given twice")("bounds", "--iterations", "8,8")
@@ -468,6 +474,16 @@ class BadInputSpec extends AnyFlatSpec with Matchers {
     val f = dir / "again.csv"
     for (seed <- Seq("1", "2")) { val (code, err) = runCli("simulate", "--out", f.toString, "--samples", "100", "--seed", seed); withClue(err) { code shouldBe 0 } }
     os.read(f) should include("\"seed\":2")
+  }
+  "explain" should "say that a reference column that does not move does not move (not 'within NaN degree')" in {
+    val f = rec("still.csv", head + "# lines_per_rev: 16384\nsin,cos,ref_deg\n" + rows(2000).linesIterator.map(_ + ",5").mkString("\n") + "\n")
+    val d = dir / "stilljson"
+    val (code, err) = runCli("explain", f, "--quiet", "--no-rtl", "--json-dir", d.toString)
+    withClue(err) { code shouldBe 0 }
+    val text = os.read(d / "still.json")
+    text should include("ref_deg")
+    text should include("it does not move (5 degree on every row)")
+    text should not include "NaN degree"
   }
   "explain" should "name the outputs of a recording called .csv after it, not as hidden files" in {
     val d = dir / "dotcsv"; os.makeDir.all(d); os.copy.over(good, d / ".csv")

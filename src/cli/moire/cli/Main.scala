@@ -241,13 +241,16 @@ object Main {
             @arg(doc = "encoder inputs: clocks stable before a level is taken (default 16)") glitchFilter: Int = 16,
             @arg(doc = "M, counts per grating period (default 1024)") counts: Int = 1024,
             @arg(doc = "pll | logic (no PLL, for simulation; ulx3s: clock-hz 25000000)") clockSource: String = "pll",
-            @arg(doc = "design compensated: fringe periods per turn, a power of two (default 16384)") lines: Int = 16384,
-            @arg(doc = "design compensated: harmonic slots m, 1..32 (default 4)") harmonics: Int = 4): Unit = {
+            @arg(doc = "design compensated: fringe periods per turn, a power of two (default 16384)") lines: Option[Int] = None,
+            @arg(doc = "design compensated: harmonic slots m, 1..32 (default 4)") harmonics: Option[Int] = None): Unit = {
     import moire.board.BoardCmd
     try {
       BoardCmd.checkBoard(name)
+      // options of the compensated design change nothing in the others: given there, they are a mistake
+      for ((o, v) <- Seq("--lines" -> lines, "--harmonics" -> harmonics) if v.isDefined && design != "compensated")
+        throw new UsageError(s"$o applies to --design compensated only, not $design")
       val p = BoardCmd.params(name, design, adcClockHz, adcFormat, decimation, baud, frameRecords, fifoDepth, glitchFilter, counts, clockSource,
-        clockHz, lines, harmonics)
+        clockHz, lines.getOrElse(16384), harmonics.getOrElse(4))
       moire.designs.BoardProject.run(name, p, out.fold(os.Path(s"generated/$name", os.pwd))(folder(_))).foreach(println)
     } catch { case e: BoardCmd.BadOption => throw new UsageError(e.getMessage) }
   }

@@ -56,6 +56,6 @@ object EffectSpec {
     val text = o.toSeq.filter(_._1 != "effect").map { case (k, x) =>
       s"$k=${x.strOpt.getOrElse(x.numOpt.map(_.toString).getOrElse(throw new ExplainError(s"$where: $name.$k must be a number")))}"
     }.mkString(",")
-    try parse(s"$name:$text") catch { case e: moire.MoireError => throw new ExplainError(s"$where: ${e.getMessage.stripPrefix("--effect ")}") }
+    try parse(s"$name:$text") catch { case e: moire.MoireError => throw new ExplainError(s"$where: ${e.getMessage.replaceFirst("^--effect:? ", "")}") }
   }
 }

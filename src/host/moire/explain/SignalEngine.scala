@@ -197,7 +197,9 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
       val rt = if (hs.size > 1 && best == hs.last && !FitPath.isReference) last else fit(best) // the last one tried is the engine's state already
       val rms = phaseRms
       val stepPeriods = math.abs(rt.k) * RefTrajectory.step(r.values)
-      if (bic.isNaN || bic.isInfinite)
+      if (r.values.min == r.values.max)
+        _referenceRefused = Some(s"it does not move (${effects.Effect.show(r.values.min)} ${r.unit} on every row): not used, the motion is fitted from the signals")
+      else if (bic.isNaN || bic.isInfinite)
         _referenceRefused = Some(f"its values (from ${r.values.min}%.4g to ${r.values.max}%.4g ${r.unit}) take the fit out of range: not used, the motion is fitted from the signals")
       else if (!(rms <= RefTrajectory.MaxPhaseRms))
         _referenceRefused = Some(f"the signals follow ${r.column} only within ${rms * 360}%.1f degree of fringe phase rms " +

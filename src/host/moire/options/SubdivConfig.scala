@@ -20,7 +20,7 @@ case class SubdivConfig(
   @arg(doc = "A/B edges at least this many clocks apart") minEdgeClocks: Int = 1,
   @arg(doc = "counts the A/B output may lag before overspeed is flagged") backlogLimit: Int = 64,
   @arg(doc = "signal present when the amplitude is at least this (fraction of full scale)") presentThreshold: Double = 0.1,
-  @arg(doc = "asin-double: nominal signal amplitude (fraction of full scale)") asinAmplitude: Double = 0.9,
+  @arg(doc = "asin-double: nominal signal amplitude (fraction of full scale, default 0.9)") asinAmplitude: Option[Double] = None,
   @arg(doc = "phase step (turns per sample) above which stepFault is set, <= 0.5") maxStepTurns: Double = 0.46875,
   @arg(doc = "truncate | half-even") rounding: String = "half-even",
   @arg(doc = "ADC pin format: offset-binary | twos-complement") adcFormat: String = "offset-binary"
@@ -28,11 +28,14 @@ case class SubdivConfig(
   def params: SubdivParams = {
     val m = PhaseMethod.parse(method).fold(e => throw new OptionError(e), identity)
     val r = Rounding.parse(rounding).fold(e => throw new OptionError(e), identity)
+    // an option that changes nothing is a mistake the user would not see (emit's --peak-table is refused the same way)
+    if (asinAmplitude.isDefined && m != PhaseMethod.AsinDouble)
+      throw new OptionError(s"--asin-amplitude applies to --method asin-double only, not ${m.name}")
     // left out means the default (-1 inside the params); a negative value given is a mistake, not the default
     for ((opt, v) <- Seq("cordic-width" -> cordicWidth, "phase-bits" -> phaseBits); x <- v if x < 1)
       throw new OptionError(s"--$opt must be a positive width (or left out for the default), got $x")
     try SubdivParams(inputBits, m, counts, iterations, cordicWidth.getOrElse(-1), guardBits, phaseBits.getOrElse(-1), positionWidth, minEdgeClocks,
-      backlogLimit, presentThreshold, asinAmplitude, maxStepTurns, r)
+      backlogLimit, presentThreshold, asinAmplitude.getOrElse(0.9), maxStepTurns, r)
     catch { case e: IllegalArgumentException => throw new OptionError("--" + e.getMessage.stripPrefix("requirement failed: ")) }
   }
   def format: AdcFormat = AdcFormat.parse(adcFormat).fold(e => throw new OptionError(s"--adc-format: $e"), identity)
