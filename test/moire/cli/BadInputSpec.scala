@@ -465,6 +465,10 @@ class BadInputSpec extends AnyFlatSpec with Matchers {
     "explain", good.toString, "--quiet", "--no-rtl", "--html", measured.toString)
   bad("a simulate --out over a measured recording", "is a measured recording", Seq(measured))("simulate", "--out", measured.toString, "--samples", "100")
   bad("a replay --out over a measured recording", "is a measured recording", Seq(measured))("replay", good.toString, "--out", measured.toString)
+  private val measuredBom = dir / "measured-bom.csv"
+  os.write.over(measuredBom, "\uFEFF" + head + "sin,cos\n" + rows(2000))
+  bad("an output over a measured recording with a byte-order mark", "is a measured recording", Seq(measuredBom))(
+    "simulate", "--out", measuredBom.toString, "--samples", "100")
   bad("an explain --html over a simulated recording", "is a recording, and this command's output is not one", Seq(simulated))(
     "explain", good.toString, "--quiet", "--no-rtl", "--html", simulated.toString)
   bad("an output name with a line break", "an output name holds a control character (U+000A")("simulate", "--out", (dir / "a\nb.csv").toString, "--samples", "100")

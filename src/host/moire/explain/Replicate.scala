@@ -36,7 +36,7 @@ object Replicate {
       case Some(t) =>
         val (f, w) = parts(t.effect, Some(t.effect.domainOf(t)))
         // contiguous halves: their levels may differ where the whole's effect says a change (interleaved parts are mixed)
-        val whole = if (w == "halves") Some(e.sol.beta.slice(e.termIndex(t), e.termIndex(t) + e.termCols(t).size)) else None
+        val whole = if (w == Halves) Some(e.sol.beta.slice(e.termIndex(t), e.termIndex(t) + e.termCols(t).size)) else None
         agree(linearFolds(e, t, f), w, t.name, whole)
       case None =>
         if (sp.jitter && !prev.jitter) { val (f, w) = parts(effects.Jitter); jitterWhy(e, f, w, e.slopes(), "jitter variance") }
@@ -68,10 +68,10 @@ object Replicate {
     * each part covers the whole travel. `d`: the domain of the term being tested, when not the effect's own.
     */
   def splits(e: SignalEngine, x: effects.Effect, d: Option[effects.Domain] = None): (Seq[Array[Int]], String) = d.getOrElse(x.domain) match {
-    case effects.Domain.Periodic if x.cycles(e) >= 2 * MinCycles => (folds(e.n), "halves")
+    case effects.Domain.Periodic if x.cycles(e) >= 2 * MinCycles => (folds(e.n), Halves)
     case effects.Domain.Position => (alternatePeriods(e), "alternate fringe periods")
     case effects.Domain.Periodic | effects.Domain.Speed => (interleaved(e.n), "interleaved halves")
-    case _ => (folds(e.n), "halves")
+    case _ => (folds(e.n), Halves)
   }
 
   /** Two parts of the samples in even and odd fringe periods of the position: each covers the whole travel. */
@@ -168,6 +168,9 @@ object Replicate {
     for (i <- 0 until k) { rss -= 2 * sol.beta(i) * r(i); for (j <- 0 until k) rss += sol.beta(i) * g(i)(j) * sol.beta(j) }
     (sol, math.max(0.0, rss))
   }
+
+  /** The name of contiguous halves as a split (`splits`). */
+  val Halves = "halves"
 
   /** Contiguous halves of the record. */
   def folds(n: Int): Seq[Array[Int]] = Seq(Array.range(0, n / 2), Array.range(n / 2, n))

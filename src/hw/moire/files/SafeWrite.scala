@@ -149,12 +149,15 @@ object SafeWrite {
         throw new FileError(s"$target: is a recording, and this command's output is not one; give another output name")
     }
   }
-  /** The file's first lines while they start with '#' (at most 64 KB read). */
-  private def headerLines(p: os.Path): Seq[String] = {
-    val in = Files.newInputStream(p.toNIO)
-    val text = try new String(in.readNBytes(1 << 16), java.nio.charset.StandardCharsets.UTF_8) finally in.close()
-    text.linesIterator.takeWhile(_.startsWith("#")).toSeq
-  }
+  /** The file's first lines while they start with '#' (at most 64 KB read; a byte-order mark dropped, as the reader
+    * drops it); none when it cannot be read (the write then says why).
+    */
+  private def headerLines(p: os.Path): Seq[String] =
+    try {
+      val in = Files.newInputStream(p.toNIO)
+      val text = try new String(in.readNBytes(1 << 16), java.nio.charset.StandardCharsets.UTF_8) finally in.close()
+      text.stripPrefix("\uFEFF").linesIterator.takeWhile(_.startsWith("#")).toSeq
+    } catch { case _: IOException => Nil }
 
   /** An output whose name the command picks (the user did not name it) replaces only a file of its own kind: one whose
     * first line starts with `magic`; else one line that says how to name another output (`option`).
