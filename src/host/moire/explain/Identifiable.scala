@@ -22,6 +22,14 @@ object Identifiable {
     */
   val MaxConfoundedHz = 8000.0
 
+  /** The shortest segment (samples) the free trajectory may take. Under a fringe period a segment takes up part of
+    * the fringe's own harmonics (a 3rd harmonic of 0.5 % came out at 0.27 % with segments of 0.4 period on a fast
+    * back-and-forth motion): shorter ones, for motion that turns within a period (vibration, start and stop), only
+    * where such effects are then called not identifiable anyway, at a typical fringe frequency up to MaxConfoundedHz.
+    */
+  def shortestSegment(n: Int, fs: Double, typicalHz: Double): Int =
+    if (typicalHz <= MaxConfoundedHz) Trajectory.MinLength else Trajectory.segmentLength(n, fs, typicalHz, 1.0)
+
   /** True when the motion is free and too flexible within a period to tell distortion from it, at speeds where a few
     * fringe periods can be a turn.
     */

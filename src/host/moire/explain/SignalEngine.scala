@@ -151,7 +151,10 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
       raw(i) = p + turns; prev = p; i += 1
     }
     val blk = math.max(16, math.min(4096, n / 64))
-    val speeds = (0 until n / blk).map(b => math.abs(raw((b + 1) * blk - 1) - raw(b * blk)) * fs / (blk - 1)).sorted
+    // a block's speed from its path, summed over 16 strides: a block over a reversal moves little but travels far
+    val stride = math.max(1, blk / 16)
+    def path(a: Int, b: Int): Double = { var s = 0.0; var j = a; while (j < b) { val k = math.min(b, j + stride); s += math.abs(raw(k) - raw(j)); j = k }; s }
+    val speeds = (0 until n / blk).map(b => path(b * blk, (b + 1) * blk - 1) * fs / (blk - 1)).sorted
     _typicalHz = if (speeds.isEmpty) 0.0 else speeds(speeds.size / 2)
     def prepare(t: PhaseTrack, first: Array[Double]): Unit = {
       _traj = t; traj.addFit(first, null); evalTraj()
@@ -160,22 +163,36 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
     // a plain solve and three refining steps; the fast path leaves out the third when the second gained < 0.5
     def finish(): Unit = if (FitPath.isReference || !plainData || lastGain > 0.5) refit(4, refineTraj = true, from = 3)
     def start(t: PhaseTrack, first: Array[Double]): Unit = { prepare(t, first); refit(3, refineTraj = true); finish() }
-    /** The trajectory from the signals: of segments spanning 16, 6 or 2.5 fringe periods, the one with the lowest BIC. */
+    /** The trajectory from the signals: of segments spanning 16, 6 or 2.5 fringe periods (shorter
+      * ones while they lower it), the one with the lowest BIC. */
     def freeFit(): Unit = {
       def free(len: Int): Unit = start(new Trajectory(n, len, fs), raw)
       val lens = Seq(16.0, 6.0, 2.5).map(p => Trajectory.segmentLength(n, fs, typicalHz, p)).distinct
-      if (lens.size == 1) { free(lens.head); return }
+      val shortest = Identifiable.shortestSegment(n, fs, typicalHz)
+      if (lens.size == 1 && lens.head <= shortest) { free(lens.head); return }
       // each length's fitted trajectory and repaired data are kept: the best is restored and solved once, not fitted again
       final case class Fitted(len: Int, bic: Double, traj: PhaseTrack, repS: Array[Double], repC: Array[Double], cens: Repaired, gain: Double)
-      def kept(l: Int) = { shared = true; Fitted(l, bic, _traj, _repS, _repC, _cens, lastGain) }
+      def kept(l: Int) = {
+        if (SignalEngine.debug) System.err.println(f"trajectory segments of $l samples: BIC $bic%.1f")
+        shared = true; Fitted(l, bic, _traj, _repS, _repC, _cens, lastGain)
+      }
       def restore(f: Fitted): Unit = {
         _traj = f.traj; evalTraj(); _repS = f.repS; _repC = f.repC; _cens = f.cens
         refit(1, refineTraj = false); _lastGain = f.gain
       }
-      if (FitPath.isReference) { free(lens.map { l => free(l); kept(l) }.minBy(_.bic).len); return }
+      // motion that turns faster than the shortest segments follow (oscillation, reversals): shorter ones while BIC
+      // falls, down to `Identifiable.shortestSegment`
+      def shorter(fits: Seq[Fitted], fit: Int => Fitted): Seq[Fitted] = {
+        var f = fits
+        while (f.minBy(_.bic).len == f.last.len && f.last.len > shortest)
+          f = f :+ fit(math.max(shortest, (f.last.len * 0.4).toInt))
+        f
+      }
+      if (FitPath.isReference) { free(shorter(lens.map { l => free(l); kept(l) }, l => { free(l); kept(l) }).minBy(_.bic).len); return }
       // the fast path: each length's plain solve and first refining step, then the further steps only for the lengths
       // within reach of the best (their BIC within twice their last step's gain and the threshold of it)
-      val first = lens.map { l => prepare(new Trajectory(n, l, fs), raw); refit(2, refineTraj = true); kept(l) }
+      def tried(l: Int) = { prepare(new Trajectory(n, l, fs), raw); refit(2, refineTraj = true); kept(l) }
+      val first = shorter(lens.map(tried), tried)
       val lead = first.minBy(_.bic)
       val reach = first.filter(f => (f eq lead) || f.bic - lead.bic < 2 * math.max(f.gain, 0) + 10)
       var now = first.last

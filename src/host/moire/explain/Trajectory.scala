@@ -108,9 +108,12 @@ object Trajectory {
     x
   }
 
+  /** The shortest segment (samples). */
+  val MinLength = 64
+
   /** Segment length for a recording: `periods` fringe periods at the typical speed, 64 .. 65536 samples. */
   def segmentLength(n: Int, fs: Double, typicalHz: Double, periods: Double): Int = {
     val l = if (typicalHz > 0) periods * fs / typicalHz else n.toDouble
-    math.max(64, math.min(65536, math.min(n, l.toInt)))
+    math.max(MinLength, math.min(65536, math.min(n, l.toInt)))
   }
 }
