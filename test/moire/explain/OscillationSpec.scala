@@ -33,4 +33,17 @@ class OscillationSpec extends AnyFlatSpec with Matchers {
   it should "follow simulate's oscillation of 5 periods at 1 kHz (it was 'no fringe')" in {
     clean("oscillate 5 at 1 kHz", explain(sim(Nil, motion = Motion.Oscillate(5, 1000), n = 200000, fs = 1e6, noiseLsb = 0.6)))
   }
+
+  it should "make the trajectory finer only for the motion, not for a pickup it would take up in part" in {
+    // another generator's 5 LSB at 1 kHz on 3 kHz fringes, and 8 LSB of mains on 5 kHz: shorter segments lowered BIC by
+    // taking up part of the line, and with segments of one period every effect was then not identifiable
+    for ((f0, hz, lsb, n) <- Seq((3000.0, 1000.0, 5.0, 200000), (5000.0, 50.0, 8.0, 300000))) {
+      val s = FringeGenerator.Spec(n = n, fs = 1e6, motion = "constant", f0 = f0, humFs = lsb / 2048, humHz = hz, noiseLsb = 1.0, seed = 23)
+      val r = explain(FringeGenerator.recording(s))
+      info(f"$lsb LSB at $hz Hz on $f0 Hz fringes: ${describe(r)}")
+      val f = r.findings.find(_.effect == "interference").getOrElse(fail(s"no pickup: ${describe(r)}; not tested: ${r.untested.mkString("; ")}"))
+      f.params("frequency_hz") shouldBe hz +- 0.01
+      assert(within(f.params("amplitude_fs"), lsb / 2048, 0.03), f.params)
+    }
+  }
 }

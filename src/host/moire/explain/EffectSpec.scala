@@ -28,7 +28,8 @@ object EffectSpec {
   def parse(s: String): EffectSpec = {
     val (name, rest) = s.indexOf(':') match { case -1 => (s.trim, ""); case i => (s.take(i).trim, s.drop(i + 1)) }
     val allowed = (catalogue ++ calibrationEffects).find(_._1 == name)
-      .getOrElse(throw new ExplainError(s"--effect: '$name' is not an effect; allowed: ${names.mkString(", ")}"))
+      .getOrElse(throw new ExplainError(s"--effect: '$name' is not an effect; allowed: ${catalogue.map(_._1).mkString(", ")} " +
+        s"(and for calibration data: ${calibrationEffects.map(_._1).mkString(", ")})"))
     var channel = "both"; val ps = Map.newBuilder[String, Double]
     val seen = scala.collection.mutable.Set.empty[String]
     rest.split(",").map(_.trim).filter(_.nonEmpty).foreach { kv =>

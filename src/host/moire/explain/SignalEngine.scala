@@ -171,10 +171,14 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
       val shortest = Identifiable.shortestSegment(n, fs, typicalHz)
       if (lens.size == 1 && lens.head <= shortest) { free(lens.head); return }
       // each length's fitted trajectory and repaired data are kept: the best is restored and solved once, not fitted again
-      final case class Fitted(len: Int, bic: Double, traj: PhaseTrack, repS: Array[Double], repC: Array[Double], cens: Repaired, gain: Double)
+      final case class Fitted(len: Int, bic: Double, traj: PhaseTrack, repS: Array[Double], repC: Array[Double], cens: Repaired, gain: Double,
+                              motionMisfit: Boolean)
       def kept(l: Int) = {
-        if (SignalEngine.debug) System.err.println(f"trajectory segments of $l samples: BIC $bic%.1f")
-        shared = true; Fitted(l, bic, _traj, _repS, _repC, _cens, lastGain)
+        // the motion not followed: a residual mostly along the signals' path, or, where the phase is off by so much that
+        // the residual points anywhere, one of a tenth of the fringe's amplitude
+        val r = alongOverAcross; val far = math.sqrt(meanSquare) > 0.1 * math.min(as, ac)
+        if (SignalEngine.debug) System.err.println(f"trajectory segments of $l samples: BIC $bic%.1f, residual along / across the fringe $r%.3f${if (far) ", far off" else ""}")
+        shared = true; Fitted(l, bic, _traj, _repS, _repC, _cens, lastGain, far || r > SignalEngine.MotionMisfit)
       }
       def restore(f: Fitted): Unit = {
         _traj = f.traj; evalTraj(); _repS = f.repS; _repC = f.repC; _cens = f.cens
@@ -182,9 +186,13 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
       }
       // motion that turns faster than the shortest segments follow (oscillation, reversals): shorter ones while BIC
       // falls, down to `Identifiable.shortestSegment`
+      // Only for the motion: motion the trajectory does not follow leaves a residual along the signals' path (a phase
+      // error), pickup, a harmonic or clipping as much across it (off the ellipse) as along. Shorter segments take up
+      // part of those too, and lowered BIC by it: a 5 LSB pickup at 1 kHz on 3 kHz fringes went into 1-period segments,
+      // and every effect was then not identifiable.
       def shorter(fits: Seq[Fitted], fit: Int => Fitted): Seq[Fitted] = {
         var f = fits
-        while (f.minBy(_.bic).len == f.last.len && f.last.len > shortest)
+        while (f.minBy(_.bic).len == f.last.len && f.last.len > shortest && f.last.motionMisfit)
           f = f :+ fit(math.max(shortest, (f.last.len * 0.4).toInt))
         f
       }
@@ -243,6 +251,20 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
   def periodsPerTurn: Option[Double] = reference.flatMap(r => r.ref.turnsPerUnit.map(t => math.abs(r.k) / t))
   /** Mechanical angle (radians) per sample from a reference that names turns. */
   lazy val mechAngle: Option[Array[Double]] = reference.flatMap(r => r.ref.turnsPerUnit.map(t => r.x.map(v => 2 * math.Pi * t * (v + r.xMid))))
+
+  /** The residual's mean square along the signals' path (the fringe phase's direction) over its mean square across it
+    * (off the ellipse). Noise, pickup, harmonics and clipping give about 1 (or less: the trajectory takes up part of
+    * the first); motion the trajectory does not follow, more.
+    */
+  def alongOverAcross: Double = {
+    var a = 0.0; var c = 0.0; var i = 0
+    while (i < n) {
+      val gs = gS(i); val gc = gC(i); val ww = gs * gs + gc * gc
+      if (ww > 0) { val t = resS(i) * gs + resC(i) * gc; val r = resS(i) * gc - resC(i) * gs; a += t * t / ww; c += r * r / ww }
+      i += 1
+    }
+    if (c > 0) a / c else Double.PositiveInfinity
+  }
 
   /** Rms of the fringe phase residual (periods): how well the signals follow the phase model. */
   def phaseRms: Double = {
@@ -851,6 +873,8 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
 
 object SignalEngine {
   val debug: Boolean = sys.props.contains("moire.debug")
+  /** The residual along the fringe over the residual across it above which the trajectory is made finer. */
+  val MotionMisfit = 1.1
   /** Bins of the channel response's table over the fringe frequencies. */
   val ResponseBins = 4096
 }
