@@ -326,6 +326,10 @@ class BadInputSpec extends AnyFlatSpec with Matchers {
   private val rnd = new scala.util.Random(1)
   bad("a recording of floating inputs", "no fringe: the fitted amplitude")("explain", rec("floating.csv", head + "sin,cos\n" +
     (0 until 5000).map(_ => s"${2048 + rnd.nextInt(7) - 3},${2048 + rnd.nextInt(7) - 3}").mkString("\n") + "\n"), "--quiet", "--no-rtl")
+  // a head standing still off mid-scale (sin near its middle, cos near its bottom): no fringe, said as that, not as the
+  // cos input unconnected
+  bad("a recording of a head standing still", "no fringe: the signals stand still (sin at 388")("explain", rec("still.csv", head + "sin,cos\n" +
+    (0 until 5000).map(_ => s"${2436 + rnd.nextInt(7) - 3},${395 + rnd.nextInt(5) - 2}").mkString("\n") + "\n"), "--quiet", "--no-rtl")
   // overdriven three times: 80 % of the samples at the end codes, the fringe seen only where it crosses zero; at 10
   // samples a period it slews by most of the range there, which is no sign of the other ADC format
   bad("a recording mostly at the end codes", "the sin channel is at the ADC's end codes on")("explain", rec("overdriven.csv", head + "sin,cos\n" +

@@ -120,7 +120,7 @@ object SignalExplain {
       // identifiability are checked on the candidate; replication on the halves after the joint refit that accepts it
       // (before it, the trajectory and the default part still hold part of the effect, differently in each half).
       val passing = ok.filter(c => dbic(c) > Threshold)
-      if (SignalEngine.debug) System.err.println(s"round ${round + 1}: passing " + passing.sortBy(-dbic(_)).map(c => f"${c.effect}/${c.channel} ${dbic(c)}%.0f").mkString(", ") + s"; all ${all.size}")
+      if (SignalEngine.debug) System.err.println(s"round ${round + 1}: passing " + passing.sortBy(-dbic(_)).map(c => f"${c.effect}/${c.channel} ${dbic(c)}%.0f").mkString(", ") + s"; all ${all.size}: " + all.map(c => f"${c.effect}/${c.channel} ${dbic(c)}%.0f").mkString(", "))
       // A pile-up at one code is direct evidence in the histogram that no smooth effect makes: such repairs go first. An effect that yields to a look-alike predicting the same signal (within the
       // threshold) stands back for it: it is tried after the look-alike (when that fails its tests); the finding names it.
       def yields(c: Cand) = Effects(c.effect).exists(f => passing.exists(o => o != c && f.yieldsTo(c, o, e) && dbic(o) > dbic(c) - Threshold))
@@ -386,6 +386,11 @@ object SignalExplain {
     gain
   }
 
+  /** Signals whose spread (both channels' rms about their means) is below this (full scale) stand still: a fringe of
+    * 1.4 % of full scale or more moving over a period spreads them further.
+    */
+  val StillFs = 0.01
+
   /** The fringe's amplitude must stand above the noise by this factor for the record to hold a fringe at all. */
   val MinAmplitudeNoise = 2.0
 
@@ -396,7 +401,19 @@ object SignalExplain {
     */
   def noFringe(e: SignalEngine): Option[String] = {
     val a = 0.5 * (e.ampS + e.ampC); val sd = Adequacy.floor(e)
-    if (!(a > MinAmplitudeNoise * sd))
+    // both channels within a few noise widths or StillFs of where they are: a head standing still (or two inputs with
+    // no fringe); told as that, not as one input unconnected (a still head had its sin at 388 +- 13 LSB from mid-scale
+    // and its cos at -1653 +- 3: "is the cos input connected?")
+    def spread(y: Array[Double]) = { var m = 0.0; var i = 0; while (i < e.n) { m += y(i); i += 1 }; m /= e.n
+      var v = 0.0; i = 0; while (i < e.n) { v += (y(i) - m) * (y(i) - m); i += 1 }; (m, math.sqrt(v / e.n)) }
+    val ((ms, ss), (mc, sc)) = (spread(e.ys), spread(e.yc))
+    // (both at mid-scale is floating inputs: a still fringe puts at least one channel 0.7 of its amplitude off the middle)
+    val mid = math.max(5 * sd, 2 * StillFs)
+    if (math.hypot(ss, sc) < math.max(3 * sd, StillFs) && !(math.abs(ms) < mid && math.abs(mc) < mid))
+      Some(f"no fringe: the signals stand still (sin at ${ms / e.lsb}%.0f +- ${ss / e.lsb}%.2g LSB, cos at ${mc / e.lsb}%.0f +- ${sc / e.lsb}%.2g " +
+        f"LSB from mid-scale, noise ${sd / e.lsb}%.3g LSB rms): the read head did not move; record while " +
+        "the head moves over at least one fringe period")
+    else if (!(a > MinAmplitudeNoise * sd))
       Some(f"no fringe: the fitted amplitude ${a / e.lsb}%.3g LSB is not above ${MinAmplitudeNoise}%.0f x the noise " +
         f"(${sd / e.lsb}%.3g LSB rms); are the inputs connected, and the read head over the scale and moving?")
     else {
