@@ -26,6 +26,8 @@ class ConcealedEffectSpec extends AnyFlatSpec with Matchers {
     f.summary should include("after sin")
     // on a ramp time and speed go together: a phase error that changes in time is the skew's look-alike
     f.lookAlikes.exists(_.startsWith("a phase error between the channels that changes in time")) shouldBe true
+    // and a low-pass of the sin channel alone lags as much, its amplitude dropping by 0.09 % at 200 kHz
+    f.lookAlikes.exists(_.startsWith("bandwidth of the sin channel alone")) shouldBe true
   }
 
   it should "call a skew at one constant speed a phase error, not a skew" in {
@@ -45,6 +47,9 @@ class ConcealedEffectSpec extends AnyFlatSpec with Matchers {
     val f = first(explain(sim(Seq(EffectSpec("bandwidth", Map("cutoff_hz" -> 1.5e6), "cos")))), "bandwidth")
     assert(within(f.params("cutoff_hz"), 1.5e6), f.params)
     f.channel shouldBe "cos"
+    // its amplitude drops by 0.88 % at 200 kHz: a skew with cos sampled before sin lags as much and is named
+    f.lookAlikes.exists(_.startsWith("channel_skew (the cos channel sampled")) shouldBe true
+    f.lookAlikes.head should include("before sin")
   }
 
   it should "find clock jitter that looks like white noise" in {

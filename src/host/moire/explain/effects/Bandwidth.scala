@@ -26,6 +26,25 @@ object Bandwidth extends Effect {
     g.copy(params = g.params + ("cutoff_hz" -> e.spec.bw.getOrElse(g.channel, g.params("cutoff_hz"))))
   }
 
+  /** A low-pass of one channel whose amplitude hardly drops over the record's speeds is mostly a phase lag growing
+    * with speed: a skew between the channels predicts nearly the same (a trapezoid move's 50 ns skew came out as a
+    * 3.2 MHz low-pass of the sin channel, with no look-alike named).
+    */
+  override def lookAlikes(f: Finding, e: SignalEngine): Seq[String] = {
+    val fc = f.params.getOrElse("cutoff_hz", Double.NaN); val u = e.fMax / fc
+    val drop = 1 - 1 / math.sqrt(1 + u * u); val lag = math.atan(u)
+    if (f.channel == "both" || !(drop < SkewLike)) Nil
+    else {
+      // a lag of sin is cos ahead: cos sampled later
+      val tau = lag / (2 * math.Pi * e.fMax)
+      Seq(f"${ChannelSkew.name} (the cos channel sampled ${tau * 1e9}%.1f ns ${if (f.channel == "sin") "after" else "before"} sin) predicts the same phase lag growing " +
+        f"with speed; only the amplitude's drop of ${100 * drop}%.2f %% at ${e.fMax / 1e3}%.1f kHz tells the low-pass apart, and " +
+        "a record to higher speeds separates them")
+    }
+  }
+  /** The largest amplitude drop over the record's speeds at which a one-channel low-pass still looks like a skew. */
+  val SkewLike = 0.01
+
   override def forward(specs: Seq[EffectSpec], m: PhysicsModel, p: moire.signal.SignalParams): Forward = new Forward {
     private val sin = Forward.on(specs, isSin = true).map(_.p("cutoff_hz")); private val cos = Forward.on(specs, isSin = false).map(_.p("cutoff_hz"))
     override def cutoffs(isSin: Boolean): Seq[Double] = if (isSin) sin else cos

@@ -22,7 +22,18 @@ object ChannelSkew extends Effect {
   override def backward(sp: ModelSpec, e: EffectSpec): ModelSpec = sp.copy(hasSkew = true, skewS = e.p("skew_s", 0.0))
   override def searches(c: Candidates): Seq[() => Seq[Cand]] = Seq(() => c.skew().toSeq)
   override def refresh(f: Finding, e: SignalEngine): Finding = f.copy(params = f.params + ("skew_s" -> e.spec.skewS))
-  override def lookAlikes(f: Finding, e: SignalEngine): Seq[String] = TimeOrTravel.phaseLookAlike(e)
+  override def lookAlikes(f: Finding, e: SignalEngine): Seq[String] = {
+    // a low-pass of the channel ahead with the same lag at the top speed, while its amplitude drop is small
+    val tau = f.params.getOrElse("skew_s", Double.NaN); val lag = 2 * math.Pi * e.fMax * math.abs(tau)
+    val lowPass = if (!(lag < math.Pi / 2)) Nil else {
+      val fc = e.fMax / math.tan(lag); val drop = 1 - math.cos(lag)
+      if (!(drop < Bandwidth.SkewLike)) Nil
+      else Seq(f"${Bandwidth.name} of the ${if (tau >= 0) "sin" else "cos"} channel alone (a low-pass at ${fc / 1e3}%.0f kHz) predicts " +
+        f"the same phase lag growing with speed and an amplitude drop of ${100 * drop}%.2f %% at ${e.fMax / 1e3}%.1f kHz, which " +
+        "this fit did not need; a record to higher speeds separates them")
+    }
+    lowPass ++ TimeOrTravel.phaseLookAlike(e)
+  }
 
   override def forward(specs: Seq[EffectSpec], m: PhysicsModel, p: moire.signal.SignalParams): Forward = new Forward {
     override val cosDelay: Double = specs.map(_.p("skew_s", 0.0)).sum
