@@ -156,13 +156,13 @@ class BadInputSpec extends AnyFlatSpec with Matchers {
   // a --model file's numbers as the options' (the values simulate would write, and explain then refuse)
   private def simModel(name: String, json: String): Seq[String] = sim("--model", rec(name, json))
   bad("a --model sample_rate_hz 1e300", "sample_rate_hz must be from 1e-6 to 1e11 Hz", Seq(existing))(simModel("fs.json", """{"sample_rate_hz": 1e300}"""): _*)
-  bad("a --model lines_per_rev 0", "lines_per_rev must be above 0", Seq(existing))(simModel("lpr.json", """{"lines_per_rev": 0}"""): _*)
+  bad("a --model lines_per_rev 0", "lines_per_rev must be a whole number of grating lines", Seq(existing))(simModel("lpr.json", """{"lines_per_rev": 0}"""): _*)
   bad("a --model samples 100.5", "samples must be a whole number", Seq(existing))(simModel("n.json", """{"samples": 100.5}"""): _*)
   bad("a --model noise_rms -1", "noise_rms must be 0 or more", Seq(existing))(simModel("nz.json", """{"noise_rms": -1}"""): _*)
   bad("a --model with a misspelled key", "unknown key 'amplitud'", Seq(existing))(simModel("typo.json", """{"amplitud": 0.1}"""): _*)
 
   bad("--motion constant:NaN", "--motion 'constant:NaN'", Seq(existing))(sim("--motion", "constant:NaN"): _*)
-  bad("--lines-per-rev -3", "--lines-per-rev must be above 0", Seq(existing))(sim("--lines-per-rev", "-3"): _*)
+  bad("--lines-per-rev -3", "--lines-per-rev must be a whole number of grating lines", Seq(existing))(sim("--lines-per-rev", "-3"): _*)
   bad("an effect parameter NaN", "order 'NaN' is not a finite number", Seq(existing))(sim("--effect", "harmonic:order=NaN"): _*)
   bad("--adc-bits 99", "bits must be within 4..24", Seq(existing))(sim("--adc-bits", "99"): _*)
   // effects and motions that make no sense (each exited 0 before): (what, the message, --effect)
@@ -326,6 +326,30 @@ class BadInputSpec extends AnyFlatSpec with Matchers {
   private val rnd = new scala.util.Random(1)
   bad("a recording of floating inputs", "no fringe: the fitted amplitude")("explain", rec("floating.csv", head + "sin,cos\n" +
     (0 until 5000).map(_ => s"${2048 + rnd.nextInt(7) - 3},${2048 + rnd.nextInt(7) - 3}").mkString("\n") + "\n"), "--quiet", "--no-rtl")
+  // another kind of file is not written over: notes by a recording, a model's JSON by an HTML report, notes by JSON
+  private val notes = dir / "notes.txt"
+  os.write.over(notes, "my notes\n")
+  private val modelJson = dir / "mine.json"
+  os.write.over(modelJson, "{\"a\": 1}\n")
+  bad("a recording over a text file", "holds text, and this command writes a moire recording", Seq(notes))(
+    "simulate", "--out", notes.toString, "--samples", "1000")
+  bad("an HTML report over a JSON file", "holds JSON, and this command writes an HTML page", Seq(modelJson))(
+    "explain", "--quiet", "--no-rtl", "--html", modelJson.toString, good.toString)
+  private val textAsJson = dir / "jnotes.json"
+  os.write.over(textAsJson, "my notes\n")
+  bad("a JSON report over a text file", "holds text, and this command writes JSON", Seq(textAsJson))(
+    "explain", "--quiet", "--no-rtl", "--json-dir", dir.toString, rec("jnotes.csv", os.read(good)))
+  // a channel on an effect that acts on both: it was recorded in the model and ignored
+  bad("channel=sin on an effect that acts on both channels", "--effect drift: channel=sin does not apply")(
+    "simulate", "--out", (dir / "ch.csv").toString, "--effect", "drift:offset_sin_per_s=0.1,channel=sin")
+  bad("an eccentricity of five reading radii", "eccentricity_rel must be from 0 to 0.1")(
+    "simulate", "--out", (dir / "ecc.csv").toString, "--lines-per-rev", "1000", "--effect", "eccentricity:eccentricity_rel=5")
+  bad("an angle harmonic of order 0", "order must be a whole number from 1 to 100")(
+    "simulate", "--out", (dir / "ah.csv").toString, "--lines-per-rev", "1000", "--effect", "angle_harmonic:order=0,amplitude_arcsec=5")
+  bad("a fractional number of grating lines", "must be a whole number of grating lines")(
+    "simulate", "--out", (dir / "lpr.csv").toString, "--lines-per-rev", "1.5")
+  bad("a gain drifting through zero", "drift gain_sin_per_s = -1000000 takes the gain through zero")(
+    "simulate", "--out", (dir / "dz.csv").toString, "--effect", "drift:gain_sin_per_s=-1e6")
   // a head standing still off mid-scale (sin near its middle, cos near its bottom): no fringe, said as that, not as the
   // cos input unconnected
   bad("a recording of a head standing still", "no fringe: the signals stand still (sin at 388")("explain", rec("still.csv", head + "sin,cos\n" +

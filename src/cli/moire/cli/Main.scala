@@ -201,7 +201,7 @@ object Main {
                @arg(doc = "white noise rms, full scale") noise: Double = 0.0005,
                seed: Long = 1L,
                @arg(doc = "grating lines per revolution (amplitude_modulation)") linesPerRev: Option[Double] = None,
-               @arg(doc = "an effect NAME:key=value,...,channel=sin|cos|both (repeat); `explain --help` lists the effects and their keys") effect: Seq[String] = Nil,
+               @arg(doc = "an effect NAME:key=value,... (repeat; channel=sin|cos|both where the effect takes it); the effects and their keys are listed below") effect: Seq[String] = Nil,
                @arg(doc = "a model JSON file (the JSON simulate writes into the # model: line); overrides the options") model: Option[String] = None): Unit =
     println(moire.files.SafeWrite.writesRecordings.withValue(true)(moire.explain.ExplainCmd.simulate(moire.explain.ExplainCmd.SimOptions(out, samples, sampleRateHz, adcBits, adc, motion,
       amplitude, offsetSin, offsetCos, gainSin, gainCos, phaseErrorDeg, noise, seed, linesPerRev, effect, model))))
@@ -331,7 +331,7 @@ object Main {
       case Some(_) if cmd == "replay" => println(moire.replay.ReplayCmd.Usage); 0
       case Some(m) =>
         val extra = cmd match {
-          case "simulate" => "effects (--effect NAME:key=value,...,channel=sin|cos|both):\n" +
+          case "simulate" => "effects (--effect NAME:key=value,...; channel=sin|cos|both where it is named):\n" +
             moire.explain.EffectSpec.catalogue.map { case (n, keys, doc) => s"  $n (${keys.mkString(", ")}): $doc" }.mkString("\n")
           case "board" => "boards:\n" + moire.board.Boards.all.map(b =>
             s"  ${b.name} (${b.title}): ${b.target.toString.toLowerCase} files, designs ${b.designs.map(_.name).mkString(", ")}" +

@@ -36,7 +36,11 @@ object EffectSpec {
       val k = kv.takeWhile(_ != '=').trim
       if (kv.contains('=') && !seen.add(k)) throw new ExplainError(s"--effect $name: key '$k' given twice")
       kv.split("=", 2) match {
-        case Array("channel", v) => channel = checkChannel(v.trim)
+        case Array("channel", v) =>
+          channel = checkChannel(v.trim)
+          if (channel != "both" && !effects.Effects(name).exists(_.perChannel))
+            throw new ExplainError(s"--effect $name: channel=$channel does not apply: $name acts on both channels" +
+              (if (allowed._2.nonEmpty) s" (its keys: ${allowed._2.mkString(", ")})" else ""))
         case Array(k, v) if allowed._2.contains(k.trim) =>
           ps += k.trim -> moire.numbers.Decimal.double(v).filter(x => !x.isNaN && !x.isInfinite)
             .getOrElse(throw new ExplainError(s"--effect $name: $k '$v' is not a finite number"))

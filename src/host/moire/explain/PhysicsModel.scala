@@ -201,7 +201,8 @@ object PhysicsModel {
       .orElse(Seq("gain_sin", "gain_cos").filter(v.contains).collectFirst { case k if !(at(k) > 0) => s"${name(k)} must be above 0 (a channel's gain), got ${at(k)}" })
       .orElse(v.get("phase_error_deg").filter(p => !(math.abs(p) < 90)).map(p =>
         s"${name("phase_error_deg")} must be between -90 and 90 degree (at 90 the two channels carry one signal: no quadrature), got $p"))
-      .orElse(v.get("lines_per_rev").filter(l => !(l > 0)).map(l => s"${name("lines_per_rev")} must be above 0, got $l"))
+      .orElse(v.get("lines_per_rev").filter(l => !(l >= 1 && l == math.rint(l) && l <= 1e9))
+        .map(l => s"${name("lines_per_rev")} must be a whole number of grating lines, 1 or more, got ${effects.Effect.show(l)}"))
   }
 
   /** Reads a model JSON (the format `json` writes); missing keys take the defaults of `d`. A key it does not know, a

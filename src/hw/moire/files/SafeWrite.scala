@@ -30,6 +30,7 @@ object SafeWrite {
     var at = targets.head; var renamed = 0
     try {
       for (((t, write), tmp) <- writes.zip(tmps)) { at = t; write(tmp) }
+      for ((t, tmp) <- targets.zip(tmps)) otherKind(t, tmp).foreach(m => throw new FileError(m))
       for (t <- targets) { at = t; beforeRename(t) }
       Temporaries.commit {
         for ((t, tmp) <- targets.zip(tmps)) {
@@ -88,6 +89,26 @@ object SafeWrite {
       case e: IOException => throw new FileError(s"$dir: cannot write the project (${reason(e)}); nothing was changed")
     } finally { try os.remove.all(stage) catch { case _: IOException => () }; Temporaries.done(stage) }
   }
+
+  /** What a file holds, from its first bytes: a PNG image, an HTML page, JSON, a moire recording, text or other data. */
+  def kind(p: os.Path): String = {
+    val head = try { val in = Files.newInputStream(p.toNIO); try in.readNBytes(256) finally in.close() } catch { case _: IOException => Array.emptyByteArray }
+    if (head.length >= 4 && (head(0) & 0xff) == 0x89 && head(1) == 'P' && head(2) == 'N' && head(3) == 'G') return "a PNG image"
+    if (head.contains(0.toByte)) return "binary data"
+    val t = new String(head, java.nio.charset.StandardCharsets.UTF_8).stripPrefix("\uFEFF").dropWhile(_.isWhitespace).toLowerCase
+    if (t.startsWith("<!doctype html") || t.startsWith("<html")) "an HTML page"
+    else if (t.startsWith("{") || t.startsWith("[")) "JSON"
+    else if (t.startsWith("# moire-recording")) "a moire recording"
+    else "text"
+  }
+
+  /** Why the new content `tmp` must not replace the existing file `t`: it holds another kind of content (an HTML
+    * report over a model's JSON, a recording over notes). None for a new or empty file, or one of the same kind.
+    */
+  private def otherKind(t: os.Path, tmp: os.Path): Option[String] =
+    if (!os.isFile(t, followLinks = false) || os.size(t) == 0) None
+    else { val (old, now) = (kind(t), kind(tmp)); if (old == now) None
+      else Some(s"$t: holds $old, and this command writes $now; moire does not write over another kind of file (choose another name, or remove it first)") }
 
   /** An existing output that is no plain file or folder is refused: a link, a pipe or a device is never replaced. */
   private def checkReplaceable(target: os.Path): Unit = PathKind.of(target) match {

@@ -7,6 +7,7 @@ object AdcBitFault extends Effect {
   val name = "adc_bit_fault"
   val params = Seq(Param("bit", "", "0..bits-1"), Param("stuck_at", "", "0 or 1"), Param("bridged_to", "", "0..bits-1, not bit"))
   val what = "data line stuck at 0/1, or wired-AND with another bit (channel=sin|cos)"
+  override val perChannel = true
   val shows = "code histogram"
   override val claims: Seq[String] = Seq("code histogram")
   override def example: Example = Example(EffectSpec(name, Map("bit" -> 3, "stuck_at" -> 1), "cos"))

@@ -8,6 +8,7 @@ object AdcNonlinearity extends Effect {
   val params = Seq(Param("inl2_lsb", "LSB", "any"), Param("inl3_lsb", "LSB", "any"))
   override val needs: Seq[String] = params.map(_.name)
   val what = "INL = inl2 T2(v) + inl3 T3(v) LSB, Chebyshev bow and S shape over full scale (channel=sin|cos|both)"
+  override val perChannel = true
   val shows = "against signal level"
   override val claims: Seq[String] = Seq("against fringe phase")
   override def example: Example = Example(EffectSpec(name, Map("inl2_lsb" -> 2.0, "inl3_lsb" -> 1.5)))

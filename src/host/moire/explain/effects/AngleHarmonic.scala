@@ -6,6 +6,9 @@ import moire.explain._
 object AngleHarmonic extends AngleHarmonics(2) {
   val name = "angle_harmonic"
   val params = Seq(Param("order", "", "2"), Param("amplitude_arcsec", "arcsec", ">= 0"), Param("phase_deg", "degree", "-180..180"))
+  override def check(e: EffectSpec): Option[String] =
+    Effect.within(e, "order", 1, 100, "a whole number from 1 to 100 (per turn)", whole = true)
+      .orElse(Effect.within(e, "amplitude_arcsec", 0, 36000, "from 0 to 36000 arcsec (10 degree)"))
   override val needs: Seq[String] = Seq("amplitude_arcsec")
   val what = "read angle off by amplitude_arcsec sin(order angle + phase), a harmonic of the mechanical angle; needs lines_per_rev (explain: a reference naming turns)"
   val shows = "against mechanical angle (reference)"

@@ -7,6 +7,7 @@ object Bandwidth extends Effect {
   val name = "bandwidth"
   val params = Seq(Param("cutoff_hz", "Hz", "1..1e12"))
   val what = "first-order read-head amplifier low-pass (channel=sin|cos|both)"
+  override val perChannel = true
   val shows = "amplitude (and lag) against speed"
   override val claims: Seq[String] = Seq("against speed")
   override def example: Example = Example(EffectSpec(name, Map("cutoff_hz" -> 400e3)))

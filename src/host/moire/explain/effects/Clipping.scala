@@ -7,6 +7,7 @@ object Clipping extends Effect {
   val name = "clipping"
   val params = Seq(Param("high_fs", "full scale", "-1..1, above low_fs"), Param("low_fs", "full scale", "-1..1"))
   val what = "amplifier saturation levels in full-scale units (channel=sin|cos|both)"
+  override val perChannel = true
   val shows = "pile-up at one code"
   override val claims: Seq[String] = Seq("code histogram")
   override def example: Example = Example(EffectSpec(name, Map("high_fs" -> 0.8), "sin"))

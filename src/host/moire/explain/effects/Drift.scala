@@ -15,6 +15,12 @@ object Drift extends Effect {
   val domain: Domain = Domain.Time
   override val plot: PlotKind = PlotKind.Time
 
+  /** A gain drifting through zero over the record is no drift of an amplifier's gain. */
+  override def validate(e: EffectSpec, m: PhysicsModel): Unit = {
+    val len = m.samples / m.sampleRateHz
+    for (k <- Seq("gain_sin_per_s", "gain_cos_per_s"); g <- e.params.get(k) if !(1 + g * len > 0))
+      throw new ExplainError(f"$name $k = ${Effect.show(g)} takes the gain through zero within the record ($len%.4g s)")
+  }
   override def backward(sp: ModelSpec, e: EffectSpec): ModelSpec = sp.copy(terms = sp.terms :+ Term.Drift)
   override def searches(c: Candidates): Seq[() => Seq[Cand]] = Seq(() => c.linear(Term.Drift).map(_._1).toSeq)
   override def describe(t: Term, b: Array[Double], sd: Array[Double], e: SignalEngine): Effect.Described = {

@@ -6,6 +6,7 @@ import moire.explain._
 object Eccentricity extends AngleHarmonics(1) {
   val name = "eccentricity"
   val params = Seq(Param("eccentricity_rel", "of the reading radius", "0..0.1"), Param("phase_deg", "degree", "-180..180"))
+  override def check(e: EffectSpec): Option[String] = Effect.within(e, "eccentricity_rel", 0, 0.1, "from 0 to 0.1 of the reading radius")
   override val needs: Seq[String] = Seq("eccentricity_rel")
   val what = "disk or magnet off the axis by eccentricity_rel of the reading radius: the read angle is off by eccentricity_rel sin(angle + phase) radians once per turn; needs lines_per_rev (explain: a reference naming turns)"
   val shows = "against mechanical angle (reference)"

@@ -114,6 +114,8 @@ trait Effect {
   /** Its forward step (`simulate`) in model `m` with fringe `p`, from its specs there (never empty). */
   def forward(specs: Seq[EffectSpec], m: PhysicsModel, p: moire.signal.SignalParams): Forward = Forward.none
 
+  /** True when it may act on one channel (channel=sin|cos); others act on both (or name each channel in their keys). */
+  def perChannel: Boolean = false
   def summary(p: Map[String, Double], channel: String, fMin: Double, fMax: Double): String
 
   def sinCos(ch: String): String = if (ch == "both") "both channels" else s"the $ch channel"

@@ -7,6 +7,7 @@ object Harmonic extends Effect {
   val name = "harmonic"
   val params = Seq(Param("order", "", "2..100, searched 2..7"), Param("amplitude_rel", "of the fundamental", "0..1"), Param("phase_deg", "degree", "-180..180"))
   val what = "order k of the fringe on one channel or both (channel=sin|cos|both)"
+  override val perChannel = true
   val shows = "against fringe phase"
   override val claims: Seq[String] = Seq("against fringe phase")
   override def example: Example = Example(EffectSpec(name, Map("order" -> 3, "amplitude_rel" -> 2e-3), "sin"))
