@@ -34,7 +34,8 @@ object Ulx3s extends Board {
   /** Why this board cannot run its system clock at `clockHz` (None: it can). */
   def clockProblem(clockHz: Int, source: ClockSource): Option[String] = source match {
     case ClockSource.Logic => Option.when(clockHz != oscillatorHz)(
-      s"--clock-hz: with --clock-source logic the ULX3S runs on its $oscillatorHz Hz oscillator, got $clockHz")
+      s"--clock-hz: with --clock-source logic the ULX3S runs on its $oscillatorHz Hz oscillator, got $clockHz" +
+        (if (clockHz == 50000000) s" (the default): give --clock-hz $oscillatorHz and an --adc-clock-hz that divides it, e.g. $oscillatorHz" else ""))
     case _ => Ecp5Pll.solve(oscillatorHz, clockHz).left.toOption.map(e => s"--clock-hz: $e")
   }
 

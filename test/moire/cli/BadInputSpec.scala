@@ -350,6 +350,10 @@ class BadInputSpec extends AnyFlatSpec with Matchers {
     "simulate", "--out", (dir / "lpr.csv").toString, "--lines-per-rev", "1.5")
   bad("a gain drifting through zero", "drift gain_sin_per_s = -1000000 takes the gain through zero")(
     "simulate", "--out", (dir / "dz.csv").toString, "--effect", "drift:gain_sin_per_s=-1e6")
+  bad("a recording's name taken as --subdiv's value", "--subdiv takes the subdivider's emit-subdiv options as one quoted word")(
+    "explain", "--subdiv", good.toString)
+  bad("a metadata error named at its own line", "bits.csv:3: metadata adc_bits '0'")(
+    "explain", rec("bits.csv", "# moire-recording v1\n# sample_rate_hz: 1000000\n# adc_bits: 0\n# source: x\nsin,cos\n" + rows(100)))
   // a head standing still off mid-scale (sin near its middle, cos near its bottom): no fringe, said as that, not as the
   // cos input unconnected
   bad("a recording of a head standing still", "no fringe: the signals stand still (sin at 388")("explain", rec("still.csv", head + "sin,cos\n" +

@@ -260,6 +260,9 @@ object ExplainCmd {
       }
       i += 1
     }
+    // emit-subdiv options start with "--": a file name there was taken as the option's value
+    sd.filter(v => v.trim.nonEmpty && !v.trim.startsWith("-")).foreach(v => throw new ExplainError(
+      s"--subdiv takes the subdivider's emit-subdiv options as one quoted word (e.g. --subdiv \"--counts 4096\"), got '$v'"))
     val floor = try Materiality(ml.getOrElse(Materiality.MinLsb), mn.getOrElse(Materiality.MinNoise))
       catch { case e: IllegalArgumentException => throw new ExplainError(e.getMessage.stripPrefix("requirement failed: ")) }
     explain(files.result(), j, p, m, q, if (nr) None else Some(sd.toSeq.flatMap(_.trim.split("\\s+")).filter(_.nonEmpty)), h, hd, floor)

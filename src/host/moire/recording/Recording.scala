@@ -105,13 +105,14 @@ object Recording {
     val first = it.next()
     if (first.stripPrefix("\uFEFF").trim != Magic)
       bad(1, if (first.trim.isEmpty && !it.exists(_.trim.nonEmpty)) "empty file, expected '# moire-recording v1'" else s"first line must be '$Magic', got '${Shown.text(first)}'")
-    val (meta, comments, headerAt) = CsvText.header(name, it)
+    val (meta, comments, headerAt, metaLine) = CsvText.header(name, it)
+    def lineOf(k: String): Long = metaLine.getOrElse(k, headerAt + 1).toLong
     def need(k: String) = meta.getOrElse(k, bad(headerAt + 1, s"metadata '$k' is missing (a line '# $k: value' before the header)"))
     val fs = moire.numbers.Decimal.double(need("sample_rate_hz")).filter(v => v >= MinSampleRateHz && v <= MaxSampleRateHz)
-      .getOrElse(bad(headerAt + 1, s"metadata sample_rate_hz '${meta("sample_rate_hz")}' is not a sample rate (a number from 1e-6 to 1e11 Hz)"))
+      .getOrElse(bad(lineOf("sample_rate_hz"), s"metadata sample_rate_hz '${meta("sample_rate_hz")}' is not a sample rate (a number from 1e-6 to 1e11 Hz)"))
     val bits = moire.numbers.Decimal.int(need("adc_bits")).filter(b => b >= 4 && b <= 24)
-      .getOrElse(bad(headerAt + 1, s"metadata adc_bits '${meta("adc_bits")}' is not an integer in 4..24"))
-    val adc = Adc(bits, format(meta).fold(e => bad(headerAt + 1, e), identity))
+      .getOrElse(bad(lineOf("adc_bits"), s"metadata adc_bits '${meta("adc_bits")}' is not an integer in 4..24"))
+    val adc = Adc(bits, format(meta).fold(e => bad(lineOf(if (meta.contains("adc_format")) "adc_format" else "adc"), e), identity))
     if (!it.hasNext) bad(headerAt, "the header row 'sin,cos' is missing")
     val headerLine = it.next()
     val header = headerLine.split(",", -1).map(_.trim)
@@ -138,7 +139,7 @@ object Recording {
     val cutShort = "has no line end: the file may be cut short; end it with a line break if it is complete"
     if (n == 0) bad(headerAt + 1, if (cut == 0) "no data rows after the header" else s"no data rows after the header but the last line ($cut), which $cutShort")
     meta.get("samples").foreach { s =>
-      if (moire.numbers.Decimal.long(s).isEmpty) bad(headerAt + 1, s"metadata samples '${Shown.text(s)}' is not a whole number of rows")
+      if (moire.numbers.Decimal.long(s).isEmpty) bad(lineOf("samples"), s"metadata samples '${Shown.text(s)}' is not a whole number of rows")
       if (!moire.numbers.Decimal.long(s).contains(n.toLong))
         bad(ln, if (cut == 0) s"metadata samples says '$s' but the file has $n data rows: a truncated or edited file"
           else s"metadata samples says '$s' but the file has $n whole data rows; the last line ($cut), left out, $cutShort")
@@ -305,8 +306,9 @@ object CsvText {
     * (`# exported by scope-dump rev 7 (CH1 = sin, CH2 = cos)`, `# taken at 12:30`). Returns the metadata, the
     * comments and the index (0-based line number) of the line after them.
     */
-  def header(name: String, it: scala.collection.BufferedIterator[String]): (Map[String, String], Seq[String], Int) = {
+  def header(name: String, it: scala.collection.BufferedIterator[String]): (Map[String, String], Seq[String], Int, Map[String, Int]) = {
     var i = 1; val m = scala.collection.mutable.LinkedHashMap.empty[String, String]; val comments = Seq.newBuilder[String]
+    val lineOf = Map.newBuilder[String, Int]
     while (it.hasNext && (it.head.startsWith("#") || it.head.trim.isEmpty)) {
       val line = it.next()
       val body = line.stripPrefix("#").trim
@@ -315,11 +317,11 @@ object CsvText {
         val key = if (at > 0) body.substring(0, at).trim else ""
         if (Key.matches(key)) {
           if (m.contains(key)) throw new RecordingError(s"$name:${i + 1}: metadata key '$key' appears twice")
-          m(key) = body.substring(at + 1).trim
+          m(key) = body.substring(at + 1).trim; lineOf += key -> (i + 1)
         } else comments += body
       }
       i += 1
     }
-    (m.toMap, comments.result(), i)
+    (m.toMap, comments.result(), i, lineOf.result())
   }
 }
