@@ -354,6 +354,12 @@ class BadInputSpec extends AnyFlatSpec with Matchers {
     "explain", "--subdiv", good.toString)
   bad("a metadata error named at its own line", "bits.csv:3: metadata adc_bits '0'")(
     "explain", rec("bits.csv", "# moire-recording v1\n# sample_rate_hz: 1000000\n# adc_bits: 0\n# source: x\nsin,cos\n" + rows(100)))
+  bad("an empty entry in an effect's list", "--effect harmonic: an empty entry in 'order=3,,amplitude_rel=0.01'")(
+    "simulate", "--out", (dir / "ee.csv").toString, "--effect", "harmonic:order=3,,amplitude_rel=0.01")
+  bad("an empty --cache", "--cache: the folder's name is empty")("timing", "--design", "counter", "--cache", "")
+  bad("a speed grade given twice", "--speeds: 6 is given twice")("timing", "--design", "counter", "--speeds", "6,6")
+  bad("a sweep's iteration count given twice", "--sweep-iterations: 8 is given twice")(
+    "cost", "--sweep", "--sweep-iterations", "8,8", "--out", (dir / "sw").toString)
   // a head standing still off mid-scale (sin near its middle, cos near its bottom): no fringe, said as that, not as the
   // cos input unconnected
   bad("a recording of a head standing still", "no fringe: the signals stand still (sin at 388")("explain", rec("still.csv", head + "sin,cos\n" +

@@ -33,7 +33,7 @@ object CostCmd {
       moire.numbers.Decimal.int(v).getOrElse(throw new UsageError(s"--$opt: '$v' is not an integer list like 8,12,16")))
     if (vs.isEmpty) throw new UsageError(s"--$opt: give at least one integer, like 8,12,16 (got '$s')")
     vs.find(v => v < lo || v > hi).foreach(v => throw new UsageError(s"--$opt: $v is not in $lo..$hi"))
-    vs
+    Lists.once(opt, vs)
   }
 
   def sweep(variants: String, iterations: String, widths: String, spread: Int, out: String, timeout: Int,

@@ -127,8 +127,7 @@ object Main {
     def ints(opt: String, s: String) = {
       val vs = s.split(",", -1).toSeq.map(v => moire.numbers.Decimal.int(v).getOrElse(
         throw new UsageError(s"--$opt: '$v' is not an integer list like 8,12,16")))
-      vs.diff(vs.distinct).headOption.foreach(v => throw new UsageError(s"--$opt: $v is given twice"))
-      vs
+      Lists.once(opt, vs)
     }
     val modes = mode.map(m => Seq(CordicMode.parse(m).fold(e => throw new UsageError(e), identity))).getOrElse(CordicMode.all)
     val ns = ints("iterations", iterations); val bs = ints("widths", widths)

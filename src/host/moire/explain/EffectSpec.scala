@@ -32,6 +32,8 @@ object EffectSpec {
         s"(and for calibration data: ${calibrationEffects.map(_._1).mkString(", ")})"))
     var channel = "both"; val ps = Map.newBuilder[String, Double]
     val seen = scala.collection.mutable.Set.empty[String]
+    if (rest.trim.nonEmpty && rest.split(",", -1).exists(_.trim.isEmpty))
+      throw new ExplainError(s"--effect $name: an empty entry in '${rest.trim}' (key=value pairs, one comma between each)")
     rest.split(",").map(_.trim).filter(_.nonEmpty).foreach { kv =>
       val k = kv.takeWhile(_ != '=').trim
       if (kv.contains('=') && !seen.add(k)) throw new ExplainError(s"--effect $name: key '$k' given twice")
