@@ -155,6 +155,9 @@ object Main {
              @arg(doc = "asin only: peak lookup table entries (power of two, 0 = none)") peakTable: Int = 0): Unit = {
     val r = Rounding.parse(rounding).fold(e => throw new UsageError(e), identity)
     if (!(maxError > 0) || maxError.isInfinite) throw new UsageError(s"--max-error must be a positive finite number, got $maxError")
+    // an error as large as the output's whole range asks nothing of a design (sin: 1 full scale; angles: pi radians)
+    val (whole, range) = if (Set("asin", "acos", "atan2")(function.trim)) (math.Pi, "pi radians") else (1.0, "1 full scale")
+    if (maxError >= whole) throw new UsageError(s"--max-error must be below the output's whole range ($range), got $maxError")
     val d = Designer.cheapest(function, maxError, r, peakTable).fold(e => throw new UsageError(e), identity)
     println(d.report)
   }
