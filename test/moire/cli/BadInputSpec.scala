@@ -360,6 +360,7 @@ class BadInputSpec extends AnyFlatSpec with Matchers {
     "design", "--function", "sin", "--max-error", "5")
   bad("an angle's error of 10 radians", "--max-error must be below the output's whole range (pi radians), got 10.0")(
     "design", "--function", "atan2", "--max-error", "10")
+  bad("an empty record --out", "an output file's name is empty")("record", "--port", "/dev/nonexistent-tty", "--seconds", "1", "--out", "")
   bad("an empty --cache", "--cache: the folder's name is empty")("timing", "--design", "counter", "--cache", "")
   bad("a speed grade given twice", "--speeds: 6 is given twice")("timing", "--design", "counter", "--speeds", "6,6")
   bad("a sweep's iteration count given twice", "--sweep-iterations: 8 is given twice")(

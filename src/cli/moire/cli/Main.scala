@@ -277,6 +277,7 @@ object Main {
     val secs = seconds.orElse(burst.map(_ => 10.0)).getOrElse(throw new UsageError("record: give --seconds S (continuous stream) or --burst N (one full-rate burst)"))
     // the trigger and the samples before it belong to a burst: a stream would record without them
     if (burst.isEmpty && (trigger != "now" || pre != 0)) throw new UsageError("--trigger and --pre apply to a burst; add --burst N, or leave them out")
+    moire.files.SafeWrite.fileArg(out) // an empty name, a control character, "-" or a trailing / said as that
     val o = moire.stream.RecordOptions(port, secs, out, baud, decimation, adcClockHz, adcFormat, countsPerPeriod,
       listenOnly.value, timeoutMs, quiet.value, refCountsPerPeriod, refCountsPerTurn)
     moire.files.SafeWrite.writesRecordings.withValue(true)(burst match {
