@@ -335,6 +335,9 @@ class BadInputSpec extends AnyFlatSpec with Matchers {
     "simulate", "--out", notes.toString, "--samples", "1000")
   bad("an HTML report over a JSON file", "holds JSON, and this command writes an HTML page", Seq(modelJson))(
     "explain", "--quiet", "--no-rtl", "--html", modelJson.toString, good.toString)
+  // text a user wrote is not moire's own text: a replay's CSV (`# moire-replay v1`) does not replace notes
+  bad("a replay over a text file", "holds text, and this command writes a moire-replay file", Seq(notes))(
+    "replay", good.toString, "--quiet", "--out", notes.toString)
   private val textAsJson = dir / "jnotes.json"
   os.write.over(textAsJson, "my notes\n")
   bad("a JSON report over a text file", "holds text, and this command writes JSON", Seq(textAsJson))(
@@ -396,7 +399,7 @@ class BadInputSpec extends AnyFlatSpec with Matchers {
   bad("a sweep width out of range", "--sweep-widths: 7 is not in 8..48")("cost", "--sweep", "--sweep-widths", "7")
   bad("sweep iterations of 0", "--sweep-iterations: 0 is not in 4..40")("cost", "--sweep", "--sweep-iterations", "0")
   bad("CORDIC options with another design", "apply to --design cordic only, not subdiv")("cost", "--design", "subdiv", "--iterations", "12")
-  bad("sweep options without --sweep", "--spread apply to --sweep only")("cost", "--spread", "2")
+  bad("sweep options without --sweep", "--spread applies to --sweep only")("cost", "--spread", "2")
   bad("a design with --sweep", "--design, --keep and the CORDIC options")("cost", "--sweep", "--design", "subdiv")
   bad("timing's CORDIC options with another design", "apply to --design cordic only, not quadcomp")("timing", "--design", "quadcomp", "--width", "12")
 
@@ -427,7 +430,25 @@ class BadInputSpec extends AnyFlatSpec with Matchers {
   bad("a board-reg decimation of -1", "decimation must be in 1..16777216, got -1")("board-reg", "--port", "/dev/null", "--write", "decimation=-1")
   bad("a monitor --bind that is empty", "--bind: the address is empty")("monitor", "--simulate", "--bind", "")
 
+  // options that do not apply are refused when given at all, at their default value too (the value was never the point)
+  bad("a CORDIC option at its default with another design", "apply to --design cordic only, not counter")("cost", "--design", "counter", "--iterations", "16")
+  bad("a sweep option at its default without --sweep", "--spread applies to --sweep only")("cost", "--spread", "4")
+  bad("a burst trigger at its default without --burst", "--trigger and --pre apply to a burst")(recd("--seconds", "1", "--trigger", "now"): _*)
+  bad("the same register written twice", "--write decimation is given 2 times ('decimation=5', 'decimation=6')")(
+    "board-reg", "--port", "/dev/null", "--write", "decimation=5", "--write", "decimation=6")
+  bad("counts per period that no board counts", "--counts-per-period must be a power of two from 4 to 65536")(recd("--seconds", "1", "--counts-per-period", "1000"): _*)
+  bad("a number beyond a double's range", "--amplitude: '1e309' is beyond the largest number")(
+    "simulate", "--out", (dir / "big.csv").toString, "--amplitude", "1e309")
+  bad("a monitor replay with a board's link rate", "--baud applies to a board (--port DEV); a replay plays the file at its own rate")(
+    "monitor", "--replay", good.toString, "--baud", "115200")
+  bad("a simulated board with a decimation", "--decimation applies to a board (--port DEV)")("monitor", "--simulate", "--decimation", "100")
+  private val samplesModel = dir / "samples-model.json"
+  os.write.over(samplesModel, """{"samples": 3000, "noise_rms": 0.001}""")
+  bad("a model file and an option that set the same thing", "sets noise_rms, and --noise was given too")(
+    "simulate", "--out", (dir / "sm.csv").toString, "--model", samplesModel.toString, "--noise", "0.002")
+
   behavior of "explain-bench"
+  bad("--samples with --recording", "with --recording the file's length is taken")("explain-bench", "--recording", good.toString, "--samples", "5")
   bad("--samples 0", "--samples must be in 10000..")("explain-bench", "--samples", "0")
   bad("--runs 0", "--runs must be in 1..10, got 0")("explain-bench", "--runs", "0")
   // the bench's recording is DIR/bench.csv: a file of that name that is no recording is the user's, not replaced

@@ -67,14 +67,12 @@ object Main {
            @arg(doc = "sweep: skip the measured error of the bit-accurate model") noMeasure: Flag = Flag()): Unit =
     if (sweep.value) {
       // the sweep makes its own configurations: a design's options would be ignored
-      if (design != "cordic" || keep.isDefined || config != CordicConfig())
+      if (given("--design", "--keep").nonEmpty || cordicGiven.nonEmpty || config != CordicConfig())
         throw new UsageError("--sweep sweeps the CORDIC variants over --sweep-iterations and --sweep-widths; --design, --keep and the CORDIC options (--iterations, --width, ...) do not apply")
       CostCmd.sweep(variants, sweepIterations, sweepWidths, spread, folderName(out), timeout, !noMeasure.value, json)
     } else {
-      val given = Seq("--out" -> (out != "cost-sweep"), "--variants" -> (variants != "sincos,sincos-taper,sincos-taper-g2,asin,asin-double,asin-table"),
-        "--sweep-iterations" -> (sweepIterations != "8,12,16"), "--sweep-widths" -> (sweepWidths != "12,16,20"), "--spread" -> (spread != 4),
-        "--no-measure" -> noMeasure.value).collect { case (o, true) => o }
-      if (given.nonEmpty) throw new UsageError(s"${given.mkString(", ")} apply to --sweep only; add --sweep, or leave them out")
+      val sweepOnly = given("--out", "--variants", "--sweep-iterations", "--sweep-widths", "--spread", "--no-measure")
+      if (sweepOnly.nonEmpty) throw new UsageError(s"${sweepOnly.mkString(", ")} ${if (sweepOnly.size == 1) "applies" else "apply"} to --sweep only; add --sweep, or leave ${if (sweepOnly.size == 1) "it" else "them"} out")
       cordicOptionsFor(design, config)
       CostCmd.run(config, design, json, timeout, keep.map(folderName(_, "--keep")))
     }
@@ -83,7 +81,7 @@ object Main {
     * ignored, and the figures would be for a configuration nobody asked for.
     */
   private def cordicOptionsFor(design: String, config: CordicConfig): Unit =
-    if (design != "cordic" && config != CordicConfig())
+    if (design != "cordic" && (config != CordicConfig() || cordicGiven.nonEmpty))
       throw new UsageError(s"the CORDIC options (--mode, --iterations, --width, ...) apply to --design cordic only, not $design; leave them out")
 
   @main(doc = "Fmax, utilisation and critical path on the LFE5U-85F (yosys synth_ecp5, nextpnr-ecp5) at speed grades 6 and 8; exit code 1 when a design misses its target.")
@@ -204,9 +202,9 @@ object Main {
                seed: Long = 1L,
                @arg(doc = "grating lines per revolution (amplitude_modulation)") linesPerRev: Option[Double] = None,
                @arg(doc = "an effect NAME:key=value,... (repeat; channel=sin|cos|both where the effect takes it); the effects and their keys are listed below") effect: Seq[String] = Nil,
-               @arg(doc = "a model JSON file (the JSON simulate writes into the # model: line); overrides the options") model: Option[String] = None): Unit =
+               @arg(doc = "a model JSON file (the JSON simulate writes into the # model: line); the options set what it does not") model: Option[String] = None): Unit =
     println(moire.files.SafeWrite.writesRecordings.withValue(true)(moire.explain.ExplainCmd.simulate(moire.explain.ExplainCmd.SimOptions(out, samples, sampleRateHz, adcBits, adc, motion,
-      amplitude, offsetSin, offsetCos, gainSin, gainCos, phaseErrorDeg, noise, seed, linesPerRev, effect, model))))
+      amplitude, offsetSin, offsetCos, gainSin, gainCos, phaseErrorDeg, noise, seed, linesPerRev, effect, model, said.value))))
 
   @main(doc = "Fit the physics model to recordings, locate the misfit, name the effects left out (JSON and PNG per file).")
   def explain(@arg(doc = "recording or calibration files") files: mainargs.Leftover[String],
@@ -225,9 +223,10 @@ object Main {
   @main(doc = "Benchmark: simulate and explain one recording; print the time, samples per second and peak heap (also per million samples) of reading and of the whole explain.")
   def explainBench(@arg(doc = "samples in the recording (default 1000000)") samples: Int = 1000000,
                    @arg(doc = "folder for the recording, JSON and plots (default: a temporary folder)") out: Option[String] = None,
-                   @arg(doc = "explain this moire-recording v1 file instead of a simulated one (--samples is then ignored)") recording: Option[String] = None,
+                   @arg(doc = "explain this moire-recording v1 file instead of a simulated one (not with --samples)") recording: Option[String] = None,
                    @arg(doc = "explain the file this many times in one JVM, each run's figures printed: the first includes the JIT's compiling, the others show the fit alone (1..10, default 1)") runs: Int = 1): Unit =
-    moire.explain.ExplainCmd.bench(samples, out.map(folderName(_)), recording, println(_), runs)
+    if (recording.isDefined && given("--samples").nonEmpty) throw new UsageError("--samples sets the simulated recording's length; with --recording the file's length is taken: leave --samples out")
+    else moire.explain.ExplainCmd.bench(samples, out.map(folderName(_)), recording, println(_), runs)
 
   @main(doc = "Write a board project: the board's top in Verilog inside its vendor project, and the command to run next.")
   def board(@arg(doc = "board name, one of the boards below (also accepted as the first word after board)") name: String,
@@ -276,7 +275,7 @@ object Main {
              @arg(doc = "no progress bar") quiet: Flag = Flag()): Unit = {
     val secs = seconds.orElse(burst.map(_ => 10.0)).getOrElse(throw new UsageError("record: give --seconds S (continuous stream) or --burst N (one full-rate burst)"))
     // the trigger and the samples before it belong to a burst: a stream would record without them
-    if (burst.isEmpty && (trigger != "now" || pre != 0)) throw new UsageError("--trigger and --pre apply to a burst; add --burst N, or leave them out")
+    if (burst.isEmpty && (given("--trigger", "--pre").nonEmpty || trigger != "now" || pre != 0)) throw new UsageError("--trigger and --pre apply to a burst; add --burst N, or leave them out")
     moire.files.SafeWrite.fileArg(out) // an empty name, a control character, "-" or a trailing / said as that
     val o = moire.stream.RecordOptions(port, secs, out, baud, decimation, adcClockHz, adcFormat, countsPerPeriod,
       listenOnly.value, timeoutMs, quiet.value, refCountsPerPeriod, refCountsPerTurn)
@@ -312,7 +311,7 @@ object Main {
               @arg(doc = "grating lines per revolution: positions in degrees and arcsec") linesPerRev: Option[Double] = None,
               @arg(doc = "volts at ADC full scale 1.0 (AD9226 at 2 Vpp span: 1): amplitudes in volts") fullScaleV: Option[Double] = None): Unit =
     moire.monitor.MonitorCmd.run(moire.monitor.MonitorCmd.Options(port, replay, simulate.value, effect, baud, decimation, bind, httpPort, folderName(out),
-      moire.monitor.Scale(countsPerPeriod, periodUm, linesPerRev, fullScaleV)), println(_), System.err.println(_))
+      moire.monitor.Scale(countsPerPeriod, periodUm, linesPerRev, fullScaleV), given("--baud", "--decimation")), println(_), System.err.println(_))
 
   @main(doc = "Run a recording's ADC codes through the generated RTL (Verilator); see replay --help.")
   def replay(@arg(doc = "FILE [--design subdiv|corrected] [--out OUT.csv] [--quiet] [emit-subdiv options]") args: mainargs.Leftover[String]): Unit =
@@ -366,8 +365,11 @@ object Main {
     // `board de2-115 --out DIR`: the board name as a positional word.
     val argv = if (args.length > 1 && args(0) == "board" && !args(1).startsWith("-")) Array("board", "--name") ++ args.tail else args
     repeated(mains, argv.toSeq).foreach { msg => System.err.println(s"moire: $msg"); return 2 }
+    // a number beyond a double's range would be taken as Infinity, and told back as that
+    saidOptions(mains, argv.toSeq).collectFirst { case (o, v) if NumberWord.matches(v.trim) && v.trim.toDouble.isInfinite => (o, v) }.foreach { case (o, v) =>
+      System.err.println(s"moire: $o: '$v' is beyond the largest number (about 1.8e308)"); return 2 }
     moire.files.SafeWrite.forgetMade()
-    val code = try {
+    val code = said.withValue(saidOptions(mains, argv.toSeq).map(_._1).toSet) { try {
       // runRaw hands back what a command threw (runEither would print it with its class name)
       parser.runRaw(argv.toSeq, allowPositional = false) match {
         case mainargs.Result.Success(_) => return 0
@@ -396,7 +398,7 @@ object Main {
       case e: Exception =>
         if (sys.env.contains("MOIRE_DEBUG")) e.printStackTrace()
         System.err.println(s"moire: internal error: ${plain(Option(e.getMessage).getOrElse("no message"))} (MOIRE_DEBUG=1 shows where)"); 2
-    }
+    } }
     // a command that failed leaves no empty output folder behind (its outputs' folders are made before the work)
     if (code != 0) moire.files.SafeWrite.removeEmptyMade()
     code
@@ -408,16 +410,46 @@ object Main {
     */
   private def repeated(mains: Seq[mainargs.MainData[Any, Main.type]], argv: Seq[String]): Option[String] =
     optionsOf(mains, argv.headOption.getOrElse("")).flatMap { known =>
-      // each option word with the value it took (a flag takes none); a word after `--` is no option
-      val said = argv.tail.takeWhile(_ != "--").zipWithIndex.flatMap { case (w, i) =>
-        val name = w.takeWhile(_ != '=')
-        known.get(name).map(flag => name -> (if (w.contains('=')) w.dropWhile(_ != '=').drop(1) else if (flag) "" else argv.tail.lift(i + 1).getOrElse("")))
-      }
+      val said = saidOptions(mains, argv).filter(x => known.contains(x._1))
       said.groupBy(_._1).toSeq.filter(_._2.size > 1).sortBy(g => said.indexWhere(_._1 == g._1)).headOption.map { case (name, vs) =>
         if (known(name)) s"$name is given ${vs.size} times; give it once"
         else s"$name is given ${vs.size} times (${vs.map(v => "'" + v._2 + "'").mkString(", ")}); give it once"
       }
     }
+
+  /** A decimal number as typed (sign, digits, point, exponent). */
+  private val NumberWord = "[+-]?([0-9]+[.]?[0-9]*|[.][0-9]+)([eE][+-]?[0-9]+)?".r
+
+  /** The CORDIC (emit) options given to the running command, at any value. */
+  private def cordicGiven: Seq[String] = {
+    val names = configParser.main.argSigs0.flatMap(_.longName(mainargs.Util.kebabCaseNameMapper)).map("--" + _)
+    given(names: _*)
+  }
+
+  /** The command's options as given, each with the value it took (a flag takes none; a word after `--` is no option, a
+    * word taken as an option's value is none either), in order. List options count too.
+    */
+  private def saidOptions(mains: Seq[mainargs.MainData[Any, Main.type]], argv: Seq[String]): Seq[(String, String)] =
+    optionsOf(mains, argv.headOption.getOrElse(""), lists = true).fold(Seq.empty[(String, String)]) { known =>
+      val words = argv.tail.takeWhile(_ != "--")
+      val out = Seq.newBuilder[(String, String)]; var i = 0
+      while (i < words.length) {
+        val w = words(i); val name = w.takeWhile(_ != '=')
+        known.get(name) match {
+          case Some(flag) =>
+            if (w.contains('=')) out += name -> w.dropWhile(_ != '=').drop(1)
+            else if (flag) out += name -> ""
+            else { out += name -> words.lift(i + 1).getOrElse(""); i += 1 }
+          case None => ()
+        }
+        i += 1
+      }
+      out.result()
+    }
+  /** The options the running command was given (by name, `--samples`): an option given at its default value is given. */
+  private val said = new scala.util.DynamicVariable[Set[String]](Set.empty)
+  /** Those of `names` the command was given, in the order of `names`. */
+  private def given(names: String*): Seq[String] = names.filter(said.value)
 
   /** A command's options: name -> whether it is a flag (takes no value); None for no such command. List options (given
     * several times) are not named: `repeated` does not count them.

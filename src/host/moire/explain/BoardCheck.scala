@@ -78,7 +78,9 @@ object BoardCheck {
 
   /** The check on one recording with a `position` column: a finding when the board differs, notes either way. */
   def run(file: String, rec: Recording, subdivOpts: Seq[String], log: String => Unit): (Option[Finding], Seq[String]) = {
-    val pos = rec.extra.getOrElse("position", return (None, Nil))
+    // subdivider options given for a recording without the board's outputs compare nothing: said, not dropped
+    val pos = rec.extra.getOrElse("position", return (None,
+      if (subdivOpts.isEmpty) Nil else Seq("board outputs not compared: --subdiv was given, but the recording has no position column (the board's outputs)")))
     // the board's position counts as its metadata says: an RTL of other counts would differ everywhere
     val given = subdivOpts.indexOf("--counts") match { case i if i >= 0 => subdivOpts.lift(i + 1); case _ => None }
     for (u <- given; v <- rec.meta.get("counts_per_period") if moire.numbers.Decimal.double(u) != moire.numbers.Decimal.double(v))

@@ -10,7 +10,7 @@ object ExplainCmd {
   final case class SimOptions(out: String, samples: Int, sampleRateHz: Double, adcBits: Int, adc: String, motion: String,
                               amplitude: Double, offsetSin: Double, offsetCos: Double, gainSin: Double, gainCos: Double,
                               phaseErrorDeg: Double, noise: Double, seed: Long, linesPerRev: Option[Double],
-                              effects: Seq[String], model: Option[String])
+                              effects: Seq[String], model: Option[String], given: Set[String] = Set.empty)
 
   def model(o: SimOptions): PhysicsModel = {
     val fmt = AdcFormat.parse(o.adc).fold(e => throw new ExplainError(s"--adc: $e"), identity)
@@ -22,8 +22,14 @@ object ExplainCmd {
     val d = try PhysicsModel(base, PhysicsModel.parseMotion(o.motion), o.sampleRateHz, o.samples, Adc(o.adcBits, fmt), o.linesPerRev,
       o.effects.map(EffectSpec.parse))
     catch { case e: IllegalArgumentException => throw new ExplainError(e.getMessage.stripPrefix("requirement failed: ")) }
-    o.model.map(f => PhysicsModel.fromJson(readText(f), f, d)).getOrElse(d)
+    o.model.map(f => PhysicsModel.fromJson(readText(f), f, d, SimOptionKeys.filter(k => o.given(k._2)))).getOrElse(d)
   }
+
+  /** The model file's key each of simulate's options sets. */
+  val SimOptionKeys: Map[String, String] = Map("samples" -> "--samples", "sample_rate_hz" -> "--sample-rate-hz", "adc_bits" -> "--adc-bits",
+    "adc" -> "--adc", "motion" -> "--motion", "amplitude" -> "--amplitude", "offset_sin" -> "--offset-sin", "offset_cos" -> "--offset-cos",
+    "gain_sin" -> "--gain-sin", "gain_cos" -> "--gain-cos", "phase_error_deg" -> "--phase-error-deg", "noise_rms" -> "--noise",
+    "seed" -> "--seed", "lines_per_rev" -> "--lines-per-rev", "effects" -> "--effect")
 
   private def readText(f: String): String = {
     val p = os.Path(f, os.pwd)

@@ -222,9 +222,14 @@ object PhysicsModel {
     o.get("effects").map(_.arrOpt.getOrElse(throw new ExplainError(s"$where: effects must be a list")).toSeq
       .map(EffectSpec.fromJson(_, where))).getOrElse(default)
 
-  def fromJson(text: String, where: String, d: PhysicsModel): PhysicsModel = {
+  /** A model file's model, `d`'s values where it names none. `given`: the keys an option given on the command line set
+    * (samples for --samples): the file setting one too is refused (one of the two would be dropped without a word).
+    */
+  def fromJson(text: String, where: String, d: PhysicsModel, given: Map[String, String] = Map.empty): PhysicsModel = {
     val o = jsonObject(text, where)
     o.keys.find(k => !Keys.contains(k)).foreach(k => throw new ExplainError(s"$where: unknown key '$k' (a model file has ${Keys.mkString(", ")})"))
+    given.toSeq.sortBy(_._2).find(g => o.contains(g._1)).foreach { case (k, opt) =>
+      throw new ExplainError(s"$where sets $k, and $opt was given too; give one of the two (the model file's value or the option)") }
     def n(k: String, dv: Double) = o.get(k).map(x => x.numOpt.getOrElse(throw new ExplainError(s"$where: $k must be a number"))).getOrElse(dv)
     val b = d.base
     val lpr = o.get("lines_per_rev") match {

@@ -5,12 +5,18 @@ import moire.recording.Recording
 /** `moire monitor`: a source (board, replay or simulated board), the live state and the web page, until Ctrl-C. */
 object MonitorCmd {
   final case class Options(port: Option[String], replay: Option[String], simulate: Boolean, effects: Seq[String], baud: Int,
-                           decimation: Option[Long], bind: String, httpPort: Int, out: String, scale: Scale)
+                           decimation: Option[Long], bind: String, httpPort: Int, out: String, scale: Scale,
+                           boardOptions: Seq[String] = Nil)
 
   def validate(o: Options): Unit = {
     val n = Seq(o.port.isDefined, o.replay.isDefined, o.simulate).count(identity)
     if (n != 1) throw new MonitorError("monitor: give one of --port DEV (a board), --replay FILE (a recording) or --simulate (a simulated board)")
     if (o.effects.nonEmpty && !o.simulate) throw new MonitorError("--effect belongs to --simulate")
+    // the link's rate and the decimation written to a board: a replay or a simulated board would ignore them
+    val board = (o.boardOptions ++ (if (o.decimation.isDefined) Seq("--decimation") else Nil)).distinct
+    if (o.port.isEmpty && board.nonEmpty)
+      throw new MonitorError(s"${board.mkString(" and ")} ${if (board.size == 1) "applies" else "apply"} to a board (--port DEV); " +
+        s"${if (o.replay.isDefined) "a replay plays the file at its own rate" else "a simulated board has no link"}: leave ${if (board.size == 1) "it" else "them"} out")
     if (o.httpPort < 0 || o.httpPort > 65535) throw new MonitorError(s"--http-port must be in 0..65535, got ${o.httpPort}")
     if (o.baud < 300 || o.baud > 12000000) throw new MonitorError(s"--baud must be in 300..12000000, got ${o.baud}")
     o.decimation.foreach(d => if (d < 1 || d > moire.protocol.Registers.MaxDecimation)

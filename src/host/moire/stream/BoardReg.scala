@@ -31,6 +31,9 @@ object BoardReg {
     val saveFile = o.save.map(os.Path(_, os.pwd))
     saveFile.foreach(moire.files.SafeWrite.checkFile)
     val writes = o.writes.map(parseWrite)
+    // the same register written twice in one command: the first value would be lost at once
+    writes.groupBy(_._1).collectFirst { case (a, ws) if ws.size > 1 =>
+      throw new StreamError(s"--write ${Registers.name(a)} is given ${ws.size} times (${o.writes.filter(w => parseWrite(w)._1 == a).map("'" + _ + "'").mkString(", ")}); write each register once") }
     val reads = o.reads.map(r => Registers.parse(r).fold(e => throw new StreamError(s"--read: $e"), identity))
     val coefs = o.coefficients.map(f => loadCoefficients(os.Path(f, os.pwd)))
     if (o.baud < 300 || o.baud > 12000000) throw new StreamError(s"--baud must be in 300..12000000, got ${o.baud}")

@@ -52,7 +52,9 @@ object Recorder {
     o.adcClockHz.foreach(f => if (!(f > 0) || f > MaxAdcClockHz)
       throw new StreamError(s"--adc-clock-hz must be a positive number up to ${MaxAdcClockHz.toLong} (the fastest board clock), got $f"))
     o.adcFormat.foreach(f => AdcFormat.parse(f).left.foreach(e => throw new StreamError(s"--adc-format: $e")))
-    o.countsPerPeriod.foreach(m => if (m < 1 || m > StreamV1.MaxU32) throw new StreamError(s"--counts-per-period must be a positive u32, got $m"))
+    // a moire board's subdivider counts M per period, a power of two (`SubdivConfig`): another value is no board's
+    o.countsPerPeriod.foreach(m => if (m < 4 || m > 65536 || (m & (m - 1)) != 0)
+      throw new StreamError(s"--counts-per-period must be a power of two from 4 to 65536 (the board's M, counts per grating period), got $m"))
     for ((k, v) <- Seq("--ref-counts-per-period" -> o.refCountsPerPeriod, "--ref-counts-per-turn" -> o.refCountsPerTurn); x <- v)
       if (!(x > 0) || x.isInfinite) throw new StreamError(s"$k must be a positive finite number, got $x")
     if (o.refCountsPerPeriod.isDefined && o.refCountsPerTurn.isDefined) throw new StreamError("give --ref-counts-per-period or --ref-counts-per-turn, not both")

@@ -90,7 +90,9 @@ object SafeWrite {
     } finally { try os.remove.all(stage) catch { case _: IOException => () }; Temporaries.done(stage) }
   }
 
-  /** What a file holds, from its first bytes: a PNG image, an HTML page, JSON, a moire recording, text or other data. */
+  /** What a file holds, from its first bytes: a PNG image, an HTML page, JSON, a moire recording, another moire format
+    * (a replay's, a calibration's), text or other data.
+    */
   def kind(p: os.Path): String = {
     val head = try { val in = Files.newInputStream(p.toNIO); try in.readNBytes(256) finally in.close() } catch { case _: IOException => Array.emptyByteArray }
     if (head.length >= 4 && (head(0) & 0xff) == 0x89 && head(1) == 'P' && head(2) == 'N' && head(3) == 'G') return "a PNG image"
@@ -99,6 +101,8 @@ object SafeWrite {
     if (t.startsWith("<!doctype html") || t.startsWith("<html")) "an HTML page"
     else if (t.startsWith("{") || t.startsWith("[")) "JSON"
     else if (t.startsWith("# moire-recording")) "a moire recording"
+    // moire's other files name their own format on their first line (`# moire-replay v1`, `# moire-calibration v1`)
+    else if (t.startsWith("# moire-")) s"a ${t.drop(2).takeWhile(c => c.isLetterOrDigit || c == '-')} file"
     else "text"
   }
 
