@@ -68,6 +68,11 @@ object SignalExplain {
     while (res.rerun.nonEmpty && depth < MaxReruns) { depth += 1; res = search(file, rec, model, progress, maxFindings, holdBytes, materiality, res.rerun, depth) }
     res.copy(report = res.report.copy(seconds = (System.nanoTime() - t0) / 1e9))
   }
+  /** Two candidates whose gains differ by less than this share of the larger predict the same signal here (a 0.3 % 2nd
+    * harmonic on both channels at a constant 5 kHz and a line at 10.00001 kHz: 718002 and 718021).
+    */
+  val SameSignal = 1e-3
+
   /** Searches made again with more windows weighted out, at most. */
   val MaxReruns = 2
 
@@ -122,8 +127,9 @@ object SignalExplain {
       val passing = ok.filter(c => dbic(c) > Threshold)
       if (SignalEngine.debug) System.err.println(s"round ${round + 1}: passing " + passing.sortBy(-dbic(_)).map(c => f"${c.effect}/${c.channel} ${dbic(c)}%.0f").mkString(", ") + s"; all ${all.size}: " + all.map(c => f"${c.effect}/${c.channel} ${dbic(c)}%.0f").mkString(", "))
       // A pile-up at one code is direct evidence in the histogram that no smooth effect makes: such repairs go first. An effect that yields to a look-alike predicting the same signal (within the
-      // threshold) stands back for it: it is tried after the look-alike (when that fails its tests); the finding names it.
-      def yields(c: Cand) = Effects(c.effect).exists(f => passing.exists(o => o != c && f.yieldsTo(c, o, e) && dbic(o) > dbic(c) - Threshold))
+      // threshold, or `SameSignal` of what the two explain) stands back for it: it is tried after the look-alike (when that fails its tests); the finding names it.
+      def yields(c: Cand) = Effects(c.effect).exists(f => passing.exists(o => o != c && f.yieldsTo(c, o, e) &&
+        dbic(o) > dbic(c) - math.max(Threshold, SameSignal * dbic(c))))
       val ordered = passing.sortBy(c => (!Effects(c.effect).exists(_.direct), yields(c), -dbic(c))).iterator
       def reject(c: Cand, why: String): Unit =
         if (!rejected.exists(_.where.startsWith(c.effect + " ")))
@@ -136,7 +142,7 @@ object SignalExplain {
       while (!accepted && tries < MaxTries && ordered.hasNext) {
         val c = ordered.next()
         Quantization.why(e, c).orElse(Identify.why(e, c, refuted.toSet)) match {
-          case Some(why) => reject(c, why)
+          case Some(why) => if (SignalEngine.debug) System.err.println(s"not tried ${c.effect}/${c.channel}: $why"); reject(c, why)
           case None =>
             tries += 1
             val snapB = Snapshot.of(s"before ${c.effect}", e.resS, e.resC)
@@ -162,6 +168,7 @@ object SignalExplain {
             val why = if (!(bic0 - e.bic > 0)) Some("") else if (size < floor) Some("negligible")
               else { val r = Replicate.why(e, prev); if (r.isDefined) refuted += c.effect; r }
             lap("replicate")
+            if (SignalEngine.debug) System.err.println(s"tried ${c.effect}/${c.channel}: " + why.orElse(claimed(claims, before, claimedNow)).fold("kept")(w => if (w.isEmpty) "no gain" else w))
             why.orElse(claimed(claims, before, claimedNow)) match {
               case Some(w) =>
                 if (w == "negligible") {

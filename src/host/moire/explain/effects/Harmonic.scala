@@ -42,10 +42,16 @@ object Harmonic extends Effect {
 
   override def lookAlikes(f: Finding, e: SignalEngine): Seq[String] = {
     val k = f.params.getOrElse("order", 0.0).toInt
-    if (f.channel == "both" || (k != 2 && k != 3)) Nil
+    val (lo, hi) = e.speedRange
+    // at one speed a harmonic is a line at k times the fringe frequency: pickup there predicts the same signal
+    val line = if (!(hi <= lo * (1 + Interference.SameLine)) || k < 2) Nil
+      else Seq(f"${Interference.name} at ${Interference.hz(k * 0.5 * (lo + hi))} ($k x the fringe frequency) predicts the same signal while the " +
+        f"head moves at one speed, as it does here (${Interference.hz(lo)} .. ${Interference.hz(hi)}); a record at another speed separates them " +
+        "(a harmonic moves with the fringe frequency, pickup stays at its own)")
+    line ++ (if (f.channel == "both" || (k != 2 && k != 3)) Nil
     else Seq(s"${AdcNonlinearity.name} of the ${f.channel} ADC alone (a ${if (k == 2) "bow" else "S shape"} of its transfer curve) predicts " +
       s"the same signal while the ${f.channel} amplitude stays constant, as it does here; a record at another amplitude or offset of " +
-      s"the ${f.channel} channel separates them (a harmonic scales with the amplitude, INL stays with the code)")
+      s"the ${f.channel} channel separates them (a harmonic scales with the amplitude, INL stays with the code)"))
   }
 
   override def harmonics(specs: Seq[EffectSpec]): Seq[moire.signal.Harmonic] = specs.map { e =>

@@ -84,6 +84,18 @@ object Interference extends Effect {
     if (m(1) > 0) (m(0) / m(1), 1 / math.sqrt(m(1))) else (0.0, Double.PositiveInfinity)
   }
 
+  /** A line at a harmonic's order times a fringe frequency of the record stands back for that harmonic when the two
+    * predict about the same signal (at one speed they are one signal): the fringe's own shape needs no pickup that
+    * happens to sit at a multiple of the fringe frequency.
+    */
+  override def yieldsTo(c: Cand, other: Cand, e: SignalEngine): Boolean = other.effect == Harmonic.name && {
+    val hz = c.params.getOrElse("frequency_hz", Double.NaN); val k = other.params.getOrElse("order", Double.NaN)
+    val (lo, hi) = e.speedRange
+    hz >= k * lo * (1 - SameLine) && hz <= k * hi * (1 + SameLine)
+  }
+  /** Relative distance of a line from a harmonic's frequencies within which it is taken as at them. */
+  val SameLine = 0.01
+
   /** The candidate with its line's frequency where the fit moved it (`SignalExplain.retune`). */
   def at(c: Cand, hz: Double): Cand = c.copy(params = c.params + ("frequency_hz" -> hz))
 
