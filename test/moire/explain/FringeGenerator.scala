@@ -21,7 +21,8 @@ object FringeGenerator {
                         bits: Int = 12, formatBits: Int = 0, seed: Long = 1,
                         contrastPerPeriod: Double = 0.0, offsetPerPeriod: Double = 0.0,
                         warmGain: Double = 0.0, warmOffset: Double = 0.0, warmTauS: Double = 0.01,
-                        driftGainPerS: Double = 0.0, driftOffsetPerS: Double = 0.0, humFs: Double = 0.0, humHz: Double = 50.0)
+                        driftGainPerS: Double = 0.0, driftOffsetPerS: Double = 0.0, humFs: Double = 0.0, humHz: Double = 50.0,
+                        h2: Double = 0.0, h2Deg: Double = -60)
 
   /** Fringe phase in periods at time t. */
   def periods(s: Spec, t: Double): Double = s.motion match {
@@ -59,8 +60,10 @@ object FringeGenerator {
       val g = (1 + s.contrastPerPeriod * (x - x0)) * (1 + s.warmGain * warm + s.driftGainPerS * t)
       // a pickup line (mains hum) common to both channels
       val o = s.offsetPerPeriod * (x - x0) + s.warmOffset * warm + s.driftOffsetPerS * t + s.humFs * math.sin(2 * math.Pi * s.humHz * t)
-      val vs = s.offS + o + s.amp * g * math.sin(a) + s.noiseLsb / half * rnd.nextGaussian()
-      val vc = s.offC + o + s.amp * s.gainC * g * math.cos(a + pe) + s.noiseLsb / half * rnd.nextGaussian()
+      // a 2nd harmonic of the fringe turning with it on both channels (relative to the amplitude)
+      val h = 2 * a + math.toRadians(s.h2Deg)
+      val vs = s.offS + o + s.amp * g * (math.sin(a) + s.h2 * math.sin(h)) + s.noiseLsb / half * rnd.nextGaussian()
+      val vc = s.offC + o + s.amp * s.gainC * g * (math.cos(a + pe) + s.h2 * math.cos(h)) + s.noiseLsb / half * rnd.nextGaussian()
       def code(v: Double) = math.max(0, math.min(top, math.floor(v * half + 0.5).toInt + half)) << shift
       sb.append(code(vs)).append(',').append(code(vc)).append('\n')
       i += 1

@@ -21,6 +21,20 @@ class OneSpeedSpec extends AnyFlatSpec with Matchers {
     Coverage.untested(e, lo, hi).exists(_.startsWith("channel skew, bandwidth and crosstalk: the fringe frequency spans only")) shouldBe true
   }
 
+  it should "find a harmonic on both channels as that, naming the line at twice the fringe frequency" in {
+    // another generator's 0.3 % 2nd harmonic turning with the fringe at a constant 5 kHz: shorter segments took it up
+    // (0.4 periods, every effect then not identifiable), and then a line at 10.00001 kHz was named in its place
+    val s = FringeGenerator.Spec(n = 200000, fs = 1e6, motion = "constant", f0 = 5000, h2 = 0.003, noiseLsb = 1.0, seed = 31)
+    val r = explain(FringeGenerator.recording(s))
+    info(describe(r))
+    val f = r.findings.find(_.effect == "harmonic").getOrElse(fail(s"no harmonic: ${describe(r)}; not tested: ${r.untested.mkString("; ")}"))
+    f.channel shouldBe "both"
+    f.params("order") shouldBe 2.0
+    f.params("amplitude_rel") shouldBe 0.003 +- 3 * f.unc("amplitude_rel")
+    r.findings.map(_.effect) should not contain "interference"
+    f.lookAlikes.exists(_.startsWith("interference at 10.0000 kHz (2 x the fringe frequency)")) shouldBe true
+  }
+
   "a ramp" should "test them" in {
     val e = new SignalEngine(sim(Nil, n = 60000)); e.init()
     val (lo, hi) = e.speedRange
