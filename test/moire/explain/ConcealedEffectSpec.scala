@@ -88,6 +88,23 @@ class ConcealedEffectSpec extends AnyFlatSpec with Matchers {
     f.channel shouldBe "sin"; f.params("bit") shouldBe 5.0; f.params("bridged_to") shouldBe 6.0
   }
 
+  it should "find heavy clipping of both ends on both channels as clipping, not as harmonics of the fringe" in {
+    // simulate's 0.9 clipped at +- 0.8 on sin, and another generator's on both channels: the pile-ups' samples censored
+    // cost 2 ln(1 / LSB) each against the others' density, and harmonics 3, 5 and 7 were named in their place
+    val own = explain(sim(Seq(EffectSpec("clipping", Map("high_fs" -> 0.8, "low_fs" -> -0.8), "sin")), amplitude = 0.9, n = 200000, fs = 5e6))
+    val other = explain(FringeGenerator.recording(FringeGenerator.Spec(n = 200000, fs = 5e6, motion = "chirp", f0 = 20e3, f1 = 150e3,
+      amp = 0.9, clipFs = 0.8, seed = 33)))
+    for ((name, r, chans) <- Seq(("simulate", own, Seq("sin")), ("another generator", other, Seq("sin", "cos")))) {
+      info(s"$name: ${describe(r)}")
+      withClue(s"$name: ${describe(r)}") {
+        r.findings.map(_.effect).distinct shouldBe Seq("clipping")
+        r.findings.map(_.channel).sorted shouldBe chans.sorted
+        for (f <- r.findings) { f.params("high_fs") shouldBe 0.8 +- 0.001; f.params("low_fs") shouldBe -0.8 +- 0.001 }
+        r.misfit shouldBe empty
+      }
+    }
+  }
+
   it should "find amplifier clipping below the ADC range" in {
     val f = first(explain(sim(Seq(EffectSpec("clipping", Map("high_fs" -> 0.8), "sin")))), "clipping")
     f.channel shouldBe "sin"

@@ -22,7 +22,7 @@ object FringeGenerator {
                         contrastPerPeriod: Double = 0.0, offsetPerPeriod: Double = 0.0,
                         warmGain: Double = 0.0, warmOffset: Double = 0.0, warmTauS: Double = 0.01,
                         driftGainPerS: Double = 0.0, driftOffsetPerS: Double = 0.0, humFs: Double = 0.0, humHz: Double = 50.0,
-                        h2: Double = 0.0, h2Deg: Double = -60)
+                        h2: Double = 0.0, h2Deg: Double = -60, clipFs: Double = 0.0)
 
   /** Fringe phase in periods at time t. */
   def periods(s: Spec, t: Double): Double = s.motion match {
@@ -65,7 +65,9 @@ object FringeGenerator {
       val vs = s.offS + o + s.amp * g * (math.sin(a) + s.h2 * math.sin(h)) + s.noiseLsb / half * rnd.nextGaussian()
       val vc = s.offC + o + s.amp * s.gainC * g * (math.cos(a + pe) + s.h2 * math.cos(h)) + s.noiseLsb / half * rnd.nextGaussian()
       def code(v: Double) = math.max(0, math.min(top, math.floor(v * half + 0.5).toInt + half)) << shift
-      sb.append(code(vs)).append(',').append(code(vc)).append('\n')
+      // an amplifier that saturates at +- clipFs on both channels, after the read head's noise
+      def clip(v: Double) = if (s.clipFs > 0) math.max(-s.clipFs, math.min(s.clipFs, v)) else v
+      sb.append(code(clip(vs))).append(',').append(code(clip(vc))).append('\n')
       i += 1
     }
     sb.toString

@@ -686,7 +686,7 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
       else (out, if (counts(1) == 0) null else lock.synchronized(cen), pv, counts(2), counts(3), counts(4))
     }
     val (a, ca, pa, sa, ea, la) = one(0, ys, rec.sin, _repS, resS, _cens.pvS); val (b, cb, pb, sb, eb, lb) = one(1, yc, rec.cos, _repC, resC, _cens.pvC)
-    Repaired(a, b, ca, cb, pa, pb, sa, sb, ea + eb, la, lb)
+    Repaired(a, b, ca, cb, pa, pb, sa, sb, ea + eb, la, lb, step)
   }
 
   /** No fault repaired and no sample held at a rail: the fit's data do not change from one step to the next. */
@@ -926,16 +926,24 @@ object SignalEngine {
 /** Noise model: per-channel white variance plus jitter variance jitter2 * slope^2; m2ll = -2 ln L. */
 final case class Noise(varS: Double, varC: Double, jitter2: Double, m2ll: Double)
 object Noise {
-  /** -2 ln Q(d / sd) summed over censored samples (d = distance from prediction up to the level). */
-  private def censored(cen: Array[Double], sd: Int => Double): (Double, Int) = {
+  /** -2 ln (Q(d / sd) / bin) summed over censored samples (d = distance from prediction up to the level). A censored
+    * sample's term is a probability (of a code at or beyond the level), the others' a density: `bin`, the quantization
+    * step, is the width that makes a density the probability of its code (0: none; a repair that censors gives it).
+    * Without it each censored sample cost 2 ln(1 / bin), 15.2 at 12 bits, and a clipping candidate that censors 36,000
+    * samples came out 540,000 worse by BIC than the harmonics that bend the fit to the clipped shape.
+    */
+  private def censored(cen: Array[Double], sd: Int => Double, bin: Double): (Double, Int) = {
     if (cen == null) return (0.0, 0)
+    val perBin = if (bin > 0) 2 * math.log(bin) else 0.0
     var m = 0.0; var k = 0; var i = 0
     while (i < cen.length) {
-      if (!cen(i).isNaN) { m -= 2 * math.log(math.max(1e-300, 0.5 * org.hipparchus.special.Erf.erfc(cen(i) / (sd(i) * math.sqrt(2))))); k += 1 }
+      if (!cen(i).isNaN) { m += perBin - 2 * math.log(math.max(1e-300, 0.5 * org.hipparchus.special.Erf.erfc(cen(i) / (sd(i) * math.sqrt(2))))); k += 1 }
       i += 1
     }
     (m, k)
   }
+
+  private def binOf(r: Repaired): Double = if (r == null) 0.0 else r.bin
 
   /** White noise on both channels, nothing censored, from the residual sums of squares of n samples each. */
   def white(rssS: Double, rssC: Double, n: Int): Noise = {
@@ -960,7 +968,7 @@ object Noise {
     def count(c: Array[Double]) = if (c == null) 0 else c.count(!_.isNaN)
     val ns = math.max(1, n - count(cs)); val nc = math.max(1, n - count(cc))
     val vs = math.max(floor, ssS / ns); val vc = math.max(floor, ssC / nc)
-    val (ms, _) = censored(cs, _ => math.sqrt(vs)); val (mc, _) = censored(cc, _ => math.sqrt(vc))
+    val (ms, _) = censored(cs, _ => math.sqrt(vs), binOf(cens)); val (mc, _) = censored(cc, _ => math.sqrt(vc), binOf(cens))
     Noise(vs, vc, 0, ns * (math.log(2 * math.Pi * vs) + 1) + nc * (math.log(2 * math.Pi * vc) + 1) + ms + mc - 2 * cens.entropy)
   }
 
@@ -1026,7 +1034,7 @@ object Noise {
       }
       m
     }
-    m2 += censored(cs, k => math.sqrt(vs + j2 * ds(k) * ds(k)))._1 + censored(cc, k => math.sqrt(vc + j2 * dc(k) * dc(k)))._1
+    m2 += censored(cs, k => math.sqrt(vs + j2 * ds(k) * ds(k)), binOf(cens))._1 + censored(cc, k => math.sqrt(vc + j2 * dc(k) * dc(k)), binOf(cens))._1
     Noise(vs, vc, j2, m2 - 2 * ent)
   }
 }
@@ -1039,6 +1047,6 @@ object Noise {
   */
 final case class Repaired(s: Array[Double], c: Array[Double], censS: Array[Double], censC: Array[Double],
                           pvS: Array[Float] = null, pvC: Array[Float] = null, pvSumS: Double = 0, pvSumC: Double = 0,
-                          entropy: Double = 0, lostS: Double = 0, lostC: Double = 0) {
+                          entropy: Double = 0, lostS: Double = 0, lostC: Double = 0, bin: Double = 0) {
   def soft: Boolean = pvS != null || pvC != null
 }
