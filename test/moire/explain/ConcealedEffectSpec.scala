@@ -94,7 +94,11 @@ class ConcealedEffectSpec extends AnyFlatSpec with Matchers {
     val own = explain(sim(Seq(EffectSpec("clipping", Map("high_fs" -> 0.8, "low_fs" -> -0.8), "sin")), amplitude = 0.9, n = 200000, fs = 5e6))
     val other = explain(FringeGenerator.recording(FringeGenerator.Spec(n = 200000, fs = 5e6, motion = "chirp", f0 = 20e3, f1 = 150e3,
       amp = 0.9, clipFs = 0.8, seed = 33)))
-    for ((name, r, chans) <- Seq(("simulate", own, Seq("sin")), ("another generator", other, Seq("sin", "cos")))) {
+    // and with the converter's noise after the saturation: a flat top spread over a few codes, no pile-up at one
+    val after = explain(FringeGenerator.recording(FringeGenerator.Spec(n = 200000, fs = 5e6, motion = "chirp", f0 = 20e3, f1 = 150e3,
+      amp = 0.9, clipFs = 0.8, noiseLsb = 0.3, noiseAfterLsb = 1.0, seed = 34)))
+    for ((name, r, chans) <- Seq(("simulate", own, Seq("sin")), ("another generator", other, Seq("sin", "cos")),
+      ("another generator, noise after", after, Seq("sin", "cos")))) {
       info(s"$name: ${describe(r)}")
       withClue(s"$name: ${describe(r)}") {
         r.findings.map(_.effect).distinct shouldBe Seq("clipping")

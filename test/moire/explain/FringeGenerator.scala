@@ -22,7 +22,7 @@ object FringeGenerator {
                         contrastPerPeriod: Double = 0.0, offsetPerPeriod: Double = 0.0,
                         warmGain: Double = 0.0, warmOffset: Double = 0.0, warmTauS: Double = 0.01,
                         driftGainPerS: Double = 0.0, driftOffsetPerS: Double = 0.0, humFs: Double = 0.0, humHz: Double = 50.0,
-                        h2: Double = 0.0, h2Deg: Double = -60, clipFs: Double = 0.0)
+                        h2: Double = 0.0, h2Deg: Double = -60, clipFs: Double = 0.0, noiseAfterLsb: Double = 0.0)
 
   /** Fringe phase in periods at time t. */
   def periods(s: Spec, t: Double): Double = s.motion match {
@@ -67,7 +67,9 @@ object FringeGenerator {
       def code(v: Double) = math.max(0, math.min(top, math.floor(v * half + 0.5).toInt + half)) << shift
       // an amplifier that saturates at +- clipFs on both channels, after the read head's noise
       def clip(v: Double) = if (s.clipFs > 0) math.max(-s.clipFs, math.min(s.clipFs, v)) else v
-      sb.append(code(clip(vs))).append(',').append(code(clip(vc))).append('\n')
+      // the converter's own noise, after the amplifier (and its saturation)
+      def adc(v: Double) = if (s.noiseAfterLsb > 0) v + s.noiseAfterLsb / half * rnd.nextGaussian() else v
+      sb.append(code(adc(clip(vs)))).append(',').append(code(adc(clip(vc)))).append('\n')
       i += 1
     }
     sb.toString

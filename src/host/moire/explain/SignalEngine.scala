@@ -586,7 +586,12 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
     val nz = _noise; val useSoft = soft && nz.m2ll != 0 && sp.faults == spec.faults
     // the prediction (the repaired data less the residual) read where it is needed, not made as an array
     def one(ch: Int, y: Array[Double], codes: Array[Int], rp: Array[Double], rr: Array[Double], pv0: Array[Float]): (Array[Double], Array[Double], Array[Float], Double, Double, Double) = {
-      val fl = sp.faults.filter(_.ch == ch); val cl = sp.clips.filter(_.ch == ch)
+      val fl = sp.faults.filter(_.ch == ch); val cl = sp.clips.filter(c => c.ch == ch && !c.after)
+      // a saturation with the noise after it: a sample there is its level plus noise, whatever the signal beyond (held at
+      // the prediction plus that noise: it tells the fit nothing, and its residual is the noise about the level)
+      val ca = sp.clips.filter(c => c.ch == ch && c.after)
+      val loA = (Double.NegativeInfinity +: ca.map(_.lo)).max; val hiA = (Double.PositiveInfinity +: ca.map(_.hi)).min
+      val flat = ca.nonEmpty
       // the noise variance at sample i (the soft repair's weights)
       val white = if (ch == 0) nz.varS else nz.varC; val j2 = nz.jitter2
       @inline def noiseVar(i: Int): Double = {
@@ -613,8 +618,8 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
       }
       @inline def censored(v: Double) = censor && (v >= hi - 0.5 * lsb || v <= lo + 0.5 * lsb)
       // without faults most records change nothing: a scan first, so that an unchanged channel is `y` itself
-      if (pre == null && ex == null && !censor) return (y, null, null, 0.0, 0.0, 0.0)
-      if (pre == null && ex == null && Par.sum(n) { (a, b) => var k = 0.0; var i = a; while (i < b) { if (censored(y(i))) k += 1; i += 1 }; k } == 0)
+      if (pre == null && ex == null && !censor && !flat) return (y, null, null, 0.0, 0.0, 0.0)
+      if (pre == null && ex == null && !flat && Par.sum(n) { (a, b) => var k = 0.0; var i = a; while (i < b) { if (censored(y(i))) k += 1; i += 1 }; k } == 0)
         return (y, null, null, 0.0, 0.0, 0.0)
       // `inPlace`: over the fit's own arrays (each sample's prediction is read before its value is written), never the data
       val out = if (inPlace && (rp ne y) && rp.length == n) rp else new Array[Double](n)
@@ -657,6 +662,25 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
         if (z > 1) { m(2) += vr; m(3) += math.log(z) - sl / z; m(4) += vr / nv } // entropy: -sum (w/z) ln(w/z)
         vk + du
       }
+      // a flat top's samples scatter by the noise after the saturation alone (the read head's, before it, is cut off
+      // there): their deviations from the level scaled to the channel's noise, by g = sqrt(its variance / theirs), and
+      // -2 ln L given back 2 ln g each (the entropy's term): the two variances' likelihood. Without it another
+      // generator's 0.3 LSB before and 1 LSB after a saturation made the flat tops' lower noise a phase noise.
+      val g = if (!flat || nz.m2ll == 0) 1.0 else {
+        val q = Par.sums(n, 2) { (a, b, m) =>
+          var i = a
+          while (i < b) {
+            val p = rp(i) - rr(i); val v = y(i)
+            if (!(ex != null && ex(i)) && !censored(v)) {
+              if (v >= hiA || p >= hiA) { m(0) += (v - hiA) * (v - hiA); m(1) += 1 }
+              else if (v <= loA || p <= loA) { m(0) += (v - loA) * (v - loA); m(1) += 1 }
+            }
+            i += 1
+          }
+        }
+        if (q(1) < 2 || !(q(0) > 0)) 1.0 else math.max(1 / 3.0, math.min(3.0, math.sqrt(white * q(1) / q(0))))
+      }
+      val lnG = math.log(g)
       // the censored samples' distances, NaN elsewhere: made when the first one is met (most repairs censor none)
       var cen: Array[Double] = null
       val lock = new Object
@@ -677,6 +701,8 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
               mine(i) = if (v >= hi - 0.5 * lsb) v - 0.5 * lsb - p else p - (v + 0.5 * lsb); out(i) = p; m(1) += 1
               if (pv != null && pv(i) != 0) { m(2) -= pv(i); m(4) -= pv(i) / noiseVar(i); pv(i) = 0 } // held at the prediction
             }
+            else if (flat && (v >= hiA || p >= hiA)) { out(i) = p + (v - hiA) * g; m(0) += 1; m(3) += lnG }
+            else if (flat && (v <= loA || p <= loA)) { out(i) = p + (v - loA) * g; m(0) += 1; m(3) += lnG }
             else { out(i) = v; if (v != y(i)) m(0) += 1 }
           }
           i += 1
@@ -690,7 +716,7 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
   }
 
   /** No fault repaired and no sample held at a rail: the fit's data do not change from one step to the next. */
-  private def plainData: Boolean = spec.faults.isEmpty && cens.censS == null && cens.censC == null
+  private def plainData: Boolean = spec.faults.isEmpty && !spec.clips.exists(_.after) && cens.censS == null && cens.censC == null
 
   /** How much the last refining step of `refit` lowered BIC (infinite before the first). */
   def lastGain: Double = _lastGain

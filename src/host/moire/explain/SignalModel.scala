@@ -38,7 +38,13 @@ final case class Fault(ch: Int, bit: Int, stuckAt: Int, bridgedTo: Int) {
 }
 
 /** Saturation of channel ch (0 sin, 1 cos) at lo / hi (full-scale units; +-inf when absent). */
-final case class Clip(ch: Int, lo: Double, hi: Double) { def params: Int = (if (lo.isInfinite) 0 else 1) + (if (hi.isInfinite) 0 else 1) }
+/** An amplifier's saturation on channel ch (0 sin, 1 cos) at lo and hi (infinite: none). `after`: the converter's noise
+  * comes after it (a flat top with the noise on it, spread over a few codes), not before (a pile-up at one code).
+  */
+final case class Clip(ch: Int, lo: Double, hi: Double, after: Boolean = false) {
+  /** The levels, and with the noise after it the variance of that noise alone. */
+  def params: Int = (if (lo.isInfinite) 0 else 1) + (if (hi.isInfinite) 0 else 1) + (if (after) 1 else 0)
+}
 
 /** The whole backward model: the default part plus accepted effects. Cut-offs are infinite when absent. */
 final case class ModelSpec(
