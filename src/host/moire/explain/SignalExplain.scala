@@ -91,9 +91,12 @@ object SignalExplain {
     noFringe(e).foreach(why => throw new ExplainError(s"$file: $why"))
     val givenModel = specOf(model)
     if (givenModel != ModelSpec()) { e.spec = givenModel; e.converge(); settle(e) }
+    // isolated samples far off the signal: glitches of the data, out of the fit from here on (and named in the notes)
+    val glitches = Glitches.find(e); val glitchMask = Glitches.mask(e.n, glitches)
+    if (glitchMask != null) e.exclude(glitchMask)
     val baseRms = e.rms; val baseBic = e.bic
     // the noise of the default part where the model does not follow somewhere (or nowhere): the floor, not the misfit
-    val noiseMask = Adequacy.maskOf(e, prior)
+    val noiseMask = Glitches.union(Adequacy.maskOf(e, prior), glitchMask)
     val floorNoise = (Adequacy.noiseOf(e.resS, noiseMask), Adequacy.noiseOf(e.resC, noiseMask))
     val baseParams0 = baselineParams(e)
     val before = Snapshot.of("default model", e.resS, e.resC)
@@ -235,7 +238,7 @@ object SignalExplain {
     val coarse = CoarseQuantization.finding(e)
     val shown = if (follows) fin else Nil
     val report = Report(file, "signals", baseRms, baseBic, baseParams, located, coarse ++ shown.map(_._1), unexplained, finalRms, finalBic,
-      rec.length, (System.nanoTime() - t0) / 1e9, notes(e), Coverage.untested(e, cands.fMin, cands.fMax) ++
+      rec.length, (System.nanoTime() - t0) / 1e9, notes(e) ++ Glitches.note(glitches), Coverage.untested(e, cands.fMin, cands.fMax) ++
         (if (confounded) Identifiable.leftOver(left) else Nil), small, misfit)
     Result(report, e, before, shown, rerun)
   }
@@ -423,6 +426,14 @@ object SignalExplain {
     else if (!(a > MinAmplitudeNoise * sd))
       Some(f"no fringe: the fitted amplitude ${a / e.lsb}%.3g LSB is not above ${MinAmplitudeNoise}%.0f x the noise " +
         f"(${sd / e.lsb}%.3g LSB rms); are the inputs connected, and the read head over the scale and moving?")
+    else if (arcCovered(e) < MinArc) {
+      // a head that creeps over part of a period draws an arc, not the ellipse: offsets, amplitudes and the phase error
+      // trade against each other along it (another generator's creep of 0.3 period was fitted with offsets of 0.37 FS)
+      val (lo, hi) = Doubles.range(e.n)(i => e.phase(i))
+      Some(f"too short an arc: the read head moved over about ${hi - lo}%.1f of a fringe period (the signals cover ${360 * arcCovered(e)}%.0f " +
+        "of its 360 degrees), and an arc that short does not fix the ellipse (offsets, amplitudes, phase error); record while " +
+        "the head moves over at least one whole fringe period")
+    }
     else {
       // one channel without its fringe (a dead or unconnected input that only carries noise): the other's phase is then
       // fitted against noise, and what is left looks like pickup of half the full scale
@@ -436,6 +447,15 @@ object SignalExplain {
       }
     }
   }
+
+  /** The share of the fringe's period (in bins of 10 degrees) the fitted phase visits. */
+  def arcCovered(e: SignalEngine): Double = {
+    val seen = new Array[Boolean](36); var i = 0
+    while (i < e.n) { val p = e.phase(i); if (!p.isNaN && !p.isInfinite) seen(((p - math.floor(p)) * 36).toInt min 35) = true; i += 1 }
+    seen.count(identity) / 36.0
+  }
+  /** The share of the period below which the record is refused (`arcCovered`): less than half a period fixes no ellipse. */
+  val MinArc = 0.5
 
   /** Warnings about the recording itself. */
   def notes(e: SignalEngine): Seq[String] = {
