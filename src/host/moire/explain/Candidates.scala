@@ -795,6 +795,10 @@ final class Candidates(val engine: SignalEngine) {
     }
     val mid = 0.5 * (yHi + yLo); val half = 0.5 * (yHi - yLo)
     var b = fit(i => math.abs(y(i) - mid) < 0.7 * half).getOrElse(return None)
+    // a clean fringe's ellipse fitted inside reaches the data's extremes, a clipped one's goes beyond them: the rest of
+    // the search (a dozen passes) only then
+    val amp0 = math.hypot(b(1), b(2))
+    if (!(b(0) + amp0 - yHi > Candidates.FlatBeyond * sd || yLo - (b(0) - amp0) > Candidates.FlatBeyond * sd)) return None
     @inline def pred(i: Int) = rest(i) + b(0) + b(1) * f1(i) + b(2) * f2(i)
     var hiL = yHi - 3 * sd; var loL = yLo + 3 * sd; var k = 0; var nHi = 0.0; var nLo = 0.0
     while (k < 6) {

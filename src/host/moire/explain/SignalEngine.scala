@@ -979,10 +979,10 @@ object Noise {
   }
 
   /** White noise on both channels, nothing censored, from the residual sums of squares of n samples each, with a soft
-    * repair's spread and entropy (`Repaired`) when `r` has them.
+    * repair's spread and entropy (`Repaired`) when `r` has them (a flat top's scaling has its term there too).
     */
   def white(rssS: Double, rssC: Double, n: Int, r: Repaired): Noise =
-    if (r == null || !r.soft) white(rssS, rssC, n)
+    if (r == null || (!r.soft && r.entropy == 0)) white(rssS, rssC, n)
     else { val w = white(rssS + r.pvSumS, rssC + r.pvSumC, n); w.copy(m2ll = w.m2ll - 2 * r.entropy) }
 
   /** White noise per channel from the residual's sums of squares over n samples (censored ones hold no residual). */
