@@ -96,3 +96,17 @@ class DriftSpec extends AnyFlatSpec with Matchers {
     est shouldBe est.sorted.reverse
   }
 }
+
+/** A drift too small to matter on a scan where time and position go together: negligible, whatever the record cannot
+  * tell it from (it was "unexplained: the record cannot tell it from a contrast change along the travel").
+  */
+class SmallDriftSpec extends AnyFlatSpec with Matchers {
+  "explain" should "list a drift of a tenth of an LSB on a chirp as negligible, not as unexplained" in {
+    val s = FringeGenerator.Spec(n = 200000, fs = 5e6, motion = "chirp", f0 = 20e3, f1 = 150e3, driftOffsetPerS = 0.001, seed = 43)
+    val r = SignalExplain.run("small drift", FringeGenerator.recording(s), Nil, Progress.none).report
+    info(s"negligible [${r.negligible.map(_.effect).mkString(", ")}]; unexplained [${r.unexplained.map(_.where).mkString("; ")}]")
+    r.findings shouldBe empty
+    r.negligible.map(_.effect) should contain("drift")
+    r.unexplained.map(_.where).filter(w => w.startsWith("drift") || w.startsWith("contrast_along_travel")) shouldBe empty
+  }
+}

@@ -113,8 +113,9 @@ object SignalExplain {
       progress.phase(s"effects, round ${round + 1}", cands.steps)
       val all = cands.all(() => progress.step(1))
       lap("candidates")
-      val bic0 = e.bic
-      def dbic(c: Cand) = bic0 - (c.m2ll + (e.params + c.extraK) * e.lnN)
+      // (the round's parameter count: a trial's refit adds its own, and a reject after it told a gain of 25 as -39)
+      val bic0 = e.bic; val params0 = e.params
+      def dbic(c: Cand) = bic0 - (c.m2ll + (params0 + c.extraK) * e.lnN)
       // Candidates whose parameters the recording cannot support are not findings; what still fits that way after
       // the last accepted effect is unexplained structure (earlier rounds' rejects may be another effect's shadow).
       rejected.clear()
@@ -144,10 +145,15 @@ object SignalExplain {
       val refuted = scala.collection.mutable.Set.empty[String]
       while (!accepted && tries < MaxTries && ordered.hasNext) {
         val c = ordered.next()
-        Quantization.why(e, c).orElse(Identify.why(e, c, refuted.toSet)) match {
+        // what the record cannot tell from an alternative is still measured when the budget for small ones allows: too
+        // small to matter, it is negligible (a drift of 0.08 LSB was "unexplained: cannot tell it from a contrast change")
+        val quant = Quantization.why(e, c)
+        val ident = if (quant.isDefined) None else Identify.why(e, c, refuted.toSet)
+        (if (quant.isDefined) quant else if (ident.isDefined && smallTries >= MaxTries) ident else None) match {
           case Some(why) => if (SignalEngine.debug) System.err.println(s"not tried ${c.effect}/${c.channel}: $why"); reject(c, why)
           case None =>
-            tries += 1
+            // (an unidentifiable one's trial is paid from the budget for small ones, not the round's tries)
+            if (ident.isDefined) smallTries += 1 else tries += 1
             val snapB = Snapshot.of(s"before ${c.effect}", e.resS, e.resC)
             val rmsB = e.rms; val predB = Materiality.Points.of(e)
             // the located departures the effect claims, before and after (only those tests are run)
@@ -169,6 +175,7 @@ object SignalExplain {
             lazy val floor = materiality.floor(e.lsb, Adequacy.floor(e))
             // no finding when the joint refit does not lower the criterion, the effect is negligible or does not replicate
             val why = if (!(bic0 - e.bic > 0)) Some("") else if (size < floor) Some("negligible")
+              else if (ident.isDefined) ident
               else { val r = Replicate.why(e, prev); if (r.isDefined) refuted += c.effect; r }
             lap("replicate")
             if (SignalEngine.debug) System.err.println(s"tried ${c.effect}/${c.channel}: " + why.orElse(claimed(claims, before, claimedNow)).fold("kept")(w => if (w.isEmpty) "no gain" else w))
@@ -176,7 +183,7 @@ object SignalExplain {
               case Some(w) =>
                 if (w == "negligible") {
                   // too small is not failed evidence: it does not use up the round's tries (its own budget bounds the cost)
-                  if (smallTries < MaxTries) { smallTries += 1; tries -= 1 }
+                  if (ident.isEmpty && smallTries < MaxTries) { smallTries += 1; tries -= 1 }
                   val g = refresh(Finding(c1.effect, c1.channel, "", c1.params, c1.unc, bic0 - e.bic, rmsB, e.rms, c1.where), e)
                   val what = fx.fold(c1.where)(_.summary(g.params, g.channel, cands.fMin, cands.fMax))
                   negligible += Negligible(g.effect, g.channel, size / e.lsb, floor / e.lsb, bic0 - e.bic, g.params, what)
