@@ -442,7 +442,7 @@ class BadInputSpec extends AnyFlatSpec with Matchers {
   bad("the same register written twice", "--write decimation is given 2 times ('decimation=5', 'decimation=6')")(
     "board-reg", "--port", "/dev/null", "--write", "decimation=5", "--write", "decimation=6")
   bad("counts per period that no board counts", "--counts-per-period must be a power of two from 4 to 65536")(recd("--seconds", "1", "--counts-per-period", "1000"): _*)
-  bad("a number beyond a double's range", "--amplitude: '1e309' is beyond the largest number")(
+  bad("a number beyond a double's range", "--amplitude: '1e309' is beyond the range of numbers")(
     "simulate", "--out", (dir / "big.csv").toString, "--amplitude", "1e309")
   bad("a monitor replay with a board's link rate", "--baud applies to a board (--port DEV); a replay plays the file at its own rate")(
     "monitor", "--replay", good.toString, "--baud", "115200")

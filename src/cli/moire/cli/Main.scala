@@ -367,7 +367,7 @@ object Main {
     repeated(mains, argv.toSeq).foreach { msg => System.err.println(s"moire: $msg"); return 2 }
     // a number beyond a double's range would be taken as Infinity, and told back as that
     saidOptions(mains, argv.toSeq).collectFirst { case (o, v) if NumberWord.matches(v.trim) && v.trim.toDouble.isInfinite => (o, v) }.foreach { case (o, v) =>
-      System.err.println(s"moire: $o: '$v' is beyond the largest number (about 1.8e308)"); return 2 }
+      System.err.println(s"moire: $o: '$v' is beyond the range of numbers (about +-1.8e308)"); return 2 }
     moire.files.SafeWrite.forgetMade()
     val code = said.withValue(saidOptions(mains, argv.toSeq).map(_._1).toSet) { try {
       // runRaw hands back what a command threw (runEither would print it with its class name)
