@@ -327,7 +327,7 @@ class BadInputSpec extends AnyFlatSpec with Matchers {
   bad("a recording of floating inputs", "no fringe: the fitted amplitude")("explain", rec("floating.csv", head + "sin,cos\n" +
     (0 until 5000).map(_ => s"${2048 + rnd.nextInt(7) - 3},${2048 + rnd.nextInt(7) - 3}").mkString("\n") + "\n"), "--quiet", "--no-rtl")
   // a head that creeps over 0.3 of a period draws an arc: no ellipse to fit (its offsets came out 0.37 full scale)
-  bad("a recording of a head creeping over part of a period", "too short an arc: the read head moved over about 0.")("explain", rec("creep.csv", head + "sin,cos\n" +
+  bad("a recording of a head creeping over part of a period", "too short an arc: the read head moved over less than one fringe period")("explain", rec("creep.csv", head + "sin,cos\n" +
     (0 until 20000).map { i => val a = 2 * math.Pi * (0.1 + 0.3 * i / 20000.0)
       s"${2048 + math.round(1640 * math.sin(a) + rnd.nextGaussian()).toInt},${2048 + math.round(1640 * math.cos(a) + rnd.nextGaussian()).toInt}" }.mkString("\n") + "\n"),
     "--quiet", "--no-rtl")

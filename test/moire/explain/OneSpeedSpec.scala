@@ -35,6 +35,12 @@ class OneSpeedSpec extends AnyFlatSpec with Matchers {
     f.lookAlikes.exists(_.startsWith("interference at 10.0000 kHz (2 x the fringe frequency)")) shouldBe true
   }
 
+  it should "be explained at exactly 5 samples a period, not refused as too short an arc" in {
+    // the fitted phase of a long record visits 5 bins of 10 degrees there: such records were refused
+    val r = explain(FringeGenerator.recording(FringeGenerator.Spec(n = 100000, fs = 1e6, motion = "constant", f0 = 200e3, seed = 35)))
+    r.findings shouldBe empty
+  }
+
   "a ramp" should "test them" in {
     val e = new SignalEngine(sim(Nil, n = 60000)); e.init()
     val (lo, hi) = e.speedRange

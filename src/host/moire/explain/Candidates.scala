@@ -774,8 +774,11 @@ final class Candidates(val engine: SignalEngine) {
     * after it was harmonics 3, 5 and 7 with 38 % of the record misfit.
     */
   private def flatClip(ch: Int, y: Array[Double], yLo: Double, yHi: Double): Option[Cand] = {
-    if (excluded != null || noise.jitter2 != 0 || spec.slopeNoise || spec.faults.exists(_.ch == ch) ||
+    if (noise.jitter2 != 0 || spec.slopeNoise || spec.faults.exists(_.ch == ch) ||
       (if (ch == 0) cens.censS else cens.censC) != null) return None
+    // samples weighted out (glitches, windows the model does not follow) take no part (three glitches hid a clipping)
+    val ex = excluded
+    @inline def in(i: Int) = ex == null || !ex(i)
     val (f1, f2, o) = if (ch == 0) (s1, s2, 0) else (c1, c2, 3)
     val (rp, rr) = if (ch == 0) (repS, resS) else (repC, resC)
     val b0 = base
@@ -786,7 +789,7 @@ final class Candidates(val engine: SignalEngine) {
       val m = Par.sums(n, 10) { (a, b, m) =>
         var i = a
         while (i < b) {
-          if (use(i)) { val x1 = f1(i); val x2 = f2(i); val t = y(i) - rest(i)
+          if (in(i) && use(i)) { val x1 = f1(i); val x2 = f2(i); val t = y(i) - rest(i)
             m(0) += 1; m(1) += x1; m(2) += x2; m(3) += x1 * x1; m(4) += x1 * x2; m(5) += x2 * x2; m(6) += t; m(7) += t * x1; m(8) += t * x2 }
           i += 1
         }
@@ -806,7 +809,7 @@ final class Candidates(val engine: SignalEngine) {
       val (h, l) = (hiL, loL)
       val m = Par.sums(n, 4) { (a, bb, m) =>
         var i = a
-        while (i < bb) { val p = pred(i); if (p >= h) { m(0) += 1; m(1) += y(i) } else if (p <= l) { m(2) += 1; m(3) += y(i) }; i += 1 }
+        while (i < bb) { if (in(i)) { val p = pred(i); if (p >= h) { m(0) += 1; m(1) += y(i) } else if (p <= l) { m(2) += 1; m(3) += y(i) } }; i += 1 }
       }
       nHi = m(0); nLo = m(2)
       hiL = if (m(0) > need) m(1) / m(0) else Double.PositiveInfinity
@@ -820,15 +823,19 @@ final class Candidates(val engine: SignalEngine) {
     def sums(h: Double, l: Double) = Par.sums(n, 3) { (a, bb, m) =>
       var i = a
       while (i < bb) {
-        val p = pred(i)
-        if (p >= h || p <= l) { val d = y(i) - (if (p >= h) h else l); m(0) += d * d; m(1) += 1 } else { val d = y(i) - p; m(2) += d * d }
+        if (in(i)) {
+          val p = pred(i)
+          if (p >= h || p <= l) { val d = y(i) - (if (p >= h) h else l); m(0) += d * d; m(1) += 1 } else { val d = y(i) - p; m(2) += d * d }
+        }
         i += 1
       }
     }
-    val q0 = sums(hiL, loL); val noiseVar = q0(2) / math.max(1.0, n - q0(1))
-    // the samples at a level must scatter as the noise does: a pile-up at one code has the noise before the saturation
-    // (censored, above), and there a flat top's zero residual would take for a quieter noise what is none
-    if (!(q0(0) / math.max(1.0, q0(1)) >= Candidates.FlatNoise * noiseVar)) return None
+    val q0 = sums(hiL, loL); val noiseVar = q0(2) / math.max(1.0, n - (if (ex == null) 0 else excludedCount) - q0(1))
+    // the samples at a level must scatter by more than a code's rounding: a pile-up at one code has the noise before
+    // the saturation (censored, above), and there a flat top's zero residual would be taken for a quieter noise. Less
+    // noise after the saturation than before is fine (the flat top's variance is its own): 1 LSB before and 0.5 after
+    // was refused when the scatter had to be half the noise's
+    if (!(q0(0) / math.max(1.0, q0(1)) >= Candidates.FlatNoise * step * step)) return None
     val amp = math.hypot(b(1), b(2)); val sdIn = math.sqrt(noiseVar)
     val useHi = !hiL.isInfinite && b(0) + amp - hiL > Candidates.FlatBeyond * sdIn && hiL < railHi
     val useLo = !loL.isInfinite && loL - (b(0) - amp) > Candidates.FlatBeyond * sdIn && loL > railLo
@@ -893,8 +900,10 @@ object Candidates {
 
   /** Noise widths by which the ellipse fitted inside must go beyond a flat top's level (`flatClip`). */
   val FlatBeyond = 6.0
-  /** Share of the noise's variance the samples at a flat top's level must scatter by at least (`flatClip`). */
-  val FlatNoise = 0.5
+  /** Squared quantization steps the samples at a flat top's level must scatter by at least (`flatClip`): a code's
+    * rounding alone is 1/12.
+    */
+  val FlatNoise = 0.16
 
   /** (sqrt(5) - 1) / 2: a golden section's bracket shrinks by this. */
   val GoldenRatio: Double = (math.sqrt(5) - 1) / 2

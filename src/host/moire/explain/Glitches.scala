@@ -1,6 +1,6 @@
 package moire.explain
 
-/** Isolated samples far off the signal with their neighbours on it: data glitches (an ADC's or a transfer's error, a
+/** Isolated samples (one to three in a row) far off the signal with their neighbours on it: data glitches (an ADC's or a transfer's error, a
   * spike), which no effect of the read head makes. They are weighted out of the fit before the search and named in the
   * report's notes. Before, three samples at code 0 in a clean record were taken as samples at the rail (censored,
   * nothing said), and ten at mid-scale made misfit windows and a "phase noise" of unexplained structure.
@@ -10,6 +10,8 @@ object Glitches {
   val Off = 10.0
   /** Noise widths within which both neighbours of a glitch lie (it is alone; or a tenth of its own distance). */
   val Near = 4.0
+  /** Consecutive samples a glitch lasts at most. */
+  val MaxRun = 3
   /** Glitches are at most this share of the samples (more is no glitch: a misfit or a wrong model). */
   val MaxShare = 1e-3
 
@@ -37,12 +39,30 @@ object Glitches {
     if (SignalEngine.debug) (0 until n).filter(far).take(40).foreach(i => System.err.println(
       f"glitch? row ${i + 1}: sin ${ds(i) / e.lsb}%.1f cos ${dc(i) / e.lsb}%.1f LSB; before ${ds(math.max(0, i - 1)) / e.lsb}%.1f ${dc(math.max(0, i - 1)) / e.lsb}%.1f, " +
       f"after ${ds(math.min(n - 1, i + 1)) / e.lsb}%.1f ${dc(math.min(n - 1, i + 1)) / e.lsb}%.1f; sd ${ss / e.lsb}%.2f ${sc / e.lsb}%.2f"))
+    // runs of up to `MaxRun` far samples between neighbours on the signal (a glitch may last a sample or three)
+    def size(i: Int) = math.max(math.abs(ds(i)) / ss, math.abs(dc(i)) / sc)
     val out = Seq.newBuilder[(Int, Double)]; var k = 0; var i = 0
     while (i < n && k <= MaxShare * n) {
-      if (far(i) && near(i - 1, i) && near(i + 1, i)) { out += i -> math.max(math.abs(ds(i)), math.abs(dc(i))) / e.lsb; k += 1 }
-      i += 1
+      if (far(i)) {
+        var j = i; while (j < n && far(j)) j += 1
+        val top = (i until j).maxBy(size)
+        if (j - i <= MaxRun && near(i - 1, top) && near(j, top))
+          for (q <- i until j) { out += q -> math.max(math.abs(ds(q)), math.abs(dc(q))) / e.lsb; k += 1 }
+        i = j
+      }
+      else i += 1
     }
     if (k > MaxShare * n) Nil else out.result()
+  }
+
+  /** `known` and the glitches `find` sees beyond them in `e`'s fit as it stands; new ones are weighted out (with the
+    * samples already out) and the fit converges.
+    */
+  def more(e: SignalEngine, known: Seq[(Int, Double)]): Seq[(Int, Double)] = {
+    val had = known.map(_._1).toSet
+    val fresh = find(e).filterNot(g => had(g._1))
+    if (fresh.isEmpty || known.size + fresh.size > MaxShare * e.n) known
+    else { e.exclude(union(e.excluded, mask(e.n, fresh))); (known ++ fresh).sortBy(_._1) }
   }
 
   /** The mask of the glitches (null: none). */
@@ -57,8 +77,10 @@ object Glitches {
   def note(at: Seq[(Int, Double)]): Option[String] = if (at.isEmpty) None else {
     val rows = at.take(5).map(g => (g._1 + 1).toString).mkString(", ") + (if (at.size > 5) s", ... (${at.size} in all)" else "")
     val (lo, hi) = (at.map(_._2).min, at.map(_._2).max)
-    Some(f"${at.size} isolated sample${if (at.size == 1) "" else "s"} (data row${if (at.size == 1) "" else "s"} $rows) " +
-      f"${if (at.size == 1) "lies" else "lie"} ${if (lo == hi) f"$lo%.0f" else f"$lo%.0f..$hi%.0f"} LSB off the signal with " +
-      "their neighbours on it: data glitches (an ADC's or a transfer's error, a spike), no effect of the read head; left out of the fit")
+    val one = at.size == 1
+    Some(f"${at.size} isolated sample${if (one) "" else "s"} (data row${if (one) "" else "s"} $rows) " +
+      f"${if (one) "lies" else "lie"} ${if (lo == hi) f"$lo%.0f" else f"$lo%.0f..$hi%.0f"} LSB off the signal with " +
+      f"${if (one) "its" else "their"} neighbours on it: data glitches (an ADC's or a transfer's error, a spike), no effect of the " +
+      "read head; left out of the fit")
   }
 }

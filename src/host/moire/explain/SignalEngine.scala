@@ -678,7 +678,7 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
             i += 1
           }
         }
-        if (q(1) < 2 || !(q(0) > 0)) 1.0 else math.max(1 / 3.0, math.min(3.0, math.sqrt(white * q(1) / q(0))))
+        if (q(1) < 2 || !(q(0) > 0)) 1.0 else math.max(0.1, math.min(10.0, math.sqrt(white * q(1) / q(0))))
       }
       val lnG = math.log(g)
       // the censored samples' distances, NaN elsewhere: made when the first one is met (most repairs censor none)

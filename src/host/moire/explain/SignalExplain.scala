@@ -92,8 +92,10 @@ object SignalExplain {
     val givenModel = specOf(model)
     if (givenModel != ModelSpec()) { e.spec = givenModel; e.converge(); settle(e) }
     // isolated samples far off the signal: glitches of the data, out of the fit from here on (and named in the notes)
-    val glitches = Glitches.find(e); val glitchMask = Glitches.mask(e.n, glitches)
-    if (glitchMask != null) e.exclude(glitchMask)
+    // (a second look once they are out: a glitch pulls the fit's phase, and its neighbours' residual with it)
+    var glitches = Glitches.find(e)
+    if (glitches.nonEmpty) { e.exclude(Glitches.mask(e.n, glitches)); glitches = Glitches.more(e, glitches) }
+    val glitchMask = Glitches.mask(e.n, glitches)
     val baseRms = e.rms; val baseBic = e.bic
     // the noise of the default part where the model does not follow somewhere (or nowhere): the floor, not the misfit
     val noiseMask = Glitches.union(Adequacy.maskOf(e, prior), glitchMask)
@@ -194,6 +196,8 @@ object SignalExplain {
                 val snapA = Snapshot.of(s"after ${c.effect}", e.resS, e.resC)
                 steps += ((Finding(c1.effect, c1.channel, "", c1.params, c1.unc, bic0 - e.bic, rmsB, e.rms, c1.where, size / e.lsb), snapB, snapA))
                 round += 1; accepted = true
+                // with the effect fitted, glitches its misfit hid stand out
+                glitches = Glitches.more(e, glitches)
             }
         }
       }
@@ -433,13 +437,13 @@ object SignalExplain {
     else if (!(a > MinAmplitudeNoise * sd))
       Some(f"no fringe: the fitted amplitude ${a / e.lsb}%.3g LSB is not above ${MinAmplitudeNoise}%.0f x the noise " +
         f"(${sd / e.lsb}%.3g LSB rms); are the inputs connected, and the read head over the scale and moving?")
-    else if (arcCovered(e) < MinArc) {
+    else if (shortArc(e)) {
       // a head that creeps over part of a period draws an arc, not the ellipse: offsets, amplitudes and the phase error
-      // trade against each other along it (another generator's creep of 0.3 period was fitted with offsets of 0.37 FS)
-      val (lo, hi) = Doubles.range(e.n)(i => e.phase(i))
-      Some(f"too short an arc: the read head moved over about ${hi - lo}%.1f of a fringe period (the signals cover ${360 * arcCovered(e)}%.0f " +
-        "of its 360 degrees), and an arc that short does not fix the ellipse (offsets, amplitudes, phase error); record while " +
-        "the head moves over at least one whole fringe period")
+      // trade against each other along it (another generator's creep of 0.3 period was fitted with offsets of 0.37 FS).
+      // The arc's extent is the fit's, from an ellipse the arc does not fix: no figure of it is given
+      Some("too short an arc: the read head moved over less than one fringe period, so the signals trace an arc of the " +
+        "ellipse, not the whole of it, and an arc does not fix its offsets, amplitudes and phase error; record while the " +
+        "head moves over at least one whole fringe period")
     }
     else {
       // one channel without its fringe (a dead or unconnected input that only carries noise): the other's phase is then
@@ -455,14 +459,21 @@ object SignalExplain {
     }
   }
 
-  /** The share of the fringe's period (in bins of 10 degrees) the fitted phase visits. */
-  def arcCovered(e: SignalEngine): Double = {
-    val seen = new Array[Boolean](36); var i = 0
-    while (i < e.n) { val p = e.phase(i); if (!p.isNaN && !p.isInfinite) seen(((p - math.floor(p)) * 36).toInt min 35) = true; i += 1 }
-    seen.count(identity) / 36.0
+  /** The fitted phase spans less than a fringe period and visits less than `MinArc` of it (in bins of 10 degrees).
+    * The span first: at exactly 5 samples a period the phase of a long record visits 5 bins (such records were refused).
+    */
+  def shortArc(e: SignalEngine): Boolean = {
+    val (lo, hi) = Doubles.range(e.n)(i => e.phase(i))
+    !(hi - lo >= 1) && {
+      val seen = new Array[Boolean](36); var i = 0
+      while (i < e.n) { val p = e.phase(i); if (!p.isNaN && !p.isInfinite) seen(((p - math.floor(p)) * 36).toInt min 35) = true; i += 1 }
+      seen.count(identity) < MinArc * 36
+    }
   }
-  /** The share of the period below which the record is refused (`arcCovered`): less than half a period fixes no ellipse. */
-  val MinArc = 0.5
+  /** The share of the period an arc must visit (`shortArc`): less than this (of a record that spans less than a period)
+    * fixes no ellipse; clean back-and-forth records over 0.6 and 0.8 of a period were reported as misfit.
+    */
+  val MinArc = 0.8
 
   /** Warnings about the recording itself. */
   def notes(e: SignalEngine): Seq[String] = {
