@@ -30,8 +30,11 @@ object Harmonic extends Effect {
         s"against fringe phase: $ch channel, order $k", ch)
     case Term.Harm(k, _) =>
       val (a, sa) = Effect.amp(b(0), b(1), sd(0), sd(1)); val (c, sc) = Effect.amp(b(2), b(3), sd(2), sd(3))
-      (Map("order" -> k, "amplitude_sin_rel" -> a, "amplitude_cos_rel" -> c, "amplitude_rel" -> 0.5 * (a + c)),
-        Map("order" -> 0, "amplitude_sin_rel" -> sa, "amplitude_cos_rel" -> sc, "amplitude_rel" -> 0.5 * math.hypot(sa, sc)),
+      // each channel's phase as a one-channel harmonic's `phase_deg` (their difference tells a harmonic turning with the
+      // fringe from one turning against it)
+      val (ps, sps) = Effect.deg(b(0), b(1), a, sa); val (pc, spc) = Effect.deg(b(2), b(3), c, sc)
+      (Map("order" -> k, "amplitude_sin_rel" -> a, "amplitude_cos_rel" -> c, "amplitude_rel" -> 0.5 * (a + c), "phase_sin_deg" -> ps, "phase_cos_deg" -> pc),
+        Map("order" -> 0, "amplitude_sin_rel" -> sa, "amplitude_cos_rel" -> sc, "amplitude_rel" -> 0.5 * math.hypot(sa, sc), "phase_sin_deg" -> sps, "phase_cos_deg" -> spc),
         s"against fringe phase: both channels, order $k", "both")
     case _ => super.describe(t, b, sd, e)
   }
