@@ -733,6 +733,8 @@ final class Candidates(val engine: SignalEngine) {
   def clips(): Seq[Cand] = {
     val out = Seq.newBuilder[Cand]
     val raw = repair(spec, censor = false)
+    // the noise floor from neighbouring samples, for both channels' flat tops (`flatClip`)
+    lazy val floorSd = Adequacy.floor(e)
     for ((y, rp, rr, ch) <- Seq((raw.s, repS, resS, 0), (raw.c, repC, resC, 1)) if !spec.clips.exists(_.ch == ch)) {
       var hi = Double.NegativeInfinity; var lo = Double.PositiveInfinity; var i = 0
       while (i < n) { if (y(i) > hi) hi = y(i); if (y(i) < lo) lo = y(i); i += 1 }
@@ -760,7 +762,7 @@ final class Candidates(val engine: SignalEngine) {
         val (u, where) = (pp.map { case (k, _) => k -> 0.5 * lsb }, s"code histogram: ${if (ch == 0) "sin" else "cos"} channel pile-up at the extremes")
         out += Cand(Clipping.name, if (ch == 0) "sin" else "cos", sp, nz.m2ll, c.params, pp, u, where)
       }
-      flatClip(ch, y, lo, hi).foreach(out += _)
+      flatClip(ch, y, lo, hi, floorSd).foreach(out += _)
     }
     out.result()
   }
@@ -773,7 +775,7 @@ final class Candidates(val engine: SignalEngine) {
     * noise, nothing censored, repaired or weighted out). Another generator's 0.9 clipped at 0.8 with the ADC's 1 LSB
     * after it was harmonics 3, 5 and 7 with 38 % of the record misfit.
     */
-  private def flatClip(ch: Int, y: Array[Double], yLo: Double, yHi: Double): Option[Cand] = {
+  private def flatClip(ch: Int, y: Array[Double], yLo: Double, yHi: Double, sd: Double): Option[Cand] = {
     if (noise.jitter2 != 0 || spec.slopeNoise || spec.faults.exists(_.ch == ch) ||
       (if (ch == 0) cens.censS else cens.censC) != null) return None
     // samples weighted out (glitches, windows the model does not follow) take no part (three glitches hid a clipping)
@@ -784,7 +786,7 @@ final class Candidates(val engine: SignalEngine) {
     val b0 = base
     // the prediction less the channel's default part (the terms, held)
     @inline def rest(i: Int) = rp(i) - rr(i) - (b0(o) + b0(o + 1) * f1(i) + b0(o + 2) * f2(i))
-    val sd = Adequacy.floor(e); val need = math.max(20, n / 2000)
+    val need = math.max(20, n / 2000)
     def fit(use: Int => Boolean): Option[Array[Double]] = {
       val m = Par.sums(n, 10) { (a, b, m) =>
         var i = a

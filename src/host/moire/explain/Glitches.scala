@@ -10,6 +10,8 @@ object Glitches {
   val Off = 10.0
   /** Noise widths within which both neighbours of a glitch lie (it is alone; or a tenth of its own distance). */
   val Near = 4.0
+  /** Samples the noise width is the median of, at most (every k-th). */
+  val SdSamples: Int = 1 << 18
   /** Consecutive samples a glitch lasts at most. */
   val MaxRun = 3
   /** Glitches are at most this share of the samples (more is no glitch: a misfit or a wrong model). */
@@ -24,9 +26,12 @@ object Glitches {
     def off(y: Array[Double], rep: Array[Double], res: Array[Double])(i: Int): Double = y(i) - (rep(i) - res(i))
     val ds = off(e.ys, e.repS, e.resS) _; val dc = off(e.yc, e.repC, e.resC) _
     // the median absolute residual of each channel, as a Gaussian's sd
+    // (over at most `SdSamples` spread over the record: it is looked for after each finding, and at 20 M samples two
+    // medians of all samples cost a second)
     def sd(d: Int => Double): Double = {
-      val m = OrderStats.of(n, i => math.abs(d(i)), Seq(n / 2))(0) * 1.4826
-      math.max(m, 0.5 * e.step)
+      val st = math.max(1, n / SdSamples); val m = n / st
+      val med = OrderStats.of(m, q => math.abs(d(q * st)), Seq(m / 2))(0) * 1.4826
+      math.max(med, 0.5 * e.step)
     }
     val (ss, sc) = (sd(ds), sd(dc))
     def far(i: Int) = math.abs(ds(i)) > Off * ss || math.abs(dc(i)) > Off * sc
