@@ -903,9 +903,10 @@ object Candidates {
   /** Noise widths by which the ellipse fitted inside must go beyond a flat top's level (`flatClip`). */
   val FlatBeyond = 6.0
   /** Squared quantization steps the samples at a flat top's level must scatter by at least (`flatClip`): a code's
-    * rounding alone is 1/12.
+    * rounding alone is 1/12, a pile-up at one code none (0.3 LSB of noise after a saturation gives 0.17; at 0.16 that
+    * record was neither kind of clipping).
     */
-  val FlatNoise = 0.16
+  val FlatNoise = 0.1
 
   /** (sqrt(5) - 1) / 2: a golden section's bracket shrinks by this. */
   val GoldenRatio: Double = (math.sqrt(5) - 1) / 2
