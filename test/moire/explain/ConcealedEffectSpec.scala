@@ -122,6 +122,8 @@ class ConcealedEffectSpec extends AnyFlatSpec with Matchers {
   it should "find ADC integral nonlinearity (not two harmonics)" in {
     val f = first(explain(sim(Seq(EffectSpec("adc_nonlinearity", Map("inl2_lsb" -> 2.0, "inl3_lsb" -> 1.5))))), "adc_nonlinearity")
     assert(within(f.params("inl2_lsb"), 2.0) && within(f.params("inl3_lsb"), 1.5), f.params)
+    // one curve on both ADCs: the amplifiers before them are its look-alike
+    f.lookAlikes.exists(_.startsWith("a curve of the read head's amplifiers before both ADCs")) shouldBe true
   }
 
   it should "find capacitive crosstalk (amplitude changing with speed)" in {

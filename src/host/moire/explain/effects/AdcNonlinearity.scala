@@ -60,7 +60,12 @@ object AdcNonlinearity extends Effect {
       // the same INL on both ADCs stands back for one ADC's that explains as much
       (c.channel == "both" && other.effect == name && other.channel != "both")
   override def lookAlikes(f: Finding, e: SignalEngine): Seq[String] =
-    if (f.channel == "both" || f.params.getOrElse("amplitude_range_rel", 0.0) >= ConstantAmplitude) Nil
+    // one curve on both ADCs is as much the read head's amplifiers before them (a compression, a square law): both are a
+    // function of the value (another generator's v - 0.05 v^3 on both channels was told as INL of both ADCs alone)
+    if (f.channel == "both") Seq("a curve of the read head's amplifiers before both ADCs (a compression of the large values, a square " +
+      "law) predicts the same signal: both are a function of the value; a test of the ADCs with a known input, or a record with " +
+      "another gain between the amplifiers and the ADCs, separates them")
+    else if (f.params.getOrElse("amplitude_range_rel", 0.0) >= ConstantAmplitude) Nil
     else Seq(s"${Harmonic.name} 2 and 3 on the ${f.channel} channel predict the same signal while its amplitude stays constant, as it " +
       s"does here; a record at another amplitude or offset of the ${f.channel} channel separates them (INL stays with the code)")
 
