@@ -67,7 +67,7 @@ object Main {
            @arg(doc = "sweep: skip the measured error of the bit-accurate model") noMeasure: Flag = Flag()): Unit =
     if (sweep.value) {
       // the sweep makes its own configurations: a design's options would be ignored
-      if (given("--design", "--keep").nonEmpty || cordicGiven.nonEmpty || config != CordicConfig())
+      if (given("--design", "--keep").nonEmpty || cordicGiven.nonEmpty)
         throw new UsageError("--sweep sweeps the CORDIC variants over --sweep-iterations and --sweep-widths; --design, --keep and the CORDIC options (--iterations, --width, ...) do not apply")
       CostCmd.sweep(variants, sweepIterations, sweepWidths, spread, folderName(out), timeout, !noMeasure.value, json)
     } else {
@@ -81,7 +81,7 @@ object Main {
     * ignored, and the figures would be for a configuration nobody asked for.
     */
   private def cordicOptionsFor(design: String, config: CordicConfig): Unit =
-    if (design != "cordic" && (config != CordicConfig() || cordicGiven.nonEmpty))
+    if (design != "cordic" && cordicGiven.nonEmpty)
       throw new UsageError(s"the CORDIC options (--mode, --iterations, --width, ...) apply to --design cordic only, not $design; leave them out")
 
   @main(doc = "Fmax, utilisation and critical path on the LFE5U-85F (yosys synth_ecp5, nextpnr-ecp5) at speed grades 6 and 8; exit code 1 when a design misses its target.")
@@ -275,7 +275,7 @@ object Main {
              @arg(doc = "no progress bar") quiet: Flag = Flag()): Unit = {
     val secs = seconds.orElse(burst.map(_ => 10.0)).getOrElse(throw new UsageError("record: give --seconds S (continuous stream) or --burst N (one full-rate burst)"))
     // the trigger and the samples before it belong to a burst: a stream would record without them
-    if (burst.isEmpty && (given("--trigger", "--pre").nonEmpty || trigger != "now" || pre != 0)) throw new UsageError("--trigger and --pre apply to a burst; add --burst N, or leave them out")
+    if (burst.isEmpty && given("--trigger", "--pre").nonEmpty) throw new UsageError("--trigger and --pre apply to a burst; add --burst N, or leave them out")
     moire.files.SafeWrite.fileArg(out) // an empty name, a control character, "-" or a trailing / said as that
     val o = moire.stream.RecordOptions(port, secs, out, baud, decimation, adcClockHz, adcFormat, countsPerPeriod,
       listenOnly.value, timeoutMs, quiet.value, refCountsPerPeriod, refCountsPerTurn)
@@ -365,11 +365,12 @@ object Main {
     // `board de2-115 --out DIR`: the board name as a positional word.
     val argv = if (args.length > 1 && args(0) == "board" && !args(1).startsWith("-")) Array("board", "--name") ++ args.tail else args
     repeated(mains, argv.toSeq).foreach { msg => System.err.println(s"moire: $msg"); return 2 }
+    val typed = saidOptions(mains, argv.toSeq)
     // a number beyond a double's range would be taken as Infinity, and told back as that
-    saidOptions(mains, argv.toSeq).collectFirst { case (o, v) if NumberWord.matches(v.trim) && v.trim.toDouble.isInfinite => (o, v) }.foreach { case (o, v) =>
+    typed.collectFirst { case (o, v) if NumberWord.matches(v.trim) && v.trim.toDouble.isInfinite => (o, v) }.foreach { case (o, v) =>
       System.err.println(s"moire: $o: '$v' is beyond the range of numbers (about +-1.8e308)"); return 2 }
     moire.files.SafeWrite.forgetMade()
-    val code = said.withValue(saidOptions(mains, argv.toSeq).map(_._1).toSet) { try {
+    val code = said.withValue(typed.map(_._1).toSet) { try {
       // runRaw hands back what a command threw (runEither would print it with its class name)
       parser.runRaw(argv.toSeq, allowPositional = false) match {
         case mainargs.Result.Success(_) => return 0
