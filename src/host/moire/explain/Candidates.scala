@@ -736,8 +736,10 @@ final class Candidates(val engine: SignalEngine) {
     // the noise floor from neighbouring samples, for both channels' flat tops (`flatClip`)
     lazy val floorSd = Adequacy.floor(e)
     for ((y, rp, rr, ch) <- Seq((raw.s, repS, resS, 0), (raw.c, repC, resC, 1)) if !spec.clips.exists(_.ch == ch)) {
+      // (samples weighted out are held at the prediction: left out)
+      val ex = excluded
       var hi = Double.NegativeInfinity; var lo = Double.PositiveInfinity; var i = 0
-      while (i < n) { if (y(i) > hi) hi = y(i); if (y(i) < lo) lo = y(i); i += 1 }
+      while (i < n) { if (ex == null || !ex(i)) { if (y(i) > hi) hi = y(i); if (y(i) < lo) lo = y(i) }; i += 1 }
       // the samples at each extreme code, and those the model puts beyond it
       val k = Par.sums(n, 4) { (a, b, m) =>
         var i = a
@@ -798,11 +800,25 @@ final class Candidates(val engine: SignalEngine) {
       }
       if (m(0) < 10) None else Some(Candidates.coefficients(m))
     }
+    // a pile-up at an extreme code (more samples there than twice its neighbour's) is the noise before a saturation,
+    // the censored kind's (`clips`): another generator's pile-ups at 0.7 of 1.0 were taken for flat tops, whose fit
+    // holds the clipped samples and never left the clipped shape (harmonics 3, 5 and 7 of 0.1-0.9 %)
+    val ends = Par.sums(n, 4) { (a, bb, m) =>
+      var i = a
+      while (i < bb) {
+        val v = y(i)
+        if (v >= yHi - 0.5 * step) m(0) += 1 else if (v >= yHi - 1.5 * step) m(1) += 1
+        if (v <= yLo + 0.5 * step) m(2) += 1 else if (v <= yLo + 1.5 * step) m(3) += 1
+        i += 1
+      }
+    }
+    if ((ends(0) > need && ends(0) > 2 * ends(1)) || (ends(2) > need && ends(2) > 2 * ends(3))) return None
     val mid = 0.5 * (yHi + yLo); val half = 0.5 * (yHi - yLo)
     var b = fit(i => math.abs(y(i) - mid) < 0.7 * half).getOrElse(return None)
     // a clean fringe's ellipse fitted inside reaches the data's extremes, a clipped one's goes beyond them: the rest of
     // the search (a dozen passes) only then
     val amp0 = math.hypot(b(1), b(2))
+    if (SignalEngine.debug) System.err.println(f"flat top? ch $ch: offset ${b(0) / lsb}%.1f amplitude ${amp0 / lsb}%.1f max ${yHi / lsb}%.1f min ${yLo / lsb}%.1f LSB; ellipse ${(b(0) + amp0 - yHi) / lsb}%.1f LSB beyond the top, ${(yLo - (b(0) - amp0)) / lsb}%.1f beyond the bottom; noise ${sd / lsb}%.2f LSB")
     if (!(b(0) + amp0 - yHi > Candidates.FlatBeyond * sd || yLo - (b(0) - amp0) > Candidates.FlatBeyond * sd)) return None
     @inline def pred(i: Int) = rest(i) + b(0) + b(1) * f1(i) + b(2) * f2(i)
     var hiL = yHi - 3 * sd; var loL = yLo + 3 * sd; var k = 0; var nHi = 0.0; var nLo = 0.0

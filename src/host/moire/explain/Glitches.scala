@@ -18,22 +18,29 @@ object Glitches {
   val MaxShare = 1e-3
 
   /** The samples (sorted) of `e`'s default fit that are glitches, each with how far off it lies (LSB, the larger of
-    * the two channels'). The data are the raw codes (a censored sample's residual is held at zero).
+    * the two channels'). The data are the raw codes; a sample held at a saturation level (censored) is off only by
+    * how far the prediction falls short of that level: at the level, any prediction beyond it fits it. Before, where
+    * both channels of another generator's record were clipped at once the fit's phase was free, and the record's last
+    * three samples, at the rails, were told as glitches 216..464 LSB off.
     */
   def find(e: SignalEngine): Seq[(Int, Double)] = {
     val n = e.n
     if (n < 64) return Nil
-    def off(y: Array[Double], rep: Array[Double], res: Array[Double])(i: Int): Double = y(i) - (rep(i) - res(i))
-    val ds = off(e.ys, e.repS, e.resS) _; val dc = off(e.yc, e.repC, e.resC) _
+    def off(y: Array[Double], rep: Array[Double], res: Array[Double], cen: Array[Double])(i: Int): Double =
+      if (cen != null && !cen(i).isNaN) math.max(0.0, cen(i)) else y(i) - (rep(i) - res(i))
+    val ds = off(e.ys, e.repS, e.resS, e.cens.censS) _; val dc = off(e.yc, e.repC, e.resC, e.cens.censC) _
     // the median absolute residual of each channel, as a Gaussian's sd
     // (over at most `SdSamples` spread over the record: it is looked for after each finding, and at 20 M samples two
     // medians of all samples cost a second)
-    def sd(d: Int => Double): Double = {
-      val st = math.max(1, n / SdSamples); val m = n / st
-      val med = OrderStats.of(m, q => math.abs(d(q * st)), Seq(m / 2))(0) * 1.4826
+    // (the censored samples left out: at a level, their zero would pull the median down)
+    def sd(d: Int => Double, cen: Array[Double]): Double = {
+      val st = math.max(1, n / SdSamples)
+      val at = (0 until n / st).iterator.map(_ * st).filter(i => cen == null || cen(i).isNaN).toArray
+      if (at.isEmpty) return 0.5 * e.step
+      val med = OrderStats.of(at.length, q => math.abs(d(at(q))), Seq(at.length / 2))(0) * 1.4826
       math.max(med, 0.5 * e.step)
     }
-    val (ss, sc) = (sd(ds), sd(dc))
+    val (ss, sc) = (sd(ds, e.cens.censS), sd(dc, e.cens.censC))
     def far(i: Int) = math.abs(ds(i)) > Off * ss || math.abs(dc(i)) > Off * sc
     // a neighbour j of glitch i lies within `Near` noise widths, or a tenth of the glitch's distance (the fit's phase,
     // pulled by the glitch, takes its neighbours off too: ten mid-scale glitches at 100 kHz fringes left theirs 10-30 LSB off)
@@ -57,7 +64,27 @@ object Glitches {
       }
       else i += 1
     }
-    if (k > MaxShare * n) Nil else out.result()
+    val found = out.result()
+    if (k > MaxShare * n || lockedToFringe(e, found.map(_._1))) Nil else found
+  }
+
+  /** Share of a fringe period's circle (the mean resultant length) above which samples off the signal lie at one
+    * fringe phase (or at two half a period apart): the fringe's own shape, no glitch.
+    */
+  val Locked = 0.9
+  /** Glitches (runs of samples) that must gather at one phase before they are taken for the fringe's own shape. */
+  val LockedRuns = 5
+
+  /** `LockedRuns` or more glitches whose fringe phases (or twice them) gather at one angle: a clipped top at high speed
+    * lasts one to three samples with its neighbours on the signal, as a glitch does, but at the same phase each period
+    * (another generator's sin clipped 12 LSB at 28 kHz: five "glitches", all at 90 degrees, hid the clipping).
+    */
+  private def lockedToFringe(e: SignalEngine, at: Seq[Int]): Boolean = {
+    val runs = at.indices.filter(j => j == 0 || at(j) != at(j - 1) + 1).map(at(_))
+    runs.size >= LockedRuns && Seq(1, 2).exists { k =>
+      val (c, s) = runs.foldLeft((0.0, 0.0)) { case ((c, s), i) => val a = k * e.angle(i); (c + math.cos(a), s + math.sin(a)) }
+      math.hypot(c, s) / runs.size > Locked
+    }
   }
 
   /** `known` and the glitches `find` sees beyond them in `e`'s fit as it stands; new ones are weighted out (with the

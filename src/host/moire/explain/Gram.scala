@@ -8,8 +8,41 @@ object Gram {
   /** Rows per block (a block of 30 columns on both channels stays in a core's cache). */
   val Block = 2048
 
-  /** g(i)(j) = sum x_i x_j and r(i) = sum x_i y over the rows (all, or the rows `idx` when it is not null). */
-  def of(cols: IndexedSeq[Col], ys: Array[Double], yc: Array[Double], idx: Array[Int] = null): (Array[Array[Double]], Array[Double]) = {
+  /** The rows a fit leaves out on each channel: those where `cS` (`cC`), a censored sample's distance from the
+    * prediction up to its level (NaN where not censored), is below `belowS` (`belowC`): a prediction that far beyond
+    * the level, where the sample tells the fit nothing. Null arrays: none left out.
+    */
+  final case class Skip(cS: Array[Double], belowS: Double, cC: Array[Double], belowC: Double,
+                        heldS: Array[Boolean] = null, heldC: Array[Boolean] = null) {
+    @inline def s(i: Int): Boolean = (cS != null && cS(i) < belowS) || (heldS != null && heldS(i))
+    @inline def c(i: Int): Boolean = (cC != null && cC(i) < belowC) || (heldC != null && heldC(i))
+  }
+
+  /** The runs of rows in [from, to) a channel keeps, as from0, to0, from1, to1, ... (`cen` and `held` null: all). A
+    * row is left out where cen(i) < below or held(i) (the Skip's).
+    */
+  private[explain] def kept(cen: Array[Double], below: Double, held: Array[Boolean], from: Int, to: Int): Array[Int] =
+    if (cen == null && held == null) Array(from, to) else {
+      @inline def out(i: Int) = (cen != null && cen(i) < below) || (held != null && held(i))
+      val b = Array.newBuilder[Int]; var i = from
+      while (i < to) {
+        while (i < to && out(i)) i += 1
+        if (i < to) { val a = i; while (i < to && !out(i)) i += 1; b += a; b += i }
+      }
+      b.result()
+    }
+
+  /** g(i)(j) = sum x_i x_j and r(i) = sum x_i y over the rows (all, or the rows `idx` when it is not null), each
+    * channel's rows that `skip` leaves out left out (null: none).
+    */
+  def of(cols: IndexedSeq[Col], ys: Array[Double], yc: Array[Double], idx: Array[Int] = null, skip: Skip = null): (Array[Array[Double]], Array[Double]) = {
+    if (skip != null) {
+      require(idx == null, "a fold's rows and rows left out")
+      val as = cols.map(_.s).toArray; val ac = cols.map(_.c).toArray; val z = new Array[Int](cols.length); val k = cols.length
+      val rows = if (ys != null) ys.length else yc.length
+      if (FitPath.isReference) { val out = new Array[Double](k * (k + 1) / 2 + k); blockAt(as, z, ac, z, ys, yc, 0, rows, out, skip); return unpack(out, k) }
+      return unpack(Par.sums(rows, k * (k + 1) / 2 + k, Block)((lo, hi, out) => blockAt(as, z, ac, z, ys, yc, lo, hi, out, skip)), k)
+    }
     if (FitPath.isReference) return plain(cols, ys, yc, idx)
     val k = cols.length
     def stored(a: Array[Double]) = a != null && !(a eq Col.Ones)
@@ -64,8 +97,23 @@ object Gram {
     * ac, sc for the cos channel), the data at ys(i), yc(i). The same numbers as `block` on copies of the rows.
     */
   private[explain] def blockAt(as: Array[Array[Double]], sa: Array[Int], ac: Array[Array[Double]], sc: Array[Int], ys: Array[Double],
-                               yc: Array[Double], lo: Int, hi: Int, out: Array[Double]): Unit = {
+                               yc: Array[Double], lo: Int, hi: Int, out: Array[Double], skip: Skip = null): Unit = {
     val k = as.length
+    if (skip != null) {
+      // each channel's sums over the runs of rows it keeps
+      val rs = kept(skip.cS, skip.belowS, skip.heldS, lo, hi); val rc = kept(skip.cC, skip.belowC, skip.heldC, lo, hi)
+      def over(r: Array[Int], a: Array[Double], da: Int, b: Array[Double], db: Int): Double = {
+        var s = 0.0; var t = 0; while (t < r.length) { s += dotAt(a, da, b, db, r(t), r(t + 1)); t += 2 }; s
+      }
+      var q = 0; var i = 0
+      while (i < k) {
+        var j = 0
+        while (j <= i) { out(q) = over(rs, as(i), sa(i), as(j), sa(j)) + over(rc, ac(i), sc(i), ac(j), sc(j)); q += 1; j += 1 }
+        out(q) = over(rs, as(i), sa(i), ys, 0) + over(rc, ac(i), sc(i), yc, 0); q += 1
+        i += 1
+      }
+      return
+    }
     var q = 0; var i = 0
     while (i < k) {
       var j = 0

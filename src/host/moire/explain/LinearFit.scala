@@ -156,14 +156,14 @@ final class ColGroups(make: IndexedSeq[() => IndexedSeq[Col]], keep: Boolean, he
   }
 
   /** The least-squares fit over all groups' columns (the same numbers as `LinearFit.solve` on them all). */
-  def solve(ys: Array[Double], yc: Array[Double]): LinSol = {
+  def solve(ys: Array[Double], yc: Array[Double], skip: Gram.Skip = null): LinSol = {
     val all = layout()
-    if (!streamed) { val (g, r) = Gram.of(all.flatten, ys, yc); return LinearFit.normal(g, r) }
+    if (!streamed) { val (g, r) = Gram.of(all.flatten, ys, yc, skip = skip); return LinearFit.normal(g, r) }
     // the held columns read in place beside the made ones' block: the same block sums as `Gram.of` on whole columns
     val k = at(size)
     val sum = Par.sums(ys.length, k * (k + 1) / 2 + k, Gram.Block) { (lo, hi, out) =>
       val b = block(all, lo, hi, sinCh = true, cosCh = true)
-      Gram.blockAt(b.s, b.sFrom, b.c, b.cFrom, ys, yc, lo, hi, out)
+      Gram.blockAt(b.s, b.sFrom, b.c, b.cFrom, ys, yc, lo, hi, out, skip)
     }
     val (g, r) = Gram.unpack(sum, k)
     LinearFit.normal(g, r)

@@ -48,6 +48,8 @@ object LinearSweep {
     val nf = fams.length
     val maxOrder = if (orders.isEmpty) 0 else orders.max
     val orderAt = Array.fill(maxOrder + 1)(-1); orders.zipWithIndex.foreach { case (k, j) => orderAt(k) = j }
+    // each order's pass through the low-passes (`HarmonicResponse`; null: none)
+    val responses = Array.tabulate(maxOrder + 1)(k => if (orderAt(k) >= 0) harmonicResponse(k) else null)
     val ps = fams.map(parts)
     val width = ps.map(_._1.length) // columns per family
     val colAt = width.scanLeft(0)(_ + _) // where each family's values start (two per column: sin part, cos part)
@@ -135,10 +137,12 @@ object LinearSweep {
               if (f >= 0) {
                 val x = 2 * colAt(f) + 4 * part
                 val dIm = dst(x + part); val dRe = dst(x + 2 + part)
+                val hr = responses(j)
                 k = 0
                 while (k < m) {
                   if (on(k)) { if (dIm != null) dIm(k) = amp(k) * im(k); if (dRe != null) dRe(k) = amp(k) * re(k) }
                   else { if (dIm != null) dIm(k) = 0; if (dRe != null) dRe(k) = 0 }
+                  if (hr != null && dIm != null && dRe != null) hr(freq(at(k)), part, dIm, dRe, k)
                   k += 1
                 }
               }

@@ -459,12 +459,14 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
         }
         val sin = (if (onS) Array(T, T) else Array[Boolean]()) ++ (if (onC) Array(F, F) else Array[Boolean]())
         val cos = (if (onS) Array(F, F) else Array[Boolean]()) ++ (if (onC) Array(T, T) else Array[Boolean]())
+        // the low-passes' gain and lag at k f (none: the fundamental's, k times)
+        val hr = harmonicResponse(k)
         gen(sin, cos) { (lo, hi, o, at) =>
           var i = lo
           while (i < hi) {
             val q = at + i - lo
-            if (onS) harm(us(i), vs(i), o(0), o(2), q)
-            if (onC) { val p = if (onS) 4 else 0; harm(uc(i), vc(i), o(p + 1), o(p + 3), q) }
+            if (onS) { harm(us(i), vs(i), o(0), o(2), q); if (hr != null) hr(freq(i), 0, o(0), o(2), q) }
+            if (onC) { val p = if (onS) 4 else 0; harm(uc(i), vc(i), o(p + 1), o(p + 3), q); if (hr != null) hr(freq(i), 1, o(p + 1), o(p + 3), q) }
             i += 1
           }
         }
@@ -514,6 +516,10 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
       case _ => None
     }
   }
+
+  /** How the spec's low-passes pass harmonic k beside the fundamental (`HarmonicResponse`), null without any. */
+  def harmonicResponse(k: Int): HarmonicResponse =
+    if (spec.bw.isEmpty || k < 2) null else { val (lo, hi) = freqRange; new HarmonicResponse(spec, k, lo, hi) }
 
   /** sin and cos of a fixed-frequency line at every sample: the last one made is kept while two arrays of the record's
     * length fit in a sixteenth of the heap (a refit makes the columns of an accepted pickup at every iteration; they do not
@@ -585,7 +591,7 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
     val adc = rec.adc
     val nz = _noise; val useSoft = soft && nz.m2ll != 0 && sp.faults == spec.faults
     // the prediction (the repaired data less the residual) read where it is needed, not made as an array
-    def one(ch: Int, y: Array[Double], codes: Array[Int], rp: Array[Double], rr: Array[Double], pv0: Array[Float]): (Array[Double], Array[Double], Array[Float], Double, Double, Double) = {
+    def one(ch: Int, y: Array[Double], codes: Array[Int], rp: Array[Double], rr: Array[Double], pv0: Array[Float]): (Array[Double], Array[Double], Array[Float], Double, Double, Double, Array[Boolean]) = {
       val fl = sp.faults.filter(_.ch == ch); val cl = sp.clips.filter(c => c.ch == ch && !c.after)
       // a saturation with the noise after it: a sample there is its level plus noise, whatever the signal beyond (held at
       // the prediction plus that noise: it tells the fit nothing, and its residual is the noise about the level)
@@ -618,9 +624,9 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
       }
       @inline def censored(v: Double) = censor && (v >= hi - 0.5 * lsb || v <= lo + 0.5 * lsb)
       // without faults most records change nothing: a scan first, so that an unchanged channel is `y` itself
-      if (pre == null && ex == null && !censor && !flat) return (y, null, null, 0.0, 0.0, 0.0)
+      if (pre == null && ex == null && !censor && !flat) return (y, null, null, 0.0, 0.0, 0.0, null)
       if (pre == null && ex == null && !flat && Par.sum(n) { (a, b) => var k = 0.0; var i = a; while (i < b) { if (censored(y(i))) k += 1; i += 1 }; k } == 0)
-        return (y, null, null, 0.0, 0.0, 0.0)
+        return (y, null, null, 0.0, 0.0, 0.0, null)
       // `inPlace`: over the fit's own arrays (each sample's prediction is read before its value is written), never the data
       val out = if (inPlace && (rp ne y) && rp.length == n) rp else new Array[Double](n)
       // soft: each sample's weights' variance (full scale squared; 0 where one preimage), in single precision (a long
@@ -681,6 +687,8 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
         if (q(1) < 2 || !(q(0) > 0)) 1.0 else math.max(0.1, math.min(10.0, math.sqrt(white * q(1) / q(0))))
       }
       val lnG = math.log(g)
+      // the flat top's samples (held at the prediction plus their scatter: the fit leaves them out, `deepCensored`)
+      val held = if (flat) new Array[Boolean](n) else null
       // the censored samples' distances, NaN elsewhere: made when the first one is met (most repairs censor none)
       var cen: Array[Double] = null
       val lock = new Object
@@ -698,22 +706,50 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
             val v = if (pv != null) softValue(i, p, m) else value(i, p)
             if (censored(v)) {
               if (mine == null) mine = cenArray()
-              mine(i) = if (v >= hi - 0.5 * lsb) v - 0.5 * lsb - p else p - (v + 0.5 * lsb); out(i) = p; m(1) += 1
+              val top = v >= hi - 0.5 * lsb; val d = if (top) v - 0.5 * lsb - p else p - (v + 0.5 * lsb)
+              mine(i) = d; m(1) += 1
+              // EM's value of a censored sample: the mean of the noise's tail beyond the level (once the noise is fitted).
+              // Held at the prediction, the fit was that of the samples inside the level alone, whose noise the level
+              // cuts: another generator's 1.0 FS clipped at 0.7 came out 0.075 % low, 1 LSB near the level, and was
+              // told as harmonics 3, 5 and 7
+              // A sample at the level with the prediction more than `Deep` noise widths inside it is no tail of that noise
+              // (a glitch to the rail, a misfit): held at the prediction, as before the tail means (two glitches in a row
+              // to code 0 pulled the fit by 20 LSB toward the rail and were no glitches any more)
+              val sd = if (nz.m2ll == 0) 0.0 else math.sqrt(noiseVar(i))
+              out(i) = if (sd > 0 && d < SignalEngine.Deep * sd) p + (if (top) sd else -sd) * Noise.tailMean(d / sd) else p
               if (pv != null && pv(i) != 0) { m(2) -= pv(i); m(4) -= pv(i) / noiseVar(i); pv(i) = 0 } // held at the prediction
             }
-            else if (flat && (v >= hiA || p >= hiA)) { out(i) = p + (v - hiA) * g; m(0) += 1; m(3) += lnG }
-            else if (flat && (v <= loA || p <= loA)) { out(i) = p + (v - loA) * g; m(0) += 1; m(3) += lnG }
+            else if (flat && (v >= hiA || p >= hiA)) { out(i) = p + (v - hiA) * g; m(0) += 1; m(3) += lnG; held(i) = true }
+            else if (flat && (v <= loA || p <= loA)) { out(i) = p + (v - loA) * g; m(0) += 1; m(3) += lnG; held(i) = true }
             else { out(i) = v; if (v != y(i)) m(0) += 1 }
           }
           i += 1
         }
       }
-      if (pv == null && counts(0) == 0 && counts(1) == 0) (y, null, null, 0.0, 0.0, 0.0)
-      else (out, if (counts(1) == 0) null else lock.synchronized(cen), pv, counts(2), counts(3), counts(4))
+      if (pv == null && counts(0) == 0 && counts(1) == 0) (y, null, null, 0.0, 0.0, 0.0, null)
+      else (out, if (counts(1) == 0) null else lock.synchronized(cen), pv, counts(2), counts(3), counts(4), held)
     }
-    val (a, ca, pa, sa, ea, la) = one(0, ys, rec.sin, _repS, resS, _cens.pvS); val (b, cb, pb, sb, eb, lb) = one(1, yc, rec.cos, _repC, resC, _cens.pvC)
-    Repaired(a, b, ca, cb, pa, pb, sa, sb, ea + eb, la, lb, step)
+    val (a, ca, pa, sa, ea, la, ha) = one(0, ys, rec.sin, _repS, resS, _cens.pvS); val (b, cb, pb, sb, eb, lb, hb) = one(1, yc, rec.cos, _repC, resC, _cens.pvC)
+    Repaired(a, b, ca, cb, pa, pb, sa, sb, ea + eb, la, lb, step, ha, hb)
   }
+
+  /** The samples the linear fit and the phase leave out (`Gram.Skip`), null where none: a channel held at a saturation
+    * level with the prediction `SignalEngine.Deep` noise widths beyond it. Its value there is the noise's tail mean
+    * beyond the level (`repair`), next to the prediction: held in the fit it anchored the fit where it was, each step
+    * going a fifth of the way (the expectation-maximization's rate, the information the level hides). Another
+    * generator's 1.0 FS clipped at 0.7 on both channels, half the samples, stopped after 12 refits with an rms of 10
+    * LSB and was told as harmonics 3, 5 and 7. Left out, the step is the likelihood's Newton step.
+    */
+  private def deepCensored: Gram.Skip = {
+    val c = _cens
+    if ((c.censS == null && c.censC == null && c.heldS == null && c.heldC == null) || _noise.m2ll == 0) null
+    // a saturation level new to the fit: the prediction is still the clipped shape the fit before it followed, at the
+    // level; every sample held there is left out of the first solve (from the samples inside the level alone)
+    else if (censClips != clipsFitted) Gram.Skip(c.censS, Double.PositiveInfinity, c.censC, Double.PositiveInfinity, c.heldS, c.heldC)
+    else Gram.Skip(c.censS, -SignalEngine.Deep * math.sqrt(_noise.varS), c.censC, -SignalEngine.Deep * math.sqrt(_noise.varC), c.heldS, c.heldC)
+  }
+  // the saturation levels of the repair as it stands, and of the one the last solve had
+  private var censClips: Vector[Clip] = Vector.empty; private var clipsFitted: Vector[Clip] = Vector.empty
 
   /** No fault repaired and no sample held at a rail: the fit's data do not change from one step to the next. */
   private def plainData: Boolean = spec.faults.isEmpty && !spec.clips.exists(_.after) && cens.censS == null && cens.censC == null
@@ -730,22 +766,26 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
       if (it > 0 && refineTraj && traj.isInstanceOf[RefTrajectory]) jointStep(traj.asInstanceOf[RefTrajectory])
       else if (it > 0 && refineTraj) Laps("refit: trajectory and fundamentals") {
         // the phase residual of each sample (periods) weighted by its slope's square, read where the fit sums it
+        val sk = deepCensored
         def w(i: Int): Double = { val ww = gS(i) * gS(i) + gC(i) * gC(i); if (ww > 0) ww else 0.0 }
         def d(i: Int): Double = (resS(i) * gS(i) + resC(i) * gC(i)) / w(i) / (2 * math.Pi)
         Laps("traj: addFit")(traj match {
           case t: Trajectory => t.addFitBy { (i, o) =>
-            val gs = gS(i); val gc = gC(i); val ww = gs * gs + gc * gc
+            // a channel held at a saturation level far below the prediction tells nothing of the phase there: its
+            // slope left out (held at the prediction, it anchored the phase where it was)
+            val gs = if (sk != null && sk.s(i)) 0.0 else gS(i); val gc = if (sk != null && sk.c(i)) 0.0 else gC(i)
+            val ww = gs * gs + gc * gc
             if (ww > 0) { o(0) = (resS(i) * gs + resC(i) * gc) / ww / (2 * math.Pi); o(1) = ww } else { o(0) = 0.0; o(1) = 0.0 }
           }
           case t => t.addFit(Doubles.tabulate(n)(i => if (w(i) > 0) d(i) else 0.0), Doubles.tabulate(n)(w))
         })
         Laps("traj: evalTraj")(evalTraj())
       }
-      if (it > 0) Laps("refit: repair") { val r = repair(spec, soft = true, inPlace = !shared); _repS = r.s; _repC = r.c; _cens = r; shared = false }
+      if (it > 0) Laps("refit: repair") { val r = repair(spec, soft = true, inPlace = !shared); _repS = r.s; _repC = r.c; _cens = r; shared = false; censClips = spec.clips }
       Laps("refit: fundamentals")(setFundamentals())
       val cols = groups()
-      _sol = Laps("refit: solve")(cols.solve(repS, repC))
-      _termIndex = spec.terms.zip(cols.offsets.tail).toMap
+      _sol = Laps("refit: solve")(cols.solve(repS, repC, deepCensored))
+      _termIndex = spec.terms.zip(cols.offsets.tail).toMap; clipsFitted = censClips
       // the terms' columns may be made again below: from the state they were fitted in (the old default part)
       Laps("refit: residual") { residual(cols); holdExcluded(); predictionSlope(cols, sol.beta.take(6)) }
       _colBase = _base; _base = sol.beta.take(6)
@@ -784,13 +824,13 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
     val sp = spec; val tr = _traj; val trBack = tr.keep()
     val held = _excluded != null // the data of excluded samples are held at the prediction in place: copies then
     val (rS, rC, cn) = if (held) { val a = _repS.clone(); val b = _repC.clone(); (a, b, _cens.copy(s = a, c = b)) } else (_repS, _repC, _cens)
-    val (b, cb, so, ti, no, gs, gc, lg) = (_base, _colBase, _sol, _termIndex, _noise, slopeS, slopeC, _lastGain)
+    val (b, cb, so, ti, no, gs, gc, lg) = (_base, _colBase, _sol, _termIndex, _noise, slopeS, slopeC, _lastGain); val (cf, cc) = (clipsFitted, censClips)
     val resS0 = if (light) null else resS.clone(); val resC0 = if (light) null else resC.clone()
     shared = true
     Some { () =>
       spec = sp; _traj = tr; trBack(); evalTraj() // the phase, frequency and fundamentals from the trajectory
       _repS = rS; _repC = rC; _cens = cn; shared = true
-      _sol = so; _termIndex = ti; _noise = no; slopeS = gs; slopeC = gc; _lastGain = lg
+      _sol = so; _termIndex = ti; _noise = no; slopeS = gs; slopeC = gc; _lastGain = lg; clipsFitted = cf; censClips = cc
       if (light) {
         // the residual as the last refit made it: its columns from the default part they were made with
         _base = cb; groups().addToBoth(resS, resC, so.beta, -1.0, repS, repC)
@@ -941,6 +981,10 @@ object SignalEngine {
   val debug: Boolean = sys.props.contains("moire.debug")
   /** The residual along the fringe over the residual across it above which the trajectory is made finer. */
   val MotionMisfit = 1.1
+  /** Noise widths a prediction lies beyond a saturation level where the sample held there is left out of the fit
+    * (`deepCensored`; its tail mean is within 1e-4 noise widths of the prediction there).
+    */
+  val Deep = 4.0
   /** Harmonics of the fringe phase that `alongOverAcrossBeyondFringe` takes out: a harmonic of the catalogue's orders
     * (2 to 7) on one or both channels turns at its order less or plus one.
     */
@@ -971,6 +1015,11 @@ object Noise {
 
   private def binOf(r: Repaired): Double = if (r == null) 0.0 else r.bin
 
+  /** The mean of a standard normal beyond a (the inverse Mills ratio, phi(a) / Q(a)); a + 1 / a far out. */
+  def tailMean(a: Double): Double =
+    if (a > 30) a + 1 / a
+    else { val q = 0.5 * org.hipparchus.special.Erf.erfc(a / math.sqrt(2)); if (q > 0) math.exp(-0.5 * a * a) / math.sqrt(2 * math.Pi) / q else a }
+
   /** White noise on both channels, nothing censored, from the residual sums of squares of n samples each. */
   def white(rssS: Double, rssC: Double, n: Int): Noise = {
     val floor = 1e-30
@@ -1000,16 +1049,19 @@ object Noise {
 
   def fit(rs: Array[Double], rc: Array[Double], slope: (Array[Double], Array[Double]), cens: Repaired = null): Noise = {
     val n = rs.length
-    def ss(a: Array[Double]) = Par.sum(n) { (lo, hi) => var s = 0.0; var i = lo; while (i < hi) { s += a(i) * a(i); i += 1 }; s }
-    val floor = 1e-30
     val cs = if (cens == null) null else cens.censS; val cc = if (cens == null) null else cens.censC
+    // a censored sample's residual is its tail mean's, no noise of a sample seen: left out of the sums
+    def ss(a: Array[Double], c: Array[Double] = null) = Par.sum(n) { (lo, hi) =>
+      var s = 0.0; var i = lo; while (i < hi) { if (c == null || c(i).isNaN) s += a(i) * a(i); i += 1 }; s
+    }
+    val floor = 1e-30
     // a soft repair's spread per sample (`Repaired`), added to the residual's squares (null: none)
     val ps = if (cens == null) null else cens.pvS; val pc = if (cens == null) null else cens.pvC
     val ent = if (cens == null) 0.0 else cens.entropy
     def count(c: Array[Double]) = if (c == null) 0 else c.count(!_.isNaN)
-    if (slope == null) return fromSums(ss(rs), ss(rc), n, cens)
+    if (slope == null) return fromSums(ss(rs, cs), ss(rc, cc), n, cens)
     val (ds, dc) = slope
-    val white0 = ((ss(rs) + (if (cens == null) 0.0 else cens.pvSumS)) / n, (ss(rc) + (if (cens == null) 0.0 else cens.pvSumC)) / n)
+    val white0 = ((ss(rs, cs) + (if (cens == null) 0.0 else cens.pvSumS)) / n, (ss(rc, cc) + (if (cens == null) 0.0 else cens.pvSumC)) / n)
     var vs = white0._1; var vc = white0._2; var j2 = 0.0
     // scoring steps until the estimates stop changing (at most 8; the reference path takes all 8): the white variances
     // by their own size, the slope's by the variance it adds at the mean square slope against the white one's (near
@@ -1023,16 +1075,18 @@ object Noise {
       val m = Array.ofDim[Double](3, 4)
       // both channels' sums in one pass (each channel's in the same order as a pass of its own)
       val q = Par.sums(n, 10) { (lo, hi, a) =>
-        def acc(r: Array[Double], d: Array[Double], v0: Double, o: Int, pv: Array[Float]): Unit = {
+        def acc(r: Array[Double], d: Array[Double], v0: Double, o: Int, pv: Array[Float], c: Array[Double]): Unit = {
           var s0 = 0.0; var s1 = 0.0; var s2 = 0.0; var s3 = 0.0; var s4 = 0.0; var i = lo
           while (i < hi) {
+            if (c != null && !c(i).isNaN) { i += 1 } else {
             val d2 = d(i) * d(i); val v = math.max(floor, v0 + j2 * d2); val w = 1 / (v * v); val y = r(i) * r(i) + (if (pv == null) 0.0 else pv(i))
             s0 += w; s1 += w * d2; s2 += w * d2 * d2; s3 += w * y; s4 += w * d2 * y
             i += 1
+            }
           }
           a(o) += s0; a(o + 1) += s1; a(o + 2) += s2; a(o + 3) += s3; a(o + 4) += s4
         }
-        acc(rs, ds, vs, 0, ps); acc(rc, dc, vc, 5, pc)
+        acc(rs, ds, vs, 0, ps, cs); acc(rc, dc, vc, 5, pc, cc)
       }
       for (ch <- 0 to 1) { val o = 5 * ch; m(ch)(ch) += q(o); m(ch)(2) += q(o + 1); m(2)(2) += q(o + 2); m(ch)(3) += q(o + 3); m(2)(3) += q(o + 4) }
       m(2)(0) = m(0)(2); m(2)(1) = m(1)(2)
@@ -1073,6 +1127,7 @@ object Noise {
   */
 final case class Repaired(s: Array[Double], c: Array[Double], censS: Array[Double], censC: Array[Double],
                           pvS: Array[Float] = null, pvC: Array[Float] = null, pvSumS: Double = 0, pvSumC: Double = 0,
-                          entropy: Double = 0, lostS: Double = 0, lostC: Double = 0, bin: Double = 0) {
+                          entropy: Double = 0, lostS: Double = 0, lostC: Double = 0, bin: Double = 0,
+                          heldS: Array[Boolean] = null, heldC: Array[Boolean] = null) {
   def soft: Boolean = pvS != null || pvC != null
 }
