@@ -133,6 +133,43 @@ class RecorderSpec extends AnyFlatSpec with Matchers {
     r.rows shouldBe 39 * n; r.stats.lost shouldBe false
   }
 
+  it should "keep what arrived when the link fails mid-recording, and fail with one line naming the file" in {
+    val recs = BoardStreamFixture.records(40 * n, 1000, clock.toDouble)
+    val bytes = Encoder.frames(recs.grouped(n).zipWithIndex.map { case (rs, k) => RecordFrame(k, 0, rs) }.toSeq)
+    // the adapter unplugged once the bytes are out (SerialLink's read fails so)
+    val link = new ByteLink {
+      private val m = new MemoryLink(bytes)
+      private var left = bytes.length
+      val name = "memory"
+      def write(a: Array[Byte]): Unit = m.write(a)
+      def read(buf: Array[Byte]): Int = if (left <= 0) throw new StreamError("memory: read failed (error 5); is the adapter still plugged in?")
+        else { val k = m.read(buf); left -= k; k }
+      def close(): Unit = ()
+    }
+    val out = os.temp.dir() / "cut.csv"
+    val o = RecordOptions("memory", 5.0, out.toString, baud = 1000000, quiet = true, listenOnly = true, decimation = Some(1000),
+      adcClockHz = Some(clock.toDouble), adcFormat = Some("offset-binary"), countsPerPeriod = Some(1024))
+    val e = intercept[MoireError](Recorder.record(link, o, _ => (), _ => ()))
+    e.getMessage should (include("read failed") and include(s"$out holds the ${39 * n} records received"))
+    e.getMessage.linesIterator.size shouldBe 1
+    val rec = Recording.read(out)
+    rec.length shouldBe 39 * n
+    rec.meta.get("link_failed_after_s") should not be empty
+  }
+
+  it should "refuse a file of another kind under --out before it records" in {
+    val out = os.temp.dir() / "notes.csv"
+    os.write(out, "my notes\n")
+    val o = RecordOptions("memory", 5.0, out.toString, baud = 1000000, quiet = true, listenOnly = true, decimation = Some(1000),
+      adcClockHz = Some(clock.toDouble), adcFormat = Some("offset-binary"), countsPerPeriod = Some(1024))
+    val link = new MemoryLink(Array.emptyByteArray)
+    val t0 = System.nanoTime()
+    val e = intercept[MoireError](Recorder.record(link, o, _ => (), _ => ()))
+    (System.nanoTime() - t0) / 1e9 should be < 4.0 // not after the 5 s of recording
+    e.getMessage should include("holds text, and this command writes a moire recording")
+    os.read(out) shouldBe "my notes\n"
+  }
+
   it should "say in one line when the board does not answer, and write no file" in PtyPair { pty =>
     val out = pty.dir / "none.csv"
     val e = intercept[MoireError](Recorder.run(opts(pty, out), _ => (), _ => ()))

@@ -63,14 +63,14 @@ object Replicate {
 
   /** The replication parts of an effect, covering its domain, and their name: contiguous halves for effects of time (and
     * periodic effects whose cycle each half covers `MinCycles` times); interleaved blocks, so that each part covers the
-    * whole cycle, for periodic effects of a record of a few cycles (one turn of a magnet) and for effects of speed (each
-    * part spans the speed range); alternate fringe periods for local structure along the position (a band), so that
+    * whole cycle, for periodic effects of a record of a few cycles (one turn of a magnet), for effects of speed (each
+    * part spans the speed range) and for a settling (each part covers its start); alternate fringe periods for local structure along the position (a band), so that
     * each part covers the whole travel. `d`: the domain of the term being tested, when not the effect's own.
     */
   def splits(e: SignalEngine, x: effects.Effect, d: Option[effects.Domain] = None): (Seq[Array[Int]], String) = d.getOrElse(x.domain) match {
     case effects.Domain.Periodic if x.cycles(e) >= 2 * MinCycles => (folds(e.n), Halves)
     case effects.Domain.Position => (alternatePeriods(e), "alternate fringe periods")
-    case effects.Domain.Periodic | effects.Domain.Speed => (interleaved(e.n), "interleaved halves")
+    case effects.Domain.Periodic | effects.Domain.Speed | effects.Domain.Settling => (interleaved(e.n), "interleaved halves")
     case _ => (folds(e.n), Halves)
   }
 

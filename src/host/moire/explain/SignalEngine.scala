@@ -168,6 +168,7 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
     def freeFit(): Unit = {
       def free(len: Int): Unit = start(new Trajectory(n, len, fs), raw)
       val lens = Seq(16.0, 6.0, 2.5).map(p => Trajectory.segmentLength(n, fs, typicalHz, p)).distinct
+      segmentLens = lens
       val shortest = Identifiable.shortestSegment(n, fs, typicalHz)
       if (lens.size == 1 && lens.head <= shortest) { free(lens.head); return }
       // each length's fitted trajectory and repaired data are kept: the best is restored and solved once, not fitted again
@@ -795,6 +796,30 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
       if (refines) _lastGain = before - bic
       if (SignalEngine.debug) System.err.println(f"refit $it: rms $rms%.4g bic $bic%.8g")
     }
+  }
+
+  // the segment lengths the default fit tried for a free trajectory, longest first
+  private var segmentLens: Seq[Int] = Nil
+
+  /** A free trajectory of segments shorter than the longest the default fit tried (its motion misfit asked for them)
+    * is fitted again with each longer length from the phase as it stands, once an effect is in the spec, and the one
+    * with the lowest BIC kept. What looked like motion to the default fit may be that effect: an offsets' warm-up on a
+    * back-and-forth made it take segments of 244 samples instead of 1564, which took up part of the warm-up (its
+    * time constant came out 20 ms for `simulate`'s 25). True when a longer length is kept.
+    */
+  def relengthen(): Boolean = traj match {
+    case t: Trajectory if !FitPath.isReference && segmentLens.exists(_ > t.len) =>
+      val back = save()
+      if (back.isEmpty) return false
+      val start = bic; val ph = phase.clone()
+      var best = (start, t.len); var bestBack = back
+      for (l <- segmentLens.filter(_ > t.len)) {
+        bestBack.get(); val nt = new Trajectory(n, l, fs); _traj = nt; nt.addFit(ph, null); evalTraj(); converge()
+        if (SignalEngine.debug) System.err.println(f"segments of $l samples again: BIC $bic%.1f against $start%.1f")
+        if (bic < best._1) { best = (bic, l); bestBack = save() }
+      }
+      if (best._2 == t.len || bestBack.isEmpty) { back.get(); false } else { bestBack.get(); true }
+    case _ => false
   }
 
   /** Gauss-Newton step of a reference map jointly with the default part and the terms (fitted in turn they converge

@@ -196,8 +196,10 @@ object SignalExplain {
                 val snapA = Snapshot.of(s"after ${c.effect}", e.resS, e.resC)
                 steps += ((Finding(c1.effect, c1.channel, "", c1.params, c1.unc, bic0 - e.bic, rmsB, e.rms, c1.where, size / e.lsb), snapB, snapA))
                 round += 1; accepted = true
-                // with the effect fitted, glitches its misfit hid stand out
+                // with the effect fitted, glitches its misfit hid stand out; the motion may not need the shorter
+                // segments its misfit asked for
                 glitches = Glitches.more(e, glitches)
+                if (e.relengthen()) { researchWarmup(e); lap("longer segments") }
             }
         }
       }
@@ -396,6 +398,17 @@ object SignalExplain {
       if (Laps("settle: polish")(polish(e)) < 0.5 && !FitPath.isReference) { e.spec = before; return }
       Laps("settle: converge")(e.converge(moved = true)); k += 1
     }
+  }
+
+  /** A warm-up's time constant searched again on the fit without it (`Candidates.warmup`), once the trajectory has
+    * longer segments (`SignalEngine.relengthen`): it was searched on the shorter ones, which had taken up part of it.
+    */
+  private def researchWarmup(e: SignalEngine): Unit = e.spec.terms.collectFirst { case w: Term.Warmup => w }.foreach { w0 =>
+    val full = e.spec
+    e.spec = full.copy(terms = full.terms.filterNot(_ == w0)); e.converge()
+    val w1 = new Candidates(e).warmup().flatMap(_.spec.terms.collectFirst { case w: Term.Warmup => w }).getOrElse(w0)
+    if (SignalEngine.debug) System.err.println(f"warm-up searched again: ${w0.tauS}%.5g s -> ${w1.tauS}%.5g s")
+    e.spec = full.copy(terms = full.terms.map(t => if (t == w0) w1 else t)); e.converge(); settle(e)
   }
 
   /** Re-optimises the nonlinear parameters (skew, cut-offs) of the current spec together (`Candidates.joint`); returns

@@ -67,6 +67,7 @@ object Recorder {
     if (o.port.trim.isEmpty) throw new StreamError("--port is empty: name a serial port, e.g. /dev/ttyUSB0")
     moire.files.SafeWrite.refuseInputs(o.out, Seq(o.port))   // the port's link is no output
     moire.files.SafeWrite.checkFile(os.Path(o.out, os.pwd))   // before the port is opened and the capture runs
+    moire.files.SafeWrite.checkKind(os.Path(o.out, os.pwd), "a moire recording") // (notes under its name: refused now, not after it)
   }
 
   /** Opens the port and records; `say` gets the summary lines, `warn` the notes and warnings (stderr). */
@@ -118,11 +119,12 @@ object Recorder {
       o.countsPerPeriod.get, None, fromBoard = false) else setup(client, o)
     capacityWarning(s, o.baud).foreach(warn)
     val start = settle(client, o, s)
-    val (rec, stats, elapsed) = capture(link, o, s, start)
+    val (rec, stats, elapsed, failed) = capture(link, o, s, start)
+    failed.filter(_ => rec.rows == 0).foreach(e => throw e)
     if (stats.frames == 0) throw new StreamError(s"${o.port}: no frames in ${o.seconds} s at ${o.baud} baud after the start " +
       s"(${stats.bytes} bytes): the board stopped streaming?")
     if (rec.rows == 0) throw new StreamError(s"${o.port}: ${stats.frames} frames but no records in ${o.seconds} s: is streaming on (control bit0)?")
-    val meta = metadata(o, s, stats, elapsed)
+    val meta = metadata(o, s, stats, elapsed) ++ failed.map(_ => "link_failed_after_s" -> f"$elapsed%.3f")
     val file = os.Path(o.out, os.pwd)
     Recording.write(file, rec.recording(s, meta))
     val summary = Seq(
@@ -133,6 +135,8 @@ object Recorder {
     summary.foreach(say)
     val warnings = lossWarning(stats).toSeq
     warnings.foreach(warn)
+    // the link gone mid-recording (a cable pulled): the records that arrived are in the file, and the command fails
+    failed.foreach(e => throw new StreamError(f"${e.getMessage.stripSuffix(".")} after $elapsed%.2f s of ${o.seconds}%.0f; $file holds the ${rec.rows} records received"))
     RecordResult(file, rec.rows, stats, s, meta, warnings)
   }
 
@@ -237,7 +241,10 @@ object Recorder {
   }
 
   /** Reads for `seconds`, then to the end of the frame in progress (at most 1 s more). */
-  private def capture(link: ByteLink, o: RecordOptions, s: BoardSetup, first: Array[Byte]): (Columns, StreamStats, Double) = {
+  /** The records until the time is up, their figures and seconds, and the link's failure when it failed on the way
+    * (what arrived before it is kept).
+    */
+  private def capture(link: ByteLink, o: RecordOptions, s: BoardSetup, first: Array[Byte]): (Columns, StreamStats, Double, Option[StreamError]) = {
     val dec = new Decoder(s.decimation)
     val cols = new Columns
     def take(fs: Vector[Frame]): Unit = fs.foreach { case f: RecordFrame => f.records.foreach(cols.add); case _ => }
@@ -245,7 +252,8 @@ object Recorder {
     val t0 = System.nanoTime()
     val deadline = t0 + (o.seconds * 1e9).toLong
     val bar = if (o.quiet) None else Some(new moire.progress.Bar("record", math.ceil(o.seconds * 10).toLong, " s", 10))
-    try {
+    var failed: Option[StreamError] = None
+    try try {
       take(dec.feed(first))
       while (System.nanoTime() < deadline) {
         val n = link.read(buf)
@@ -264,8 +272,9 @@ object Recorder {
         while (i < n && !done) { val fs = dec.feed(buf, i, 1); take(fs); done = fs.nonEmpty || dec.buffered == 0; i += 1 }
       }
       take(dec.finish())
-    } finally bar.foreach(_.close())
-    (cols, dec.stats, (System.nanoTime() - t0) / 1e9)
+    } catch { case e: StreamError => failed = Some(e); take(dec.finish()) }
+    finally bar.foreach(_.close())
+    (cols, dec.stats, (System.nanoTime() - t0) / 1e9, failed)
   }
 }
 

@@ -12,7 +12,7 @@ object Warmup extends Effect {
   val shows = "against time"
   override val claims: Seq[String] = Seq("against time")
   override def example: Example = Example(EffectSpec(name, Map("offset_sin_step_fs" -> 0.005, "gain_cos_step_rel" -> 0.01, "time_constant_s" -> 0.002)), "oscillate:400:300")
-  val domain: Domain = Domain.Time
+  val domain: Domain = Domain.Settling
   override val plot: PlotKind = PlotKind.Time
 
   // a relative gain step of -1 or less leaves no signal, or turns it over: no warm-up
