@@ -93,9 +93,12 @@ object SignalExplain {
     if (givenModel != ModelSpec()) { e.spec = givenModel; e.converge(); settle(e) }
     // isolated samples far off the signal: glitches of the data, out of the fit from here on (and named in the notes)
     // (a second look once they are out: a glitch pulls the fit's phase, and its neighbours' residual with it)
+    // runs of samples lost (both channels held still, or at an end code, while the signal moves on): out, and named
+    val dropouts = Dropouts.find(e)
+    if (dropouts.nonEmpty) e.exclude(Dropouts.mask(e.n, dropouts))
     var glitches = Glitches.find(e)
-    if (glitches.nonEmpty) { e.exclude(Glitches.mask(e.n, glitches)); glitches = Glitches.more(e, glitches) }
-    val glitchMask = Glitches.mask(e.n, glitches)
+    if (glitches.nonEmpty) { e.exclude(Glitches.union(e.excluded, Glitches.mask(e.n, glitches))); glitches = Glitches.more(e, glitches) }
+    val glitchMask = Glitches.union(Glitches.mask(e.n, glitches), Dropouts.mask(e.n, dropouts))
     val baseRms = e.rms; val baseBic = e.bic
     // the noise of the default part where the model does not follow somewhere (or nowhere): the floor, not the misfit
     val noiseMask = Glitches.union(Adequacy.maskOf(e, prior), glitchMask)
@@ -251,7 +254,7 @@ object SignalExplain {
     val coarse = CoarseQuantization.finding(e)
     val shown = if (follows) fin else Nil
     val report = Report(file, "signals", baseRms, baseBic, baseParams, located, coarse ++ shown.map(_._1), unexplained, finalRms, finalBic,
-      rec.length, (System.nanoTime() - t0) / 1e9, notes(e) ++ Glitches.note(glitches), Coverage.untested(e, cands.fMin, cands.fMax) ++
+      rec.length, (System.nanoTime() - t0) / 1e9, notes(e) ++ Glitches.note(glitches) ++ Dropouts.note(dropouts), Coverage.untested(e, cands.fMin, cands.fMax) ++
         (if (confounded) Identifiable.leftOver(left) else Nil), small, misfit)
     Result(report, e, before, shown, rerun)
   }
