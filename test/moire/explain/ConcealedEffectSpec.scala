@@ -113,6 +113,27 @@ class ConcealedEffectSpec extends AnyFlatSpec with Matchers {
     }
   }
 
+  it should "find half the samples clipped, and tops clipped for a sample or two a period, as clipping alone" in {
+    // another generator's 1.0 clipped at 0.7 on both channels (half the samples): the fit stopped after 12 refits at 10
+    // LSB rms and named harmonics 3, 5 and 7; tops clipped by 12 LSB at 28 kHz and 2 MS/s were five "glitches" and INL
+    val pile = explain(FringeGenerator.recording(FringeGenerator.Spec(n = 200000, fs = 1e6, motion = "chirp", f0 = 1e3, f1 = 20e3,
+      amp = 1.0, offS = 0, offC = 0, gainC = 1.0, clipFs = 0.7, seed = 61)))
+    val flat = explain(FringeGenerator.recording(FringeGenerator.Spec(n = 200000, fs = 1e6, motion = "constant", f0 = 3e3,
+      amp = 1.0, offS = 0, offC = 0, gainC = 1.0, clipFs = 0.7, noiseLsb = 0.3, noiseAfterLsb = 1.0, seed = 62)))
+    val tops = explain(FringeGenerator.recording(FringeGenerator.Spec(n = 200000, fs = 2e6, motion = "constant", f0 = 28e3,
+      amp = 0.8, offS = 0.006, offC = -0.004, clipFs = 0.8, noiseLsb = 0.3, noiseAfterLsb = 1.0, seed = 63)))
+    for ((name, r, level) <- Seq(("half, pile-up", pile, 0.7), ("half, noise after", flat, 0.7), ("tops at 28 kHz", tops, 0.8))) {
+      info(s"$name: ${describe(r)}")
+      withClue(s"$name: ${describe(r)}; misfit ${r.misfit.map(_.summary)}") {
+        r.findings should not be empty
+        r.findings.map(_.effect).distinct shouldBe Seq("clipping")
+        for (f <- r.findings; k <- Seq("high_fs", "low_fs") if f.params.contains(k)) math.abs(f.params(k)) shouldBe level +- 0.001
+        r.misfit shouldBe empty
+        r.notes.exists(_.contains("isolated sample")) shouldBe false
+      }
+    }
+  }
+
   it should "find amplifier clipping below the ADC range" in {
     val f = first(explain(sim(Seq(EffectSpec("clipping", Map("high_fs" -> 0.8), "sin")))), "clipping")
     f.channel shouldBe "sin"

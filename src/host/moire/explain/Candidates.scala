@@ -691,15 +691,21 @@ final class Candidates(val engine: SignalEngine) {
         }
       }
       val h = new Array[Double](4 * bits)
-      val hist = Par.sums(n, 2 * size + 4 * bits, 1 << 18) { (a, z, m) =>
+      // (samples weighted out left out: ten glitches to random codes set the stuck bit 2 and hid it)
+      val ex = excluded
+      val hist = Par.sums(n, 2 * size + 4 * bits + 1, 1 << 18) { (a, z, m) =>
         var i = a
         while (i < z) {
-          val c = codes(i); val q = adc.pins(adc.signedCode(rp(i) - rr(i)).code)
-          if (c >= 0 && c < size) m(c) += 1 else addBits(m, 2 * size, c, 1)
-          if (q >= 0 && q < size) m(size + q) += 1 else addBits(m, 2 * size + bits, q, 1)
+          if (ex == null || !ex(i)) {
+            val c = codes(i); val q = adc.pins(adc.signedCode(rp(i) - rr(i)).code)
+            if (c >= 0 && c < size) m(c) += 1 else addBits(m, 2 * size, c, 1)
+            if (q >= 0 && q < size) m(size + q) += 1 else addBits(m, 2 * size + bits, q, 1)
+            m(2 * size + 4 * bits) += 1
+          }
           i += 1
         }
       }
+      val nIn = hist(2 * size + 4 * bits).toLong
       // the layout of h: set in codes, set in predictions, unlike the next (codes), unlike the next (predictions)
       var c = 0
       while (c < size) {
@@ -712,8 +718,8 @@ final class Candidates(val engine: SignalEngine) {
       val m1 = counts(0); val p1 = counts(1); val diffM = counts(2); val diffP = counts(3)
       for (b <- coarseBits until bits) {
         if (m1(b) == 0 && p1(b) > need) out ++= faultCand(Fault(ch, b, 0, -1))
-        else if (m1(b) == n && n - p1(b) > need) out ++= faultCand(Fault(ch, b, 1, -1))
-        if (b + 1 < bits && diffM(b) == 0 && diffP(b) > need && m1(b) > 0 && m1(b) < n) out ++= faultCand(Fault(ch, b, -1, b + 1))
+        else if (m1(b) == nIn && nIn - p1(b) > need) out ++= faultCand(Fault(ch, b, 1, -1))
+        if (b + 1 < bits && diffM(b) == 0 && diffP(b) > need && m1(b) > 0 && m1(b) < nIn) out ++= faultCand(Fault(ch, b, -1, b + 1))
       }
     }
     out.result()

@@ -12,6 +12,8 @@ object Glitches {
   val Near = 4.0
   /** Samples the noise width is the median of, at most (every k-th). */
   val SdSamples: Int = 1 << 18
+  /** Steps from its channel's extreme code within which a sample with the prediction beyond it is a clipped top. */
+  val AtExtreme = 3.0
   /** Consecutive samples a glitch lasts at most. */
   val MaxRun = 3
   /** Glitches are at most this share of the samples (more is no glitch: a misfit or a wrong model). */
@@ -26,9 +28,16 @@ object Glitches {
   def find(e: SignalEngine): Seq[(Int, Double)] = {
     val n = e.n
     if (n < 64) return Nil
-    def off(y: Array[Double], rep: Array[Double], res: Array[Double], cen: Array[Double])(i: Int): Double =
-      if (cen != null && !cen(i).isNaN) math.max(0.0, cen(i)) else y(i) - (rep(i) - res(i))
-    val ds = off(e.ys, e.repS, e.resS, e.cens.censS) _; val dc = off(e.yc, e.repC, e.resC, e.cens.censC) _
+    // a sample at its channel's extreme (within `AtExtreme` steps) with the prediction beyond it is a top the signal
+    // was clipped at, no glitch: at high speed a clipped top lasts a sample or two, its neighbours on the signal
+    val (loS, hiS) = Doubles.range(n)(e.ys(_)); val (loC, hiC) = Doubles.range(n)(e.yc(_))
+    def off(y: Array[Double], rep: Array[Double], res: Array[Double], cen: Array[Double], hi: Double, lo: Double)(i: Int): Double =
+      if (cen != null && !cen(i).isNaN) math.max(0.0, cen(i))
+      else {
+        val p = rep(i) - res(i); val v = y(i)
+        if ((v >= hi - AtExtreme * e.step && p >= v) || (v <= lo + AtExtreme * e.step && p <= v)) 0.0 else v - p
+      }
+    val ds = off(e.ys, e.repS, e.resS, e.cens.censS, hiS, loS) _; val dc = off(e.yc, e.repC, e.resC, e.cens.censC, hiC, loC) _
     // the median absolute residual of each channel, as a Gaussian's sd
     // (over at most `SdSamples` spread over the record: it is looked for after each finding, and at 20 M samples two
     // medians of all samples cost a second)
@@ -69,19 +78,20 @@ object Glitches {
   }
 
   /** Share of a fringe period's circle (the mean resultant length) above which samples off the signal lie at one
-    * fringe phase (or at two half a period apart): the fringe's own shape, no glitch.
+    * fringe phase (or at two half a period apart, or four a quarter apart): the fringe's own shape, no glitch.
     */
   val Locked = 0.9
   /** Glitches (runs of samples) that must gather at one phase before they are taken for the fringe's own shape. */
   val LockedRuns = 5
 
-  /** `LockedRuns` or more glitches whose fringe phases (or twice them) gather at one angle: a clipped top at high speed
-    * lasts one to three samples with its neighbours on the signal, as a glitch does, but at the same phase each period
-    * (another generator's sin clipped 12 LSB at 28 kHz: five "glitches", all at 90 degrees, hid the clipping).
+  /** `LockedRuns` or more glitches whose fringe phases (or twice or four times them: the extremes of either channel)
+    * gather at one angle: a clipped top at high speed lasts one to three samples with its neighbours on the signal, as
+    * a glitch does, but at the same phase each period (another generator's sin clipped 12 LSB at 28 kHz: five
+    * "glitches", all at 90 degrees, hid the clipping).
     */
   private def lockedToFringe(e: SignalEngine, at: Seq[Int]): Boolean = {
     val runs = at.indices.filter(j => j == 0 || at(j) != at(j - 1) + 1).map(at(_))
-    runs.size >= LockedRuns && Seq(1, 2).exists { k =>
+    runs.size >= LockedRuns && Seq(1, 2, 4).exists { k =>
       val (c, s) = runs.foldLeft((0.0, 0.0)) { case ((c, s), i) => val a = k * e.angle(i); (c + math.cos(a), s + math.sin(a)) }
       math.hypot(c, s) / runs.size > Locked
     }
@@ -94,7 +104,7 @@ object Glitches {
     val had = known.map(_._1).toSet
     val fresh = find(e).filterNot(g => had(g._1))
     if (fresh.isEmpty || known.size + fresh.size > MaxShare * e.n) known
-    else { e.exclude(union(e.excluded, mask(e.n, fresh))); (known ++ fresh).sortBy(_._1) }
+    else { e.badData = union(e.badData, mask(e.n, fresh)); e.exclude(e.excluded); (known ++ fresh).sortBy(_._1) }
   }
 
   /** The mask of the glitches (null: none). */

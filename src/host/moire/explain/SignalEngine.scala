@@ -125,10 +125,17 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
   // the prediction, so they carry no residual; null when every sample is in the fit.
   private var _excluded: Array[Boolean] = null
   private var _excludedCount = 0
+  /** Runs of samples the data lost (`Dropouts`), weighted out of the phase's steps as well (null: none). */
+  var lost: Array[Boolean] = null
   def excluded: Array[Boolean] = _excluded
   def excludedCount: Int = _excludedCount
-  /** Weights the samples where `mask` is true out of the fit (null: none) and refits. */
-  def exclude(mask: Array[Boolean]): Unit = {
+  /** Samples of bad data (glitches, runs lost) that every exclusion keeps out (null: none). Before, the windows the
+    * model did not follow replaced them: another generator's 19 glitches came back into the fit and made 8 misfit windows.
+    */
+  var badData: Array[Boolean] = null
+  /** Weights the samples where `mask` (or `badData`) is true out of the fit (null: none) and refits. */
+  def exclude(mask0: Array[Boolean]): Unit = {
+    val mask = Glitches.union(mask0, badData)
     _excluded = mask; _excludedCount = if (mask == null) 0 else mask.count(identity)
     if (mask != null) { _repS = repS.clone(); _repC = repC.clone(); _cens = _cens.copy(s = _repS, c = _repC); holdExcluded() }
     converge()
@@ -767,14 +774,17 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
       if (it > 0 && refineTraj && traj.isInstanceOf[RefTrajectory]) jointStep(traj.asInstanceOf[RefTrajectory])
       else if (it > 0 && refineTraj) Laps("refit: trajectory and fundamentals") {
         // the phase residual of each sample (periods) weighted by its slope's square, read where the fit sums it
-        val sk = deepCensored
+        val sk = deepCensored; val ex = lost
         def w(i: Int): Double = { val ww = gS(i) * gS(i) + gC(i) * gC(i); if (ww > 0) ww else 0.0 }
         def d(i: Int): Double = (resS(i) * gS(i) + resC(i) * gC(i)) / w(i) / (2 * math.Pi)
         Laps("traj: addFit")(traj match {
           case t: Trajectory => t.addFitBy { (i, o) =>
             // a channel held at a saturation level far below the prediction tells nothing of the phase there: its
             // slope left out (held at the prediction, it anchored the phase where it was)
-            val gs = if (sk != null && sk.s(i)) 0.0 else gS(i); val gc = if (sk != null && sk.c(i)) 0.0 else gC(i)
+            // (a run of samples lost, held at the prediction, anchored the phase where it was too: a hold of 40 samples
+            // left the default fit's stopped phase and a misfit window of 32 x the noise floor)
+            val out = ex != null && ex(i)
+            val gs = if (out || (sk != null && sk.s(i))) 0.0 else gS(i); val gc = if (out || (sk != null && sk.c(i))) 0.0 else gC(i)
             val ww = gs * gs + gc * gc
             if (ww > 0) { o(0) = (resS(i) * gs + resC(i) * gc) / ww / (2 * math.Pi); o(1) = ww } else { o(0) = 0.0; o(1) = 0.0 }
           }

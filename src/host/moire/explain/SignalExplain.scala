@@ -95,9 +95,9 @@ object SignalExplain {
     // (a second look once they are out: a glitch pulls the fit's phase, and its neighbours' residual with it)
     // runs of samples lost (both channels held still, or at an end code, while the signal moves on): out, and named
     val dropouts = Dropouts.find(e)
-    if (dropouts.nonEmpty) e.exclude(Dropouts.mask(e.n, dropouts))
+    if (dropouts.nonEmpty) { e.lost = Dropouts.mask(e.n, dropouts); e.badData = e.lost; e.exclude(null) }
     var glitches = Glitches.find(e)
-    if (glitches.nonEmpty) { e.exclude(Glitches.union(e.excluded, Glitches.mask(e.n, glitches))); glitches = Glitches.more(e, glitches) }
+    if (glitches.nonEmpty) { e.badData = Glitches.union(e.badData, Glitches.mask(e.n, glitches)); e.exclude(null); glitches = Glitches.more(e, glitches) }
     val glitchMask = Glitches.union(Glitches.mask(e.n, glitches), Dropouts.mask(e.n, dropouts))
     val baseRms = e.rms; val baseBic = e.bic
     // the noise of the default part where the model does not follow somewhere (or nowhere): the floor, not the misfit
