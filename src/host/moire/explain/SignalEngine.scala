@@ -825,8 +825,11 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
       var best = (start, t.len); var bestBack = back
       for (l <- segmentLens.filter(_ > t.len)) {
         bestBack.get(); val nt = new Trajectory(n, l, fs); _traj = nt; nt.addFit(ph, null); evalTraj(); converge()
-        if (SignalEngine.debug) System.err.println(f"segments of $l samples again: BIC $bic%.1f against $start%.1f")
-        if (bic < best._1) { best = (bic, l); bestBack = save() }
+        // (and the longer segments must follow the motion: a residual along the signals' path is motion they miss, which
+        // the next effects' fits would take up; a clipped slow back-and-forth kept longer ones by BIC and ended misfit)
+        val follows = alongOverAcross <= SignalEngine.MotionMisfit
+        if (SignalEngine.debug) System.err.println(f"segments of $l samples again: BIC $bic%.1f against $start%.1f, residual along / across the fringe $alongOverAcross%.3f")
+        if (bic < best._1 && follows) { best = (bic, l); bestBack = save() }
       }
       if (best._2 == t.len || bestBack.isEmpty) { back.get(); false } else { bestBack.get(); true }
     case _ => false

@@ -202,7 +202,12 @@ object SignalExplain {
                 // with the effect fitted, glitches its misfit hid stand out; the motion may not need the shorter
                 // segments its misfit asked for
                 glitches = Glitches.more(e, glitches)
-                if (e.relengthen()) { researchWarmup(e); lap("longer segments") }
+                // (only after a change in time, which the default fit's phase may have followed as motion: after
+                // clipping, the longer segments won by BIC while the other channel's clipping was still in the residual,
+                // and a slow back-and-forth ended misfit)
+                if (Effects(c1.effect).exists(x => x.domain == effects.Domain.Settling || x.domain == effects.Domain.Time) && e.relengthen()) {
+                  researchWarmup(e); lap("longer segments")
+                }
             }
         }
       }
