@@ -136,7 +136,7 @@ object Recorder {
     val warnings = lossWarning(stats).toSeq
     warnings.foreach(warn)
     // the link gone mid-recording (a cable pulled): the records that arrived are in the file, and the command fails
-    failed.foreach(e => throw new StreamError(f"${e.getMessage.stripSuffix(".")} after $elapsed%.2f s of ${o.seconds}%.0f; $file holds the ${rec.rows} records received"))
+    failed.foreach(e => throw new StreamError(f"${e.getMessage.stripSuffix(".")} after $elapsed%.2f s of ${num(o.seconds)}; $file holds the ${rec.rows} records received"))
     RecordResult(file, rec.rows, stats, s, meta, warnings)
   }
 
