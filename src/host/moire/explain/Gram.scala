@@ -18,19 +18,15 @@ object Gram {
     @inline def c(i: Int): Boolean = (cC != null && cC(i) < belowC) || (heldC != null && heldC(i))
   }
 
-  /** The runs of rows in [from, to) a channel keeps, as from0, to0, from1, to1, ... (`cen` and `held` null: all). A
-    * row is left out where cen(i) < below or held(i) (the Skip's).
-    */
-  private[explain] def kept(cen: Array[Double], below: Double, held: Array[Boolean], from: Int, to: Int): Array[Int] =
-    if (cen == null && held == null) Array(from, to) else {
-      @inline def out(i: Int) = (cen != null && cen(i) < below) || (held != null && held(i))
-      val b = Array.newBuilder[Int]; var i = from
-      while (i < to) {
-        while (i < to && out(i)) i += 1
-        if (i < to) { val a = i; while (i < to && !out(i)) i += 1; b += a; b += i }
-      }
-      b.result()
+  /** The runs of rows in [from, to) a channel keeps (those `out` does not leave out), as from0, to0, from1, to1, ... */
+  private[explain] def kept(out: Int => Boolean, from: Int, to: Int): Array[Int] = {
+    val b = Array.newBuilder[Int]; var i = from
+    while (i < to) {
+      while (i < to && out(i)) i += 1
+      if (i < to) { val a = i; while (i < to && !out(i)) i += 1; b += a; b += i }
     }
+    b.result()
+  }
 
   /** g(i)(j) = sum x_i x_j and r(i) = sum x_i y over the rows (all, or the rows `idx` when it is not null), each
     * channel's rows that `skip` leaves out left out (null: none).
@@ -101,7 +97,7 @@ object Gram {
     val k = as.length
     if (skip != null) {
       // each channel's sums over the runs of rows it keeps
-      val rs = kept(skip.cS, skip.belowS, skip.heldS, lo, hi); val rc = kept(skip.cC, skip.belowC, skip.heldC, lo, hi)
+      val rs = kept(skip.s, lo, hi); val rc = kept(skip.c, lo, hi)
       def over(r: Array[Int], a: Array[Double], da: Int, b: Array[Double], db: Int): Double = {
         var s = 0.0; var t = 0; while (t < r.length) { s += dotAt(a, da, b, db, r(t), r(t + 1)); t += 2 }; s
       }
