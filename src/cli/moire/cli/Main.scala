@@ -217,16 +217,20 @@ object Main {
               @arg(doc = "one self-contained HTML report (plots inline) of the one recording") html: Option[String] = None,
               @arg(doc = "folder for one HTML report per recording") htmlDir: Option[String] = None,
               @arg(doc = "materiality floor in LSB: a finding changes the signal by at least this much (default 0.25)") minEffectLsb: Option[Double] = None,
-              @arg(doc = "materiality floor as a fraction of the noise rms (default 0.1)") minEffectNoise: Option[Double] = None): Unit =
-    moire.explain.ExplainCmd.explainArgs(files.value, jsonDir, plots, model, quiet.value, subdiv, noRtl.value, html, htmlDir, minEffectLsb, minEffectNoise)
+              @arg(doc = "materiality floor as a fraction of the noise rms (default 0.1)") minEffectNoise: Option[Double] = None,
+              @arg(doc = "a longer record is searched on every d-th sample and confirmed on the others (default 1000000; 0: search every sample)") searchSamples: Option[String] = None): Unit =
+    moire.explain.ExplainCmd.explainArgs(files.value, jsonDir, plots, model, quiet.value, subdiv, noRtl.value, html, htmlDir, minEffectLsb, minEffectNoise,
+      searchSamples.map(moire.explain.ExplainCmd.searchSamplesOf).getOrElse(moire.explain.Interleaved.SearchSamples))
 
   @main(doc = "Benchmark: simulate and explain one recording; print the time, samples per second and peak heap (also per million samples) of reading and of the whole explain.")
   def explainBench(@arg(doc = "samples in the recording (default 1000000)") samples: Int = 1000000,
                    @arg(doc = "folder for the recording, JSON and plots (default: a temporary folder)") out: Option[String] = None,
                    @arg(doc = "explain this moire-recording v1 file instead of a simulated one (not with --samples)") recording: Option[String] = None,
-                   @arg(doc = "explain the file this many times in one JVM, each run's figures printed: the first includes the JIT's compiling, the others show the fit alone (1..10, default 1)") runs: Int = 1): Unit =
+                   @arg(doc = "explain the file this many times in one JVM, each run's figures printed: the first includes the JIT's compiling, the others show the fit alone (1..10, default 1)") runs: Int = 1,
+                   @arg(doc = "as explain's: a longer record is searched on every d-th sample and confirmed on the others (default 1000000; 0: search every sample)") searchSamples: Option[String] = None): Unit =
     if (recording.isDefined && given("--samples").nonEmpty) throw new UsageError("--samples sets the simulated recording's length; with --recording the file's length is taken: leave --samples out")
-    else moire.explain.ExplainCmd.bench(samples, out.map(folderName(_)), recording, println(_), runs)
+    else moire.explain.ExplainCmd.bench(samples, out.map(folderName(_)), recording, println(_), runs,
+      searchSamples.map(moire.explain.ExplainCmd.searchSamplesOf).getOrElse(moire.explain.Interleaved.SearchSamples))
 
   @main(doc = "Write a board project: the board's top in Verilog inside its vendor project, and the command to run next.")
   def board(@arg(doc = "board name, one of the boards below (also accepted as the first word after board)") name: String,

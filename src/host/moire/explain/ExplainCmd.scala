@@ -71,7 +71,7 @@ object ExplainCmd {
   /** Explains each file; writes `<stem>.json` into jsonDir and PNGs into plotDir. Returns the text reports. */
   def explain(files: Seq[String], jsonDir: Option[String], plotDir: Option[String], modelFile: Option[String], quiet: Boolean,
               rtl: Option[Seq[String]] = Some(Nil), html: Option[String] = None, htmlDir: Option[String] = None,
-              materiality: Materiality = Materiality()): Seq[Report] = {
+              materiality: Materiality = Materiality(), searchSamples: Int = Interleaved.SearchSamples): Seq[Report] = {
     if (files.isEmpty) throw new ExplainError("explain: name at least one recording file")
     if (html.isDefined && files.size > 1) throw new ExplainError(s"--html names one file, but ${files.size} recordings were given; use --html-dir DIR (one DIR/<name>.html each)")
     if (html.isDefined && htmlDir.isDefined) throw new ExplainError("give --html FILE or --html-dir DIR, not both")
@@ -114,7 +114,7 @@ object ExplainCmd {
     // Every file gets its report or its one-line error; the command fails after all were tried.
     def htmlOf(p: os.Path) = html.map(os.Path(_, os.pwd)).orElse(htmlDir.map(d => os.Path(d, os.pwd) / s"${moire.files.Stem.of(p)}.html"))
     def one(p: os.Path, progress: Progress, say: String => Unit) =
-      explainOne(p, givenEffects, jsonDir, plotDir, progress, say, rtl, htmlOf(p), materiality)
+      explainOne(p, givenEffects, jsonDir, plotDir, progress, say, rtl, htmlOf(p), materiality, searchSamples)
     val results = if (paths.size > 1) batch(paths, quiet, one) else {
       val p = paths.head
       val r = one(p, if (quiet) Progress.none else Progress.bar(moire.files.Stem.of(p)), s => if (!quiet) System.err.println(s"explain: $s"))
@@ -149,7 +149,7 @@ object ExplainCmd {
 
   private def explainOne(p: os.Path, givenEffects: Seq[EffectSpec], jsonDir: Option[String], plotDir: Option[String],
                          progress: Progress, say: String => Unit, rtl: Option[Seq[String]], html: Option[os.Path],
-                         materiality: Materiality): Report = {
+                         materiality: Materiality, searchSamples: Int): Report = {
     val kind = kindOf(p)
     val stem = moire.files.Stem.of(p)
     // plots go to --plots, or (for the HTML alone) to a temporary folder
@@ -164,13 +164,16 @@ object ExplainCmd {
       } else {
         val rec = Recording.read(p)
         checkSignals(p, rec)
-        val r = SignalExplain.run(p.toString, rec, givenEffects, progress, materiality = materiality)
+        // the interpolation error and plots from the searched engine (a long record's subsample, `Interleaved`)
+        def show(r: SignalExplain.Result): Unit = {
+          val t0 = System.nanoTime()
+          val ie = Laps("interpolation error")(InterpolationError.of(r.engine.rec, r.engine))
+          plotFolder.foreach(d => plotFiles = Laps("plots")(Plots.signals(r, d, stem, ie)))
+          extra = extra.filterNot(_._1 == "interpolation_error") :+ ("interpolation_error" -> ie.json)
+          if (sys.props.contains("moire.timing")) System.err.println(f"interpolation error and plots ${(System.nanoTime() - t0) / 1e6}%.0f ms")
+        }
+        val r = SignalExplain.run(p.toString, rec, givenEffects, progress, materiality = materiality, searchSamples = searchSamples, searched = show)
         progress.close()
-        val t0 = System.nanoTime()
-        val ie = Laps("interpolation error")(InterpolationError.of(rec, r.engine))
-        plotFolder.foreach(d => plotFiles = Laps("plots")(Plots.signals(r, d, stem, ie)))
-        extra :+= "interpolation_error" -> ie.json
-        if (sys.props.contains("moire.timing")) System.err.println(f"interpolation error and plots ${(System.nanoTime() - t0) / 1e6}%.0f ms")
         // Board outputs (a `position` column) against the RTL run on the recorded codes.
         val checked = rtl.filter(_ => rec.extra.contains("position")).map { opts =>
           val (f, notes) = BoardCheck.run(p.toString, rec, opts, say)
@@ -239,13 +242,14 @@ object ExplainCmd {
   /** Options may also follow the file names (mainargs puts everything after the first file into `rest`). */
   def explainArgs(rest: Seq[String], jsonDir: Option[String], plots: Option[String], model: Option[String], quiet: Boolean,
                   subdiv: Option[String] = None, noRtl: Boolean = false, html: Option[String] = None, htmlDir: Option[String] = None,
-                  minEffectLsb: Option[Double] = None, minEffectNoise: Option[Double] = None): Unit = {
+                  minEffectLsb: Option[Double] = None, minEffectNoise: Option[Double] = None,
+                  searchSamples: Int = Interleaved.SearchSamples): Unit = {
     // help where --help or -h is a word of its own, not an option's value (`--subdiv --help` is --subdiv's, refused there)
-    val valued = Set("--json-dir", "--plots", "--model", "--subdiv", "--html", "--html-dir", "--min-effect-lsb", "--min-effect-noise")
+    val valued = Set("--json-dir", "--plots", "--model", "--subdiv", "--html", "--html-dir", "--min-effect-lsb", "--min-effect-noise", "--search-samples")
     if (rest.indices.exists(k => (rest(k) == "--help" || rest(k) == "-h") && !(k > 0 && valued(rest(k - 1))))) { println(Usage); return }
     var j = jsonDir; var p = plots; var m = model; var q = quiet; val files = Seq.newBuilder[String]
     var h = html; var hd = htmlDir
-    var sd = subdiv; var nr = noRtl; var ml = minEffectLsb; var mn = minEffectNoise
+    var sd = subdiv; var nr = noRtl; var ml = minEffectLsb; var mn = minEffectNoise; var ss = searchSamples
     var i = 0
     def value(o: String) = { i += 1; rest.lift(i).getOrElse(throw new ExplainError(s"$o needs a value")) }
     def number(o: String): Double = { val v = value(o); moire.numbers.Decimal.double(v).getOrElse(throw new ExplainError(s"$o needs a number, got '$v'")) }
@@ -261,6 +265,7 @@ object ExplainCmd {
         case "--html-dir" => hd = Some(value("--html-dir"))
         case "--min-effect-lsb" => ml = Some(number("--min-effect-lsb"))
         case "--min-effect-noise" => mn = Some(number("--min-effect-noise"))
+        case "--search-samples" => ss = searchSamplesOf(value("--search-samples"))
         case o if o.startsWith("--") => throw new ExplainError(s"Unknown argument: $o (see --help)")
         case f => files += f
       }
@@ -271,7 +276,16 @@ object ExplainCmd {
       s"--subdiv takes the subdivider's emit-subdiv options as one quoted word (e.g. --subdiv \"--counts 4096\"), got '$v'"))
     val floor = try Materiality(ml.getOrElse(Materiality.MinLsb), mn.getOrElse(Materiality.MinNoise))
       catch { case e: IllegalArgumentException => throw new ExplainError(e.getMessage.stripPrefix("requirement failed: ")) }
-    explain(files.result(), j, p, m, q, if (nr) None else Some(sd.toSeq.flatMap(_.trim.split("\\s+")).filter(_.nonEmpty)), h, hd, floor)
+    explain(files.result(), j, p, m, q, if (nr) None else Some(sd.toSeq.flatMap(_.trim.split("\\s+")).filter(_.nonEmpty)), h, hd, floor, ss)
+  }
+
+  /** The least `--search-samples` (a subsample shorter than this holds too few fringe periods to search). */
+  val MinSearchSamples = 10000
+  /** `--search-samples N`: N in MinSearchSamples..2^31-1, or 0 (every sample searched, however long the record). */
+  def searchSamplesOf(v: String): Int = v.trim.toIntOption match {
+    case Some(0) => Int.MaxValue
+    case Some(k) if k >= MinSearchSamples => k
+    case _ => throw new ExplainError(s"--search-samples needs 0 (search every sample) or a whole number of samples from $MinSearchSamples to ${Int.MaxValue}, got '${moire.files.Shown.text(v)}'")
   }
 
   val Usage: String =
@@ -291,6 +305,9 @@ object ExplainCmd {
       |    --no-rtl             do not compare board outputs with the RTL
       |    --min-effect-lsb X   materiality floor: a finding changes the signal by at least X LSB (default 0.25) ...
       |    --min-effect-noise F ... and F times the noise rms (default 0.1); smaller but significant: `negligible`
+      |    --search-samples N   a record of more than N samples (default 1000000) is searched on every d-th sample and
+      |                         the model found is fitted again on the other d - 1 interleaved subsamples: its parameters
+      |                         combined over all samples, or all samples searched where they disagree; 0: search every sample
       |  Effects (the catalogue; docs/explain.md says what each is):
       |""".stripMargin + effects.Effects.help
 
@@ -313,7 +330,8 @@ object ExplainCmd {
     * `recording`, and explains it; `say` gets two lines: reading (with the per-file checks) and the whole
     * explain, each with its time, the peak heap and the peak heap per million samples.
     */
-  def bench(samples: Int, out: Option[String], recording: Option[String], say: String => Unit, runs: Int = 1): Unit = {
+  def bench(samples: Int, out: Option[String], recording: Option[String], say: String => Unit, runs: Int = 1,
+            searchSamples: Int = Interleaved.SearchSamples): Unit = {
     if (recording.isEmpty && (samples < BenchMinSamples || samples > BenchMaxSamples))
       throw new ExplainError(s"--samples must be in $BenchMinSamples..$BenchMaxSamples, got $samples")
     if (runs < 1 || runs > BenchMaxRuns) throw new ExplainError(s"--runs must be in 1..$BenchMaxRuns, got $runs")
@@ -321,11 +339,11 @@ object ExplainCmd {
     // without --out the recording, JSON and plots go to a temporary folder, removed at the end (a 20 M recording is 180 MB)
     // named by the process: a test counts its own (other processes' benches come and go beside it)
     val temp = if (out.isEmpty) Some(os.temp.dir(prefix = s"moire-bench-${ProcessHandle.current().pid()}-", deleteOnExit = false)) else None
-    try benchIn(out.map(os.Path(_, os.pwd)).orElse(temp).get, samples, recording, say, runs)
+    try benchIn(out.map(os.Path(_, os.pwd)).orElse(temp).get, samples, recording, say, runs, searchSamples)
     finally temp.foreach(d => try os.remove.all(d) catch { case _: java.io.IOException => () })
   }
 
-  private def benchIn(dir: os.Path, samples: Int, recording: Option[String], say: String => Unit, runs: Int): Unit = {
+  private def benchIn(dir: os.Path, samples: Int, recording: Option[String], say: String => Unit, runs: Int, searchSamples: Int): Unit = {
     val file = recording.map { f =>
       val p = os.Path(f, os.pwd)
       moire.files.PathKind.notAFile(p).foreach(m => throw new ExplainError(m))
@@ -343,7 +361,8 @@ object ExplainCmd {
     // the first run in a new JVM (its JIT compiles the code as it runs), then the same file again in the same JVM
     for (k <- 1 to runs) {
       val cpu0 = cpuSeconds
-      val (rep, s, peak) = peakHeap(explain(Seq(file.toString), Some((dir / "json").toString), Some((dir / "plots").toString), None, quiet = runs > 1 && k > 1).head)
+      val (rep, s, peak) = peakHeap(explain(Seq(file.toString), Some((dir / "json").toString), Some((dir / "plots").toString), None, quiet = runs > 1 && k > 1,
+        searchSamples = searchSamples).head)
       val cpu = cpuSeconds - cpu0
       val which = if (runs == 1) "" else if (k == 1) s"run 1 of $runs (new JVM): " else s"run $k of $runs (same JVM): "
       say(f"explain-bench: $which$n samples explained in $s%.1f s (read, fit, JSON, plots) = ${n / s}%.0f samples/s, ${1e6 * s / n}%.1f us per sample; " +

@@ -49,7 +49,7 @@ object SignalExplain {
 
   /** `rerun`: the windows where the model does not follow, when the search is to be made again without them. */
   final case class Result(report: Report, engine: SignalEngine, before: Snapshot, steps: Seq[(Finding, Snapshot, Snapshot)],
-                          rerun: Seq[Adequacy.Window] = Nil)
+                          rerun: Seq[Adequacy.Window] = Nil, glitches: Seq[(Int, Double)] = Nil, dropouts: Seq[(Int, Int)] = Nil)
 
   /** The backward model of given effects; an effect named twice is one term. */
   def specOf(model: Seq[EffectSpec]): ModelSpec = {
@@ -57,11 +57,27 @@ object SignalExplain {
     sp.copy(terms = sp.terms.distinct, faults = sp.faults.distinct, clips = sp.clips.distinct)
   }
 
-  /** Explains a recording. Adequacy first: where the final model does not follow the signal in some windows but does
-    * in others, the search is made again with those windows weighted out (effects fitted and judged where it follows).
+  /** Explains a recording. A long one is searched on an interleaved subsample and confirmed on the others
+    * (`Interleaved`; `searchSamples` is the longest searched whole). `searched` gets the search's result while its
+    * engine and snapshots are alive (plots are made from them); a long record's result returned holds them no more
+    * (null: the confirmation's fits need their memory).
     */
   def run(file: String, rec: Recording, model: Seq[EffectSpec], progress: Progress, maxFindings: Int = 8,
-          holdBytes: Long = Runtime.getRuntime.maxMemory / 8, materiality: Materiality = Materiality()): Result = {
+          holdBytes: Long = Runtime.getRuntime.maxMemory / 8, materiality: Materiality = Materiality(),
+          searchSamples: Int = Interleaved.SearchSamples, searched: Result => Unit = _ => ()): Result = {
+    val t0 = System.nanoTime()
+    def all(r: Recording) = whole(file, r, model, progress, maxFindings, holdBytes, materiality)
+    val d = Interleaved.factor(rec, searchSamples)
+    val res = if (d == 1) { val r = all(rec); searched(r); r } else Interleaved.explain(file, rec, d, progress, holdBytes, all, searched)
+    res.copy(report = res.report.copy(seconds = (System.nanoTime() - t0) / 1e9))
+  }
+
+  /** Explains a recording on all its samples. Adequacy first: where the final model does not follow the signal in some
+    * windows but does in others, the search is made again with those windows weighted out (effects fitted and judged
+    * where it follows).
+    */
+  private def whole(file: String, rec: Recording, model: Seq[EffectSpec], progress: Progress, maxFindings: Int,
+                    holdBytes: Long, materiality: Materiality): Result = {
     val t0 = System.nanoTime()
     var res = search(file, rec, model, progress, maxFindings, holdBytes, materiality, Nil, 0)
     var depth = 0
@@ -94,10 +110,8 @@ object SignalExplain {
     // isolated samples far off the signal: glitches of the data, out of the fit from here on (and named in the notes)
     // (a second look once they are out: a glitch pulls the fit's phase, and its neighbours' residual with it)
     // runs of samples lost (both channels held still, or at an end code, while the signal moves on): out, and named
-    val dropouts = Dropouts.find(e)
-    if (dropouts.nonEmpty) { e.lost = Dropouts.mask(e.n, dropouts); e.badData = e.lost; e.exclude(null) }
-    var glitches = Glitches.find(e)
-    if (glitches.nonEmpty) { e.badData = Glitches.union(e.badData, Glitches.mask(e.n, glitches)); e.exclude(null); glitches = Glitches.more(e, glitches) }
+    val (dropouts, glitches0) = badData(e)
+    var glitches = glitches0
     val glitchMask = Glitches.union(Glitches.mask(e.n, glitches), Dropouts.mask(e.n, dropouts))
     val baseRms = e.rms; val baseBic = e.bic
     // the noise of the default part where the model does not follow somewhere (or nowhere): the floor, not the misfit
@@ -261,7 +275,16 @@ object SignalExplain {
     val report = Report(file, "signals", baseRms, baseBic, baseParams, located, coarse ++ shown.map(_._1), unexplained, finalRms, finalBic,
       rec.length, (System.nanoTime() - t0) / 1e9, notes(e) ++ Glitches.note(glitches) ++ Dropouts.note(dropouts), Coverage.untested(e, cands.fMin, cands.fMax) ++
         (if (confounded) Identifiable.leftOver(left) else Nil), small, misfit)
-    Result(report, e, before, shown, rerun)
+    Result(report, e, before, shown, rerun, glitches, dropouts)
+  }
+
+  /** Runs of lost samples and isolated glitches of a fitted engine, weighted out of its fit from here on. */
+  private[explain] def badData(e: SignalEngine): (Seq[(Int, Int)], Seq[(Int, Double)]) = {
+    val dropouts = Dropouts.find(e)
+    if (dropouts.nonEmpty) { e.lost = Dropouts.mask(e.n, dropouts); e.badData = e.lost; e.exclude(null) }
+    var glitches = Glitches.find(e)
+    if (glitches.nonEmpty) { e.badData = Glitches.union(e.badData, Glitches.mask(e.n, glitches)); e.exclude(null); glitches = Glitches.more(e, glitches) }
+    (dropouts, glitches)
   }
 
   /** A new linear term's own part of the prediction (its columns times its coefficients): its size. */
@@ -308,7 +331,7 @@ object SignalExplain {
     Effects(c.effect).flatMap(_.unsupported(c, e, cands.fMin, cands.fMax))
 
   /** Parameters of a finding from the final joint fit (linear terms) or the final spec (nonlinear). */
-  private def refresh(f: Finding, e: SignalEngine): Finding = {
+  private[explain] def refresh(f: Finding, e: SignalEngine): Finding = {
     val v = e.meanSquare
     e.termIndex.find { case (t, _) => t.name == f.effect && termMatches(t, f) } match {
       case Some((t, at)) =>

@@ -1,0 +1,188 @@
+package moire.explain
+
+import moire.recording.{Recording, Reference}
+import org.hipparchus.distribution.continuous.ChiSquaredDistribution
+import SignalExplain.Result
+
+/** A long record searched on one interleaved subsample (every d-th sample from the first) and confirmed on the others.
+  * Each other subsample (every d-th from the r-th) is fitted again with the model the search found; the findings'
+  * parameters are combined over all d (inverse-variance means, all samples' precision) and must agree between them.
+  * Where they do not, or a line's phase does not advance between the subsamples as its frequency says (a line above the
+  * subsample's Nyquist frequency, seen at its alias), the record is explained again on all its samples. The subsamples
+  * are whole records at 1/d of the rate: every effect's model is a function of time, the phase and the codes, not of
+  * the sample's neighbours, so each holds every effect of the record over its whole time and speed range.
+  */
+object Interleaved {
+  /** Records longer than this are searched on an interleaved subsample of at most this many samples. */
+  val SearchSamples = 1000000
+  /** The fastest fringe keeps this many samples per period in a subsample, at least (the phase is unwrapped from them). */
+  val MinSamplesPerFringe = 4.0
+  /** Agreement between the subsamples fails at this chi-square tail probability. */
+  val Tail = 1e-4
+
+  /** The subsampling factor for a record: 1 (all samples searched) when it is short or its fringe is too fast. */
+  def factor(rec: Recording, searchSamples: Int): Int = {
+    val n = rec.length
+    if (n <= searchSamples) 1
+    else {
+      val want = (n + searchSamples - 1) / searchSamples
+      val f = fastestFringeHz(rec)
+      val byFringe = if (f > 0) math.floor(rec.sampleRateHz / (MinSamplesPerFringe * f)).toInt else want
+      math.max(1, math.min(want, byFringe))
+    }
+  }
+
+  /** The fastest fringe frequency of a record (Hz): the 99.9th percentile of the phase step between neighbouring samples,
+    * from the signals' angle about their mid-ranges (on pairs a few samples apart, enough for a percentile).
+    */
+  def fastestFringeHz(rec: Recording): Double = {
+    val ys = rec.sin; val yc = rec.cos; val adc = rec.adc; val n = rec.length
+    def mid(a: Array[Int]) = { var lo = Int.MaxValue; var hi = Int.MinValue; var i = 0
+      while (i < n) { val v = adc.fromPins(a(i)); lo = math.min(lo, v); hi = math.max(hi, v); i += 97 }
+      0.5 * (lo + hi) }
+    val (ms, mc) = (mid(ys), mid(yc))
+    val bins = 4096; val h = new Array[Long](bins); var m = 0L; var i = 0
+    def ang(k: Int) = math.atan2(adc.fromPins(ys(k)) - ms, adc.fromPins(yc(k)) - mc)
+    while (i + 1 < n) {
+      var d = math.abs(ang(i + 1) - ang(i)); if (d > math.Pi) d = 2 * math.Pi - d
+      h(math.min(bins - 1, (d / math.Pi * bins).toInt)) += 1; m += 1; i += 7
+    }
+    var k = 0; var c = 0L
+    while (k < bins && c < 0.999 * m) { c += h(k); k += 1 }
+    (k.toDouble / bins) * 0.5 * rec.sampleRateHz
+  }
+
+  /** Every d-th sample from the r-th (and of every extra column), at 1/d of the sample rate. */
+  def pick(rec: Recording, d: Int, r: Int): Recording = {
+    val m = (rec.length - r + d - 1) / d
+    def every[A: scala.reflect.ClassTag](a: Array[A]): Array[A] = Array.tabulate(m)(j => a(j * d + r))
+    val meta = rec.meta ++ rec.meta.get("samples").map(_ => "samples" -> m.toString) ++
+      rec.meta.get("sample_rate_hz").map(_ => "sample_rate_hz" -> (rec.sampleRateHz / d).toString)
+    rec.copy(sampleRateHz = rec.sampleRateHz / d, sin = every(rec.sin), cos = every(rec.cos), meta = meta,
+      extra = rec.extra.map { case (k, v) => k -> every(v) })
+  }
+
+  /** One subsample's fit of the searched model: its findings refreshed, rms, samples, bad data (as rows of the whole
+    * record) and the lines' phases (radian) with their sd.
+    */
+  private final case class Fit(findings: Seq[Finding], rms: Double, n: Int, glitches: Seq[(Int, Double)],
+                               dropouts: Seq[(Int, Int)], lines: Seq[(Double, Double, Double)])
+
+  private def fitOf(e: SignalEngine, found: Seq[Finding], d: Int, r: Int, glitches: Seq[(Int, Double)], dropouts: Seq[(Int, Int)]): Fit = {
+    val v = e.meanSquare
+    // each line's phase on the sin channel: a sin(w t) + b cos(w t) = A sin(w t + atan2(b, a))
+    val lines = e.spec.terms.collect { case t: Term.Interference if e.termIndex.contains(t) =>
+      val at = e.termIndex(t); val (a, b) = (e.sol.beta(at), e.sol.beta(at + 1))
+      val sd = math.sqrt(math.max(0, 0.5 * (e.sol.inv(at)(at) + e.sol.inv(at + 1)(at + 1))) * v)
+      (t.hz, math.atan2(b, a), sd / math.max(1e-300, math.hypot(a, b)))
+    }
+    Fit(found.map(f => SignalExplain.refresh(f, e)), e.rms, e.n, glitches.map { case (i, l) => (i * d + r, l) },
+      dropouts.map { case (a, b) => (a * d + r, (b - 1) * d + r + 1) }, lines)
+  }
+
+  /** The searched subsample's result with its findings confirmed on all the others, or the whole record's (`all`). */
+  def explain(file: String, rec: Recording, d: Int, progress: Progress, holdBytes: Long, all: Recording => Result,
+              searched: Result => Unit): Result = {
+    val r1 = all(pick(rec, d, 0))
+    searched(r1)
+    val found = r1.report.findings.filterNot(_.deltaBic.isNaN)
+    val fit0 = fitOf(r1.engine, found, d, 0, r1.glitches, r1.dropouts); val spec = r1.engine.spec
+    // the searched subsample's engine and snapshots go before the other subsamples are fitted
+    val r0 = r1.copy(engine = null, before = null, steps = r1.steps.map { case (f, _, _) => (f, null, null) })
+    val fits = fit0 +: {
+      progress.phase(s"fit again on the other ${d - 1} of $d interleaved subsamples", d - 1)
+      (1 until d).map { r =>
+        val sub = pick(rec, d, r)
+        val e = new SignalEngine(sub, Reference.of(sub).fold(m => throw new ExplainError(s"$file: $m"), identity), holdBytes)
+        Laps("confirm: default fit")(e.init())
+        val (dropouts, glitches0) = Laps("confirm: bad data")(SignalExplain.badData(e))
+        e.spec = spec; Laps("confirm: converge")(e.converge()); Laps("confirm: settle")(SignalExplain.settle(e))
+        val glitches = Laps("confirm: glitches")(Glitches.more(e, glitches0))
+        val f = fitOf(e, found, d, r, glitches, dropouts)
+        progress.step(1); f
+      }
+    }
+    disagreement(fits, d, rec.sampleRateHz) match {
+      case Some(why) =>
+        val res = all(rec); searched(res)
+        res.copy(report = res.report.copy(notes = res.report.notes :+ (s"explained on all ${rec.length} samples: the model found on every " +
+          s"$d${ordinal(d)} sample did not hold on the other subsamples ($why)")))
+      case None => combined(r0, fits, d, rec.length)
+    }
+  }
+
+  private def ordinal(d: Int): String = if (d % 100 / 10 == 1) "th" else d % 10 match { case 1 => "st"; case 2 => "nd"; case 3 => "rd"; case _ => "th" }
+
+  /** Why the subsamples' fits disagree (a finding's parameter, a line's phase), or None. */
+  private def disagreement(fits: Seq[Fit], d: Int, fs: Double): Option[String] = {
+    val limit = new ChiSquaredDistribution(d - 1).inverseCumulativeProbability(1 - Tail)
+    val params = fits.head.findings.indices.iterator.flatMap { j =>
+      val f = fits.head.findings(j)
+      f.params.keys.toSeq.sorted.iterator.flatMap { k =>
+        val vs = fits.map(_.findings(j).params.getOrElse(k, Double.NaN)); val sd = f.unc.getOrElse(k, Double.NaN)
+        val sds = fits.map(_.findings(j).unc.getOrElse(k, sd))
+        if (vs.exists(_.isNaN)) None
+        else if (!(sds.forall(s => s > 0 && !s.isInfinite))) {
+          if (vs.distinct.size > 1) Some(s"${f.effect} $k: ${vs.distinct.mkString(", ")}") else None
+        } else {
+          val (mean, _, chi2) = pooled(vs, sds)
+          if (chi2 > limit) Some(f"${f.effect} $k: ${vs.min}%.5g..${vs.max}%.5g about $mean%.5g, chi-square $chi2%.1f for ${d - 1} degrees of freedom") else None
+        }
+      }
+    }
+    // a line's phase in subsample r leads subsample 0's by w r / fs (sample r of the whole record is its first)
+    val phases = fits.head.lines.indices.iterator.flatMap { j =>
+      val (hz, p0, s0) = fits.head.lines(j)
+      val chi2 = fits.zipWithIndex.tail.map { case (f, r) =>
+        val (_, p, s) = f.lines(j); val w = p - p0 - 2 * math.Pi * hz * r / fs
+        val dw = w - 2 * math.Pi * math.rint(w / (2 * math.Pi))
+        dw * dw / (s * s + s0 * s0)
+      }.sum
+      if (s0 < 0.3 && chi2 > limit) Some(f"the $hz%.1f Hz line's phase does not advance between the subsamples as its frequency says " +
+        f"(chi-square $chi2%.1f): a line above ${fs / d / 2}%.4g Hz seen at its alias") else None
+    }
+    (params ++ phases).nextOption()
+  }
+
+  /** Runs of rows joined where they overlap or lie less than d rows apart (each subsample sees every d-th row of one). */
+  private def merged(runs: Seq[(Int, Int)], d: Int): Seq[(Int, Int)] =
+    runs.foldLeft(List.empty[(Int, Int)]) {
+      case ((a, b) :: rest, (c, e)) if c < b + d => (a, math.max(b, e)) :: rest
+      case (acc, x) => x :: acc
+    }.reverse
+
+  /** Inverse-variance mean, its sd and the chi-square of the values about it. */
+  private def pooled(vs: Seq[Double], sds: Seq[Double]): (Double, Double, Double) = {
+    val w = sds.map(s => 1 / (s * s)); val sw = w.sum
+    val mean = vs.zip(w).map { case (v, x) => v * x }.sum / sw
+    (mean, 1 / math.sqrt(sw), vs.zip(w).map { case (v, x) => (v - mean) * (v - mean) * x }.sum)
+  }
+
+  private def combined(r0: SignalExplain.Result, fits: Seq[Fit], d: Int, n: Int): SignalExplain.Result = {
+    val rep = r0.report
+    val searched = rep.findings.filterNot(_.deltaBic.isNaN)
+    val found = fits.head.findings.indices.map { j =>
+      val f = fits.head.findings(j)
+      val ps = f.params.map { case (k, _) =>
+        val vs = fits.map(_.findings(j).params(k)); val sds = fits.map(_.findings(j).unc.getOrElse(k, f.unc.getOrElse(k, Double.NaN)))
+        // a parameter the other fits kept at the search's value (a line's frequency, a warm-up's time constant): the search's
+        if (vs.exists(_.isNaN) || !sds.forall(s => s > 0 && !s.isInfinite) || vs.distinct.size == 1) (k, (vs.head, sds.head))
+        else { val (m, s, chi2) = pooled(vs, sds); (k, (m, s * math.sqrt(math.max(1.0, chi2 / (d - 1))))) }
+      }
+      searched(j).copy(params = ps.map { case (k, v) => k -> v._1 }, unc = ps.map { case (k, v) => k -> v._2 })
+    }
+    val byOrig = searched.zip(found).toMap
+    val rms = math.sqrt(fits.map(f => f.rms * f.rms * f.n).sum / fits.map(_.n).sum)
+    val glitches = fits.flatMap(_.glitches).sortBy(_._1); val dropouts = merged(fits.flatMap(_.dropouts).sortBy(_._1), d)
+    val old = (Glitches.note(r0.glitches) ++ Dropouts.note(r0.dropouts)).toSet
+    val others = if (d == 2) "the other interleaved subsample" else s"the other ${d - 1} interleaved subsamples"
+    val note = s"searched on every ${d}${ordinal(d)} sample (${fits.head.n} of $n samples, each at ${d} x the sample interval); the model found " +
+      s"was fitted again on $others, and each finding's parameters, the same on all ${d} within their uncertainty, are their " +
+      "combined values over all samples (a line's frequency and a warm-up's time constant are the search's). The BIC figures " +
+      "and located departures are the searched subsample's; the final rms is over all samples"
+    val report = rep.copy(findings = rep.findings.map(f => byOrig.getOrElse(f, f)), finalRms = rms, samples = n,
+      notes = note +: (rep.notes.filterNot(old) ++ Glitches.note(glitches) ++ Dropouts.note(dropouts)))
+    val steps = r0.steps.map { case (f, b, a) => (found.find(g => g.effect == f.effect && g.channel == f.channel && g.where == f.where).getOrElse(f), b, a) }
+    r0.copy(report = report, steps = steps, glitches = glitches, dropouts = dropouts)
+  }
+}
