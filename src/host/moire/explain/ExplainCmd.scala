@@ -282,9 +282,9 @@ object ExplainCmd {
   /** The least `--search-samples` (a subsample shorter than this holds too few fringe periods to search). */
   val MinSearchSamples = 10000
   /** `--search-samples N`: N in MinSearchSamples..2^31-1, or 0 (every sample searched, however long the record). */
-  def searchSamplesOf(v: String): Int = v.trim.toIntOption match {
-    case Some(0) => Int.MaxValue
-    case Some(k) if k >= MinSearchSamples => k
+  def searchSamplesOf(v: String): Int = moire.numbers.Decimal.double(v.trim).filter(x => x == math.rint(x)) match {
+    case Some(0.0) => Int.MaxValue
+    case Some(k) if k >= MinSearchSamples && k <= Int.MaxValue => k.toInt
     case _ => throw new ExplainError(s"--search-samples needs 0 (search every sample) or a whole number of samples from $MinSearchSamples to ${Int.MaxValue}, got '${moire.files.Shown.text(v)}'")
   }
 
