@@ -63,27 +63,32 @@ object Interleaved {
   }
 
   /** One subsample's fit of the searched model: its findings refreshed, rms, samples, bad data (as rows of the whole
-    * record) and the lines' phases (radian) with their sd.
+    * record), the lines' phases (radian) with their sd, and each line's Gauss-Newton frequency step (Hz) with its sd.
     */
   private final case class Fit(findings: Seq[Finding], rms: Double, n: Int, glitches: Seq[(Int, Double)],
-                               dropouts: Seq[(Int, Int)], lines: Seq[(Double, Double, Double)])
+                               dropouts: Seq[(Int, Int)], lines: Seq[(Double, Double, Double)], steps: Map[Double, (Double, Double)])
 
   private def fitOf(e: SignalEngine, found: Seq[Finding], d: Int, r: Int, glitches: Seq[(Int, Double)], dropouts: Seq[(Int, Int)]): Fit = {
     val v = e.meanSquare
     // each line's phase on the sin channel: a sin(w t) + b cos(w t) = A sin(w t + atan2(b, a))
-    val lines = e.spec.terms.collect { case t: Term.Interference if e.termIndex.contains(t) =>
+    val terms = e.spec.terms.collect { case t: Term.Interference if e.termIndex.contains(t) => t }
+    val lines = terms.map { t =>
       val at = e.termIndex(t); val (a, b) = (e.sol.beta(at), e.sol.beta(at + 1))
       val sd = math.sqrt(math.max(0, 0.5 * (e.sol.inv(at)(at) + e.sol.inv(at + 1)(at + 1))) * v)
       (t.hz, math.atan2(b, a), sd / math.max(1e-300, math.hypot(a, b)))
     }
+    val steps = terms.map { t => val at = e.termIndex(t); t.hz -> effects.Interference.frequencyStep(e, t.hz, e.sol.beta.slice(at, at + 4)) }.toMap
     Fit(found.map(f => SignalExplain.refresh(f, e)), e.rms, e.n, glitches.map { case (i, l) => (i * d + r, l) },
-      dropouts.map { case (a, b) => (a * d + r, (b - 1) * d + r + 1) }, lines)
+      dropouts.map { case (a, b) => (a * d + r, (b - 1) * d + r + 1) }, lines, steps)
   }
 
   /** The searched subsample's result with its findings confirmed on all the others, or the whole record's (`all`). */
   def explain(file: String, rec: Recording, d: Int, progress: Progress, holdBytes: Long, all: Recording => Result,
               searched: Result => Unit): Result = {
     val r1 = all(pick(rec, d, 0))
+    // where the model does not follow the searched subsample, nothing there stands for the record: all samples searched
+    if (r1.report.misfit.nonEmpty) return whole(rec, all, searched, s"the model found on every $d${ordinal(d)} sample does not follow it in " +
+      s"${r1.report.misfit.size} window${if (r1.report.misfit.size == 1) "" else "s"}")
     searched(r1)
     val found = r1.report.findings.filterNot(_.deltaBic.isNaN)
     val fit0 = fitOf(r1.engine, found, d, 0, r1.glitches, r1.dropouts); val spec = r1.engine.spec
@@ -103,12 +108,15 @@ object Interleaved {
       }
     }
     disagreement(fits, d, rec.sampleRateHz) match {
-      case Some(why) =>
-        val res = all(rec); searched(res)
-        res.copy(report = res.report.copy(notes = res.report.notes :+ (s"explained on all ${rec.length} samples: the model found on every " +
-          s"$d${ordinal(d)} sample did not hold on the other subsamples ($why)")))
+      case Some(why) => whole(rec, all, searched, s"the model found on every $d${ordinal(d)} sample did not hold on the other subsamples ($why)")
       case None => combined(r0, fits, d, rec.length)
     }
+  }
+
+  /** All samples searched, and why. */
+  private def whole(rec: Recording, all: Recording => Result, searched: Result => Unit, why: String): Result = {
+    val res = all(rec); searched(res)
+    res.copy(report = res.report.copy(notes = res.report.notes :+ s"explained on all ${rec.length} samples: $why"))
   }
 
   private def ordinal(d: Int): String = if (d % 100 / 10 == 1) "th" else d % 10 match { case 1 => "st"; case 2 => "nd"; case 3 => "rd"; case _ => "th" }
@@ -163,7 +171,14 @@ object Interleaved {
     val searched = rep.findings.filterNot(_.deltaBic.isNaN)
     val found = fits.head.findings.indices.map { j =>
       val f = fits.head.findings(j)
-      val ps = f.params.map { case (k, _) =>
+      // a line's frequency: the search's, moved by the subsamples' Gauss-Newton steps combined (all samples' precision)
+      val line = f.params.get("frequency_hz").filter(_ => f.effect == effects.Interference.name).flatMap(hz =>
+        if (fits.forall(_.steps.get(hz).exists { case (st, sd) => !st.isNaN && sd > 0 && !sd.isInfinite })) Some(hz -> fits.map(_.steps(hz))) else None)
+      val ps = f.params.map {
+        case ("frequency_hz", _) if line.isDefined =>
+          val (hz, st) = line.get; val (m, s, chi2) = pooled(st.map(_._1), st.map(_._2))
+          ("frequency_hz", (hz + m, s * math.sqrt(math.max(1.0, chi2 / (d - 1)))))
+        case (k, _) =>
         val vs = fits.map(_.findings(j).params(k)); val sds = fits.map(_.findings(j).unc.getOrElse(k, f.unc.getOrElse(k, Double.NaN)))
         // a parameter the other fits kept at the search's value (a line's frequency, a warm-up's time constant): the search's
         if (vs.exists(_.isNaN) || !sds.forall(s => s > 0 && !s.isInfinite) || vs.distinct.size == 1) (k, (vs.head, sds.head))
@@ -178,7 +193,7 @@ object Interleaved {
     val others = if (d == 2) "the other interleaved subsample" else s"the other ${d - 1} interleaved subsamples"
     val note = s"searched on every ${d}${ordinal(d)} sample (${fits.head.n} of $n samples, each at ${d} x the sample interval); the model found " +
       s"was fitted again on $others, and each finding's parameters, the same on all ${d} within their uncertainty, are their " +
-      "combined values over all samples (a line's frequency and a warm-up's time constant are the search's). The BIC figures " +
+      "combined values over all samples (a line's frequency moved by their combined steps; a warm-up's time constant is the search's). The BIC figures " +
       "and located departures are the searched subsample's; the final rms is over all samples"
     val report = rep.copy(findings = rep.findings.map(f => byOrig.getOrElse(f, f)), finalRms = rms, samples = n,
       notes = note +: (rep.notes.filterNot(old) ++ Glitches.note(glitches) ++ Dropouts.note(dropouts)))
