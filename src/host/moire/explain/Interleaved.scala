@@ -85,7 +85,11 @@ object Interleaved {
   /** The searched subsample's result with its findings confirmed on all the others, or the whole record's (`all`). */
   def explain(file: String, rec: Recording, d: Int, progress: Progress, holdBytes: Long, all: Recording => Result,
               searched: Result => Unit): Result = {
-    val r1 = all(pick(rec, d, 0))
+    // a subsample refused (an arc too short, no fringe) may be the subsample's fault: all samples have their say
+    val r1 = try all(pick(rec, d, 0)) catch {
+      case x: ExplainError => return whole(rec, all, searched, s"the search on every $d${ordinal(d)} sample refused it (" +
+        x.getMessage.stripPrefix(s"$file: ").takeWhile(_ != ':') + ")")
+    }
     // where the model does not follow the searched subsample, nothing there stands for the record: all samples searched
     if (r1.report.misfit.nonEmpty) return whole(rec, all, searched, s"the model found on every $d${ordinal(d)} sample does not follow it in " +
       s"${r1.report.misfit.size} window${if (r1.report.misfit.size == 1) "" else "s"}")
