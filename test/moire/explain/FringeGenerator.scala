@@ -12,7 +12,7 @@ import java.util.Random
   */
 object FringeGenerator {
   /** motion: "constant" (f0), "chirp" (f0 -> f1), "swell" (f0 up to f1 and back), "reverse" (peak `travel` periods at
-    * `rateHz`), "uneven" (drive f0
+    * `rateHz`), "vibration" (a standstill shaken at `rateHz` and 0.185 x it, `travel` scaling), "uneven" (drive f0
     * plus two vibrations whose speed peaks at `wobble` x f0, so it may reverse).
     */
   final case class Spec(n: Int = 50000, fs: Double = 2e6, motion: String = "constant", f0: Double = 20e3, f1: Double = 60e3,
@@ -38,6 +38,9 @@ object FringeGenerator {
       // vibration at 137 Hz and 311 Hz; their speed amplitudes are wobble * f0 * (0.7, 0.3)
       val w1 = 2 * math.Pi * 137; val w2 = 2 * math.Pi * 311
       s.f0 * t + s.wobble * s.f0 * (0.7 * math.sin(w1 * t + 0.4) / w1 + 0.3 * math.sin(w2 * t + 1.9) / w2)
+    case "vibration" =>
+      // a standstill shaken at rateHz and 0.185 x rateHz: peak travel * (0.3, 0.1) periods about 0.2
+      s.travel * (0.3 * math.sin(2 * math.Pi * s.rateHz * t) + 0.1 * math.sin(2 * math.Pi * 0.185 * s.rateHz * t)) + 0.2
     case other => throw new IllegalArgumentException(s"motion $other")
   }
 

@@ -180,7 +180,7 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
       if (lens.size == 1 && lens.head <= shortest) { free(lens.head); return }
       // each length's fitted trajectory and repaired data are kept: the best is restored and solved once, not fitted again
       final case class Fitted(len: Int, bic: Double, traj: PhaseTrack, repS: Array[Double], repC: Array[Double], cens: Repaired, gain: Double,
-                              motionMisfit: Boolean)
+                              motionMisfit: Boolean, far: Boolean)
       def kept(l: Int) = {
         // the motion not followed: a residual mostly along the signals' path, or, where the phase is off by so much that
         // the residual points anywhere, one of a tenth of the fringe's amplitude
@@ -189,7 +189,7 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
         val rb = if (far || r <= SignalEngine.MotionMisfit) r else alongOverAcrossBeyondFringe
         if (SignalEngine.debug) System.err.println(f"trajectory segments of $l samples: BIC $bic%.1f, residual along / across the fringe $r%.3f" +
           f"${if (rb != r) f" ($rb%.3f beyond the fringe's own shape)" else ""}${if (far) ", far off" else ""}")
-        shared = true; Fitted(l, bic, _traj, _repS, _repC, _cens, lastGain, far || rb > SignalEngine.MotionMisfit)
+        shared = true; Fitted(l, bic, _traj, _repS, _repC, _cens, lastGain, far || rb > SignalEngine.MotionMisfit, far)
       }
       def restore(f: Fitted): Unit = {
         _traj = f.traj; evalTraj(); _repS = f.repS; _repC = f.repC; _cens = f.cens
@@ -201,12 +201,16 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
       // error), pickup, a harmonic or clipping as much across it (off the ellipse) as along. Shorter segments take up
       // part of those too, and lowered BIC by it: a 5 LSB pickup at 1 kHz on 3 kHz fringes went into 1-period segments,
       // and every effect was then not identifiable.
+      // Where every length tried is far off (a vibration reversing within the shortest, whose speed the blocks' path
+      // undercounts: 2 kHz at 1 MS/s left 743 LSB rms), shorter ones down to the trajectory's least length.
       def shorter(fits: Seq[Fitted], fit: Int => Fitted): Seq[Fitted] = {
         var f = fits
+        def lost = f.forall(_.far)
         // (and the longest segments already leave motion: where they follow it, what shorter ones gain by BIC is the
         // fringe's own shape that they half follow, a harmonic of it on both channels)
-        while (f.minBy(_.bic).len == f.last.len && f.last.len > shortest && f.last.motionMisfit && f.head.motionMisfit)
-          f = f :+ fit(math.max(shortest, (f.last.len * 0.4).toInt))
+        while ((lost && f.last.len > Trajectory.MinLength) ||
+          (f.minBy(_.bic).len == f.last.len && f.last.len > shortest && f.last.motionMisfit && f.head.motionMisfit))
+          f = f :+ fit(math.max(if (lost) Trajectory.MinLength else shortest, (f.last.len * 0.4).toInt))
         f
       }
       if (FitPath.isReference) { free(shorter(lens.map { l => free(l); kept(l) }, l => { free(l); kept(l) }).minBy(_.bic).len); return }
