@@ -70,6 +70,8 @@ class BadInputSpec extends AnyFlatSpec with Matchers {
   bad("a sample rate of 1e300", "not a sample rate")("explain", rec("fs.csv", "# moire-recording v1\n# sample_rate_hz: 1e300\n# adc_bits: 12\nsin,cos\n" + rows(100)))
   bad("a sample rate of NaN", "not a sample rate")("explain", rec("fsnan.csv", "# moire-recording v1\n# sample_rate_hz: NaN\n# adc_bits: 12\nsin,cos\n" + rows(100)))
   bad("a sample rate of 4.9e-324 (subnormal)", "not a sample rate")("explain", rec("fstiny.csv", "# moire-recording v1\n# sample_rate_hz: 4.9e-324\n# adc_bits: 12\nsin,cos\n" + rows(100)))
+  bad("simulate --seed 2^53 + 1", "--seed must be a whole number from -9007199254740992 to 9007199254740992")(
+    "simulate", "--out", (dir / "seed.csv").toString, "--seed", "9007199254740993")
   bad("simulate --sample-rate-hz 1e-320", "--sample-rate-hz must be from 1e-6 to 1e11 Hz")("simulate", "--out", (dir / "tiny.csv").toString, "--sample-rate-hz", "1e-320")
   bad("a negative sample rate", "not a sample rate")("explain", rec("fsneg.csv", "# moire-recording v1\n# sample_rate_hz: -5\n# adc_bits: 12\nsin,cos\n" + rows(100)))
   bad("adc_bits out of range", "adc_bits")("explain", rec("bits.csv", "# moire-recording v1\n# sample_rate_hz: 1e6\n# adc_bits: 40\nsin,cos\n" + rows(100)))
@@ -240,7 +242,7 @@ class BadInputSpec extends AnyFlatSpec with Matchers {
   bad("no --seconds and no --burst", "give --seconds S")(recd(): _*)
   bad("--seconds NaN", "--seconds must be in (0, 86400], got NaN")(recd("--seconds", "NaN"): _*)
   bad("--baud 5", "--baud must be in 300..12000000, got 5")(recd("--seconds", "1", "--baud", "5"): _*)
-  bad("--adc-clock-hz Infinity", "--adc-clock-hz must be a positive number up to 200000000 (the fastest board clock), got Infinity")(recd("--seconds", "1", "--adc-clock-hz", "Infinity"): _*)
+  bad("--adc-clock-hz Infinity", "--adc-clock-hz must be from 1000 to 200000000 Hz (an ADC clock a board runs), got Infinity")(recd("--seconds", "1", "--adc-clock-hz", "Infinity"): _*)
   bad("--listen-only without the board's figures", "--listen-only sends no commands")(recd("--seconds", "1", "--listen-only"): _*)
   bad("--timeout-ms 0", "--timeout-ms must be in 10..60000, got 0")(recd("--seconds", "1", "--timeout-ms", "0"): _*)
   bad("--burst 0", "--burst must be in 1..")(recd("--burst", "0"): _*)
@@ -264,6 +266,13 @@ class BadInputSpec extends AnyFlatSpec with Matchers {
   bad("a coefficient entry that is no object", "registers[0]: expected an object")(
     reg("--coefficients", rec("badreg.json", """{"format": "moire-harmonic-coefficients v1", "registers": [5]}""")): _*)
   bad("--timeout-ms -4", "--timeout-ms must be in 10..60000, got -4")(reg("--timeout-ms", "-4"): _*)
+  bad("a coefficient above the harmonic window (0xe0 is burst_control)", "window address 208 is outside 0..207")(
+    reg("--coefficients", rec("highreg.txt", "00 00000001\nd0 00000001\n")): _*)
+  bad("a coefficient address written twice", "window address 0 is written twice")(
+    reg("--coefficients", rec("tworeg.txt", "00 00000001\n00 00000002\n")): _*)
+  bad("a saved file with decimation 0", "registers.decimation must be in 1..16777216, got 0")(
+    reg("--load", rec("dec0.json", """{"format": "moire-board-registers v1", "model": {"id": 1, "version": 1, "adc_clock_hz": 50000000,
+      "adc_format": 0, "counts_per_period": 4096, "frame_records": 8}, "registers": {"decimation": 0}}""")): _*)
 
   behavior of "emit"
   private val emitOut = dir / "emit"
@@ -625,7 +634,8 @@ class BadInputSpec extends AnyFlatSpec with Matchers {
   bad("explain --subdiv \"--counts 3\"", "--subdiv: --counts")("explain", good.toString, "--quiet", "--subdiv", "--counts 3")
   bad("explain --subdiv \"--bogus 1\"", "--subdiv: ")("explain", good.toString, "--quiet", "--subdiv", "--bogus 1")
   bad("calibrate --max-order -5", "--max-order must be at least 1 (or left out for the default), got -5")(calib("--max-order", "-5"): _*)
-  bad("record --adc-clock-hz 1e12", "--adc-clock-hz must be a positive number up to 200000000")(recd("--seconds", "1", "--adc-clock-hz", "1e12"): _*)
+  bad("record --adc-clock-hz 1e12", "--adc-clock-hz must be from 1000 to 200000000 Hz")(recd("--seconds", "1", "--adc-clock-hz", "1e12"): _*)
+  bad("record --adc-clock-hz 1.5", "--adc-clock-hz must be from 1000 to 200000000 Hz")(recd("--seconds", "1", "--adc-clock-hz", "1.5"): _*)
   bad("cost --sweep --sweep-widths ''", "--sweep-widths: give at least one integer")("cost", "--sweep", "--sweep-widths", "")
   bad("cost --sweep --sweep-iterations ' , '", "--sweep-iterations: give at least one integer")("cost", "--sweep", "--sweep-iterations", " , ")
 

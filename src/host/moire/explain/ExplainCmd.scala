@@ -38,6 +38,9 @@ object ExplainCmd {
   }
 
   def simulate(o: SimOptions): String = {
+    // the model line keeps the seed as a JSON number: beyond 2^53 it would name another seed than the one used
+    if (o.seed > PhysicsModel.MaxSeed || o.seed < -PhysicsModel.MaxSeed)
+      throw new ExplainError(s"--seed must be a whole number from -${PhysicsModel.MaxSeed} to ${PhysicsModel.MaxSeed} (the # model: line keeps it exactly), got ${o.seed}")
     val m = model(o)
     val (rec, truth) = try m.generate() catch { case e: IllegalArgumentException => throw new ExplainError(e.getMessage.stripPrefix("requirement failed: ")) }
     aliased(truth, o.sampleRateHz).foreach(w => throw new ExplainError(w))

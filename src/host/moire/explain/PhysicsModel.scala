@@ -140,6 +140,8 @@ final case class PhysicsModel(
 }
 
 object PhysicsModel {
+  /** The largest seed a model line keeps exactly (a JSON number is a double: 2^53). */
+  val MaxSeed: Long = 1L << 53
   def motionJson(m: Motion): ujson.Obj = m match {
     case Motion.Constant(hz, s) => ujson.Obj("kind" -> "constant", "hz" -> hz, "start" -> s)
     case Motion.Ramp(a, b, d, s) => ujson.Obj("kind" -> "ramp", "hz0" -> a, "hz1" -> b, "duration_s" -> d, "start" -> s)
@@ -257,7 +259,7 @@ object PhysicsModel {
       "amplitude" -> b.amplitude, "offset_sin" -> b.offsetSin, "offset_cos" -> b.offsetCos, "gain_sin" -> b.gainSin,
       "gain_cos" -> b.gainCos, "phase_error_deg" -> b.phaseErrorDeg, "noise_rms" -> b.noiseRms, "seed" -> b.seed.toDouble)
       .map { case (k, x) => k -> n(k, x) } ++ lpr.map("lines_per_rev" -> _)
-    for ((k, max) <- Seq("samples" -> Int.MaxValue.toDouble, "adc_bits" -> 64.0, "seed" -> 9.007199254740992e15))
+    for ((k, max) <- Seq("samples" -> Int.MaxValue.toDouble, "adc_bits" -> 64.0, "seed" -> MaxSeed.toDouble))
       if (!(v(k).isWhole && math.abs(v(k)) <= max)) throw new ExplainError(s"$where: $k must be a whole number (up to ${max.toLong}), got ${v(k)}")
     check(v, identity).foreach(w => throw new ExplainError(s"$where: $w"))
     val base = b.copy(amplitude = v("amplitude"), offsetSin = v("offset_sin"), offsetCos = v("offset_cos"), gainSin = v("gain_sin"),

@@ -106,7 +106,9 @@ object BoardReg {
     moire.files.PathKind.notAFile(path).foreach(m => throw new StreamError(m))
     val text = try os.read(path) catch { case e: java.io.IOException => throw new StreamError(s"$path: cannot read (${e.getMessage})") }
     def place(where: String, a: Long, d: Long): (Int, Long) = {
-      if (a < 0 || Registers.HarmonicBase + a > 0xFF) throw new StreamError(s"$where: window address $a is outside 0..${0xFF - Registers.HarmonicBase}")
+      // the window ends where the burst registers start (0xe0): above it, burst_control and the corrector's presets
+      val top = Registers.BurstControl.addr - Registers.HarmonicBase - 1
+      if (a < 0 || a > top) throw new StreamError(s"$where: window address $a is outside 0..$top (the harmonic window, 0x${"%02x".format(Registers.HarmonicBase)}..0x${"%02x".format(Registers.BurstControl.addr - 1)} on the board)")
       if (d < 0 || d > StreamV1.MaxU32) throw new StreamError(s"$where: data $d is not a u32")
       (Registers.HarmonicBase + a.toInt) -> d
     }
@@ -133,6 +135,8 @@ object BoardReg {
       }
     }.toSeq
     if (ws.isEmpty) throw new StreamError(s"$path: no register writes in the file")
+    ws.groupBy(_._1).collectFirst { case (a, xs) if xs.size > 1 => a }.foreach(a =>
+      throw new StreamError(s"$path: window address ${a - Registers.HarmonicBase} is written twice (which value is meant?)"))
     ws
   }
 }

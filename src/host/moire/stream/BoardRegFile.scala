@@ -54,6 +54,9 @@ object BoardRegFile {
       a -> u32(s"registers.$k", v)
     }.toMap
     Settings.foreach(r => if (!inFile.contains(r.addr)) throw new StreamError(s"$file: registers.${r.name} is missing"))
+    // the values --write would refuse are refused here too, before the port is opened
+    inFile.get(Registers.Decimation.addr).foreach(d => if (d < 1 || d > Registers.MaxDecimation)
+      throw new StreamError(s"$file: registers.${Registers.Decimation.name} must be in 1..${Registers.MaxDecimation}, got $d"))
     val known = Set("format", "saved_utc", "port", "model", "registers", BoardRegLearned.Key)
     o.keys.find(k => !known.contains(k)).foreach(k => throw new StreamError(s"$file: '$k' is not a key board-reg saves (${known.mkString(", ")})"))
     Saved(m, Settings.map(r => r.addr -> inFile(r.addr)) ++ Harmonic.map(a => a -> inFile.getOrElse(a, 0L)),

@@ -44,13 +44,17 @@ object Recorder {
 
   /** The fastest ADC clock a board can run (its system clock's limit, 200 MHz). */
   val MaxAdcClockHz = 200e6
+  /** The slowest ADC clock taken (1 kHz): below it no pipelined converter holds its samples, and a mistyped 1.5 made a
+    * 1 s recording of 392 records at 0.000015 Hz, read as 302 days.
+    */
+  val MinAdcClockHz = 1e3
 
   def validate(o: RecordOptions): Unit = {
     if (!(o.seconds > 0) || o.seconds > 86400) throw new StreamError(s"--seconds must be in (0, 86400], got ${o.seconds}")
     if (o.baud < 300 || o.baud > 12000000) throw new StreamError(s"--baud must be in 300..12000000, got ${o.baud}")
     o.decimation.foreach(d => if (d < 1 || d > Registers.MaxDecimation) throw new StreamError(s"--decimation must be in 1..${Registers.MaxDecimation}, got $d"))
-    o.adcClockHz.foreach(f => if (!(f > 0) || f > MaxAdcClockHz)
-      throw new StreamError(s"--adc-clock-hz must be a positive number up to ${MaxAdcClockHz.toLong} (the fastest board clock), got $f"))
+    o.adcClockHz.foreach(f => if (!(f >= MinAdcClockHz) || f > MaxAdcClockHz)
+      throw new StreamError(s"--adc-clock-hz must be from ${MinAdcClockHz.toLong} to ${MaxAdcClockHz.toLong} Hz (an ADC clock a board runs), got $f"))
     o.adcFormat.foreach(f => AdcFormat.parse(f).left.foreach(e => throw new StreamError(s"--adc-format: $e")))
     // a moire board's subdivider counts M per period, a power of two (`SubdivConfig`): another value is no board's
     o.countsPerPeriod.foreach(m => if (m < 4 || m > 65536 || (m & (m - 1)) != 0)
