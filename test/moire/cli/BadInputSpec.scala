@@ -70,6 +70,8 @@ class BadInputSpec extends AnyFlatSpec with Matchers {
   bad("a sample rate of 1e300", "not a sample rate")("explain", rec("fs.csv", "# moire-recording v1\n# sample_rate_hz: 1e300\n# adc_bits: 12\nsin,cos\n" + rows(100)))
   bad("a sample rate of NaN", "not a sample rate")("explain", rec("fsnan.csv", "# moire-recording v1\n# sample_rate_hz: NaN\n# adc_bits: 12\nsin,cos\n" + rows(100)))
   bad("a sample rate of 4.9e-324 (subnormal)", "not a sample rate")("explain", rec("fstiny.csv", "# moire-recording v1\n# sample_rate_hz: 4.9e-324\n# adc_bits: 12\nsin,cos\n" + rows(100)))
+  bad("simulate --motion oscillate at the sample rate", "the oscillation moves the fringe at up to 6.283e+07 Hz")(
+    "simulate", "--out", (dir / "osc.csv").toString, "--samples", "100", "--motion", "oscillate:1:1e7")
   bad("simulate --seed 2^53 + 1", "--seed must be a whole number from -9007199254740992 to 9007199254740992")(
     "simulate", "--out", (dir / "seed.csv").toString, "--seed", "9007199254740993")
   bad("simulate --sample-rate-hz 1e-320", "--sample-rate-hz must be from 1e-6 to 1e11 Hz")("simulate", "--out", (dir / "tiny.csv").toString, "--sample-rate-hz", "1e-320")

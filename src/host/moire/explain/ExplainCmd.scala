@@ -43,7 +43,7 @@ object ExplainCmd {
       throw new ExplainError(s"--seed must be a whole number from -${PhysicsModel.MaxSeed} to ${PhysicsModel.MaxSeed} (the # model: line keeps it exactly), got ${o.seed}")
     val m = model(o)
     val (rec, truth) = try m.generate() catch { case e: IllegalArgumentException => throw new ExplainError(e.getMessage.stripPrefix("requirement failed: ")) }
-    aliased(truth, o.sampleRateHz).foreach(w => throw new ExplainError(w))
+    aliased(truth, o.sampleRateHz).orElse(aliasedMotion(m.motion, o.sampleRateHz)).foreach(w => throw new ExplainError(w))
     val path = moire.files.SafeWrite.fileArg(o.out)
     moire.files.SafeWrite.refuseInputs(path, o.model.toSeq.map(os.Path(_, os.pwd)))
     Recording.write(path, rec)
@@ -60,6 +60,18 @@ object ExplainCmd {
     if (mx < 0.5) None
     else Some(f"the fringe moves up to ${mx}%.4g periods between samples (${mx * fs}%.4g Hz at ${fs}%.4g samples/s): at half a " +
       "period or more the samples alias; slow the motion or raise --sample-rate-hz")
+  }
+
+  /** An oscillation's own peak speed against the sample rate: one at the sample rate stands still at its samples, which
+    * the samples' steps (`aliased`) cannot see.
+    */
+  def aliasedMotion(m: moire.signal.Motion, fs: Double): Option[String] = m match {
+    case o: moire.signal.Motion.Oscillate =>
+      val hz = math.abs(2 * math.Pi * o.periodsPeak * o.rateHz); val mx = hz / fs
+      if (!(mx >= 0.5)) None
+      else Some(f"the oscillation moves the fringe at up to ${hz}%.4g Hz, ${mx}%.4g periods between samples at ${fs}%.4g samples/s: " +
+        "at half a period or more the samples alias; slow the motion or raise --sample-rate-hz")
+    case _ => None
   }
 
   /** The share of a simulated record's samples at the ADC's end codes, when above 1 % on a channel. */
