@@ -52,6 +52,18 @@ class BadInputSpec extends AnyFlatSpec with Matchers {
 
   behavior of "explain"
   bad("a missing file", "no such file")("explain", (dir / "none.csv").toString)
+  // a user's own file under a report's name: refused before the fit, left as it was
+  private def mine(folder: String, name: String, text: String): os.Path = { os.makeDir.all(dir / folder); os.write.over(dir / folder / name, text); dir / folder / name }
+  private val okRec = rec("ok.csv", "# moire-recording v1\n# sample_rate_hz: 1000\n# adc_bits: 12\nsin,cos\n1,2\n")
+  private val userJson = mine("oj", "ok.json", "{\"mine\": 1}\n")
+  bad("--json-dir over a user's JSON of the report's name", "holds JSON, and this command writes an explain report (JSON)", Seq(userJson))(
+    "explain", okRec, "--json-dir", (dir / "oj").toString)
+  private val userPage = mine("oh", "page.html", "<html><body>my own page</body></html>\n")
+  bad("--html over a user's own page", "holds an HTML page, and this command writes an explain report (HTML)", Seq(userPage))(
+    "explain", okRec, "--html", userPage.toString)
+  private val userNote = mine("op", "ok_residual_time.png", "a note\n")
+  bad("--plots where a plot's name holds text", "holds text, and this command writes a PNG image", Seq(userNote))(
+    "explain", okRec, "--plots", (dir / "op").toString)
   bad("a file that is not a recording", "first line must be")("explain", rec("text.csv", "hello\n"))
   bad("an empty file", "first line must be")("explain", rec("empty.csv", ""))
   bad("a missing sample rate", "sample_rate_hz' is missing")("explain", rec("nofs.csv", "# moire-recording v1\n# adc_bits: 12\nsin,cos\n1,2\n"))
@@ -349,14 +361,14 @@ class BadInputSpec extends AnyFlatSpec with Matchers {
   os.write.over(modelJson, "{\"a\": 1}\n")
   bad("a recording over a text file", "holds text, and this command writes a moire recording", Seq(notes))(
     "simulate", "--out", notes.toString, "--samples", "1000")
-  bad("an HTML report over a JSON file", "holds JSON, and this command writes an HTML page", Seq(modelJson))(
+  bad("an HTML report over a JSON file", "holds JSON, and this command writes an explain report (HTML)", Seq(modelJson))(
     "explain", "--quiet", "--no-rtl", "--html", modelJson.toString, good.toString)
   // text a user wrote is not moire's own text: a replay's CSV (`# moire-replay v1`) does not replace notes
   bad("a replay over a text file", "holds text, and this command writes a moire-replay file", Seq(notes))(
     "replay", good.toString, "--quiet", "--out", notes.toString)
   private val textAsJson = dir / "jnotes.json"
   os.write.over(textAsJson, "my notes\n")
-  bad("a JSON report over a text file", "holds text, and this command writes JSON", Seq(textAsJson))(
+  bad("a JSON report over a text file", "holds text, and this command writes an explain report (JSON)", Seq(textAsJson))(
     "explain", "--quiet", "--no-rtl", "--json-dir", dir.toString, rec("jnotes.csv", os.read(good)))
   // a channel on an effect that acts on both: it was recorded in the model and ignored
   bad("channel=sin on an effect that acts on both channels", "--effect drift: channel=sin does not apply")(

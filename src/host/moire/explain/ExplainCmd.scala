@@ -117,10 +117,16 @@ object ExplainCmd {
     for (d <- jsonDir; p <- paths) moire.files.SafeWrite.refuseInputs(os.Path(d, os.pwd) / s"${moire.files.Stem.of(p)}.json", inputs)
     html.foreach(f => moire.files.SafeWrite.refuseInputs(os.Path(f, os.pwd), inputs))
     for (d <- htmlDir; p <- paths) moire.files.SafeWrite.refuseInputs(os.Path(d, os.pwd) / s"${moire.files.Stem.of(p)}.html", inputs)
+    // a user's own JSON, page or image under a report's name is refused now, not after the fit (nor after some plots)
+    for (d <- jsonDir; p <- paths) moire.files.SafeWrite.checkKind(os.Path(d, os.pwd) / s"${moire.files.Stem.of(p)}.json", ReportJson)
+    html.foreach(f => moire.files.SafeWrite.checkKind(os.Path(f, os.pwd), ReportHtml))
+    for (d <- htmlDir; p <- paths) moire.files.SafeWrite.checkKind(os.Path(d, os.pwd) / s"${moire.files.Stem.of(p)}.html", ReportHtml)
     // the plots' names depend on the findings (<stem>_<what>.png): no input may have such a name in --plots
     for (d <- plotDir; p <- paths; i <- inputs; stem = moire.files.Stem.of(p))
       if (i.last.startsWith(stem + "_") && i.last.endsWith(".png") && moire.files.SafeWrite.same(os.Path(d, os.pwd) / i.last, i))
         throw new ExplainError(s"$i: is an input of this command, and --plots writes ${stem}_*.png into its folder; choose another --plots folder")
+    for (d <- plotDir.map(os.Path(_, os.pwd)).filter(os.isDir(_)); p <- paths; stem = moire.files.Stem.of(p); f <- os.list(d) if os.isFile(f, followLinks = false) &&
+      f.last.startsWith(stem + "_") && f.last.endsWith(".png")) moire.files.SafeWrite.checkKind(f, "a PNG image")
     if (outDirs.nonEmpty) paths.groupBy(p => moire.files.Stem.of(p)).collectFirst { case (stem, ps) if ps.distinct.size > 1 =>
       throw new ExplainError(s"${ps.distinct.mkString(" and ")} share the name $stem: their reports would overwrite each other; rename one")
     }
@@ -210,6 +216,10 @@ object ExplainCmd {
     jsonDir.foreach(d => moire.files.SafeWrite.text(os.Path(d, os.pwd) / s"$stem.json", ujson.write(json, indent = 2)))
     report
   }
+
+  /** What `SafeWrite.kind` calls explain's JSON and HTML reports. */
+  val ReportJson = "an explain report (JSON)"
+  val ReportHtml = "an explain report (HTML)"
 
   /** The defaults a `--model` file is checked against (its own values replace them; explain uses only its effects). */
   private lazy val ModelCheck: PhysicsModel = PhysicsModel(SignalParams(0.8, 0, 0, 1, 1, 0, Nil, 1e-3, 1), Motion.Constant(1e3), 1e6, 1000, Adc(12), None, Nil)

@@ -136,12 +136,14 @@ object SafeWrite {
     * (a replay's, a calibration's), text or other data.
     */
   def kind(p: os.Path): String = {
-    val head = try { val in = Files.newInputStream(p.toNIO); try in.readNBytes(256) finally in.close() } catch { case _: IOException => Array.emptyByteArray }
+    val head = try { val in = Files.newInputStream(p.toNIO); try in.readNBytes(4096) finally in.close() } catch { case _: IOException => Array.emptyByteArray }
     if (head.length >= 4 && (head(0) & 0xff) == 0x89 && head(1) == 'P' && head(2) == 'N' && head(3) == 'G') return "a PNG image"
-    if (head.contains(0.toByte)) return "binary data"
+    if (head.take(256).contains(0.toByte)) return "binary data"
     val t = new String(head, java.nio.charset.StandardCharsets.UTF_8).stripPrefix("\uFEFF").dropWhile(_.isWhitespace).toLowerCase
-    if (t.startsWith("<!doctype html") || t.startsWith("<html")) "an HTML page"
-    else if (t.startsWith("{") || t.startsWith("[")) "JSON"
+    // explain's reports name themselves near their start (its HTML's title, its JSON's criterion): a page or JSON of a
+    // user's of the same name is another kind, not one to write over
+    if (t.startsWith("<!doctype html") || t.startsWith("<html")) { if (t.contains("<title>explain: ")) "an explain report (HTML)" else "an HTML page" }
+    else if (t.startsWith("{") || t.startsWith("[")) { if (t.contains("\"criterion\": \"bic = ")) "an explain report (JSON)" else "JSON" }
     else if (t.startsWith("# moire-recording")) "a moire recording"
     // moire's other files name their own format on their first line (`# moire-replay v1`, `# moire-calibration v1`)
     else if (t.startsWith("# moire-")) s"a ${t.drop(2).takeWhile(c => c.isLetterOrDigit || c == '-')} file"
