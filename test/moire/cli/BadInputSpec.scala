@@ -35,6 +35,7 @@ class BadInputSpec extends AnyFlatSpec with Matchers {
   }
 
   private def rec(name: String, text: String): String = { os.write.over(dir / name, text); (dir / name).toString }
+  private def mine(folder: String, name: String, text: String): os.Path = { os.makeDir.all(dir / folder); os.write.over(dir / folder / name, text); dir / folder / name }
   /** A 36-point calibration table (10 degree steps): header and rows. */
   private val calRows = "angle_deg,error_arcsec\n" + (0 until 360 by 10).map { a =>
     val t = math.toRadians(a); f"$a,${2 * math.sin(t) + 0.5 * math.cos(3 * t)}%.4f" }.mkString("\n") + "\n"
@@ -53,7 +54,6 @@ class BadInputSpec extends AnyFlatSpec with Matchers {
   behavior of "explain"
   bad("a missing file", "no such file")("explain", (dir / "none.csv").toString)
   // a user's own file under a report's name: refused before the fit, left as it was
-  private def mine(folder: String, name: String, text: String): os.Path = { os.makeDir.all(dir / folder); os.write.over(dir / folder / name, text); dir / folder / name }
   private val okRec = rec("ok.csv", "# moire-recording v1\n# sample_rate_hz: 1000\n# adc_bits: 12\nsin,cos\n1,2\n")
   private val userJson = mine("oj", "ok.json", "{\"mine\": 1}\n")
   bad("--json-dir over a user's JSON of the report's name", "holds JSON, and this command writes an explain report (JSON)", Seq(userJson))(
@@ -233,6 +233,9 @@ class BadInputSpec extends AnyFlatSpec with Matchers {
   }
   private def calib(args: String*): Seq[String] = Seq("calibrate", "--input", cal.toString, "--out", calOut.toString) ++ args
   bad("a missing input", "no such file")("calibrate", "--input", (dir / "none.csv").toString, "--out", calOut.toString)
+  private val calNotes = mine("cal-notes", "calnotes.registers.txt", "my own notes\n")
+  bad("a user's notes under the register listing's name", "holds text, and this command writes a moire-harmonic-registers file", Seq(calNotes))(
+    "calibrate", "--input", rec("calnotes.csv", "# moire-calibration v1\n" + calRows), "--out", (dir / "cal-notes").toString)
   bad("a duplicated metadata key", "metadata key 'table' appears twice")(
     "calibrate", "--input", rec("caldup.csv", "# moire-calibration v1\n# table: a\n# table: b\n" + calRows), "--out", calOut.toString)
   bad("an error of NaN", "error_arcsec is NaN")("calibrate", "--input", rec("calnan.csv", "# moire-calibration v1\nangle_deg,error_arcsec\n0,1\n10,NaN\n"))

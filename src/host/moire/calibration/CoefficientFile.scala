@@ -55,7 +55,8 @@ object CoefficientFile {
   /** One write per line, `addr data` in hex, comments with `#`. */
   def listing(p: HarmonicParams, fit: HarmonicFitResult): String = {
     val ss = slots(p, fit)
-    val head = Seq(s"# moire harmonic registers for ${p.moduleName}", "# addr data (hex); fields: slot*4 + 0 order, 1 c_k, 2 phi_k")
+    // the format named on the first line (`SafeWrite.kind`: a user's notes of the same name are another kind of file)
+    val head = Seq(s"# moire-harmonic-registers v1 for ${p.moduleName}", "# addr data (hex); fields: slot*4 + 0 order, 1 c_k, 2 phi_k")
     (head ++ writes(p, ss).map { case (a, d) => f"$a%02x ${d}%08x" }).mkString("", "\n", "\n")
   }
 }

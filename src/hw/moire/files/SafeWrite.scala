@@ -147,6 +147,8 @@ object SafeWrite {
     else if (t.startsWith("# moire-recording")) "a moire recording"
     // moire's other files name their own format on their first line (`# moire-replay v1`, `# moire-calibration v1`)
     else if (t.startsWith("# moire-")) s"a ${t.drop(2).takeWhile(c => c.isLetterOrDigit || c == '-')} file"
+    // calibrate's register listing before it named its format on its first line
+    else if (t.startsWith("# moire harmonic registers")) "a moire-harmonic-registers file"
     else "text"
   }
 
