@@ -157,6 +157,22 @@ class RecorderSpec extends AnyFlatSpec with Matchers {
     rec.meta.get("link_failed_after_s") should not be empty
   }
 
+  it should "warn when the stream stops part-way, and keep what arrived" in {
+    // 40 frames (320 records) of a board making 40,000 a second, then silence for the rest of the second
+    val recs = BoardStreamFixture.records(40 * n, 1000, clock.toDouble)
+    val link = new MemoryLink(Encoder.frames(recs.grouped(n).zipWithIndex.map { case (rs, k) => RecordFrame(k, 0, rs) }.toSeq))
+    val out = os.temp.dir() / "stopped.csv"
+    val o = RecordOptions("memory", 1.0, out.toString, baud = 1000000, quiet = true, listenOnly = true, decimation = Some(1000),
+      adcClockHz = Some(clock.toDouble), adcFormat = Some("offset-binary"), countsPerPeriod = Some(1024))
+    val warned = Vector.newBuilder[String]
+    val r = Recorder.record(link, o, _ => (), warned += _)
+    val w = warned.result()
+    withClue(w) { w.exists(x => x.startsWith(s"WARNING: ${r.rows} records arrived in ") && x.contains("stopped or paused part-way")) shouldBe true }
+    r.warnings should not be empty
+    Recording.read(out).length shouldBe r.rows
+    r.rows should be >= 39 * n
+  }
+
   it should "refuse a file of another kind under --out before it records" in {
     val out = os.temp.dir() / "notes.csv"
     os.write(out, "my notes\n")

@@ -137,7 +137,7 @@ object Recorder {
         s"seq gaps ${stats.seqGaps} (${stats.seqMissing} frames), sample-index gaps ${stats.indexGaps} (${stats.indexMissing} records), " +
         s"dropped records ${stats.dropped}, truncated ${stats.truncated}")
     summary.foreach(say)
-    val warnings = lossWarning(stats).toSeq
+    val warnings = lossWarning(stats).toSeq ++ (if (failed.isDefined) None else stoppedWarning(rec.rows, stats, s, o.baud, elapsed))
     warnings.foreach(warn)
     // the link gone mid-recording (a cable pulled): the records that arrived are in the file, and the command fails
     failed.foreach(e => throw new StreamError(f"${e.getMessage.stripSuffix(".")} after $elapsed%.2f s of ${num(o.seconds)}; $file holds the ${rec.rows} records received"))
@@ -150,6 +150,22 @@ object Recorder {
     if (s.sampleRateHz <= cap) None
     else Some(f"WARNING: the board makes ${s.sampleRateHz}%.0f records/s, $baud%d baud carries at most $cap%.0f: " +
       f"records will be dropped; use --decimation ${math.ceil(s.adcClockHz / cap).toLong}%d or more")
+  }
+
+  /** Records that arrived short of this share of those due (at the board's rate, or the link's where it is slower) mean
+    * the stream stopped or paused part-way: a board reset, a FIFO stuck, streaming switched off by another program.
+    */
+  val MinDueShare = 0.3
+
+  /** A WARNING when far fewer records arrived than the board makes in the time recorded (the frames said nothing lost:
+    * a stream that stops sends no frame to miss). 512 records in 6.09 s at 500 Hz passed as a good recording.
+    */
+  def stoppedWarning(rows: Long, st: StreamStats, s: BoardSetup, baud: Int, elapsed: Double): Option[String] = {
+    val perFrame = math.max(1L, math.round(st.records.toDouble / math.max(1L, st.frames)))
+    val rate = math.min(s.sampleRateHz, linkRecordsPerSecond(baud, perFrame)); val due = rate * elapsed
+    if (!(rows < MinDueShare * due && due - rows > 4 * perFrame)) None
+    else Some(f"WARNING: $rows records arrived in $elapsed%.2f s, where ${rate}%.0f a second were due (about ${due}%.0f): the stream " +
+      "stopped or paused part-way (a board reset, streaming switched off); the file holds the records received")
   }
 
   /** One WARNING line when anything was lost, naming each figure that is not zero. */
