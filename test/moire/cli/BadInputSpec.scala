@@ -56,6 +56,10 @@ class BadInputSpec extends AnyFlatSpec with Matchers {
   // a user's own file under a report's name: refused before the fit, left as it was
   private val okRec = rec("ok.csv", "# moire-recording v1\n# sample_rate_hz: 1000\n# adc_bits: 12\nsin,cos\n1,2\n")
   private val userJson = mine("oj", "ok.json", "{\"mine\": 1}\n")
+  for (v <- Seq("5000", "abc", "1.5", "-1", "1e10", ""))
+    bad(s"explain --search-samples '$v'", s"--search-samples needs 0 (search every sample) or a whole number of samples from 10000 to 2147483647, got '$v'")(
+      "explain", okRec, "--search-samples", v)
+  bad("explain-bench --search-samples 99", "--search-samples needs 0 (search every sample) or a whole number")("explain-bench", "--samples", "10000", "--search-samples", "99")
   bad("--json-dir over a user's JSON of the report's name", "holds JSON, and this command writes an explain report (JSON)", Seq(userJson))(
     "explain", okRec, "--json-dir", (dir / "oj").toString)
   private val userPage = mine("oh", "page.html", "<html><body>my own page</body></html>\n")
