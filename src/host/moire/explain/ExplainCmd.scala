@@ -189,7 +189,9 @@ object ExplainCmd {
         def show(r: SignalExplain.Result): Unit = {
           val t0 = System.nanoTime()
           val ie = Laps("interpolation error")(InterpolationError.of(r.engine.rec, r.engine))
-          plotFolder.foreach(d => plotFiles = Laps("plots")(Plots.signals(r, d, stem, ie)))
+          // a second call (a long record searched again on all samples) replaces the first's plots: those it does not
+          // make again, written by this run a moment before, go (an effect the subsample's search named and the whole's not)
+          plotFolder.foreach { d => val before = plotFiles; plotFiles = Laps("plots")(Plots.signals(r, d, stem, ie)); before.diff(plotFiles).foreach(os.remove) }
           extra = extra.filterNot(_._1 == "interpolation_error") :+ ("interpolation_error" -> ie.json)
           if (sys.props.contains("moire.timing")) System.err.println(f"interpolation error and plots ${(System.nanoTime() - t0) / 1e6}%.0f ms")
         }
