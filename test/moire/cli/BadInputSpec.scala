@@ -51,6 +51,11 @@ class BadInputSpec extends AnyFlatSpec with Matchers {
     withClue(err) { code shouldBe 0 }
   }
 
+  it should "take an option after the file written as --name=value" in {
+    val (code, err) = runCli("explain", good.toString, "--quiet", "--no-rtl", "--min-effect-lsb=0.5", "--search-samples=0")
+    withClue(err) { code shouldBe 0 }
+  }
+
   behavior of "explain"
   bad("a missing file", "no such file")("explain", (dir / "none.csv").toString)
   // a user's own file under a report's name: refused before the fit, left as it was

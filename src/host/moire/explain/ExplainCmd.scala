@@ -267,12 +267,17 @@ object ExplainCmd {
   val MaxRailShare = 0.5
 
   /** Options may also follow the file names (mainargs puts everything after the first file into `rest`). */
-  def explainArgs(rest: Seq[String], jsonDir: Option[String], plots: Option[String], model: Option[String], quiet: Boolean,
+  def explainArgs(rest0: Seq[String], jsonDir: Option[String], plots: Option[String], model: Option[String], quiet: Boolean,
                   subdiv: Option[String] = None, noRtl: Boolean = false, html: Option[String] = None, htmlDir: Option[String] = None,
                   minEffectLsb: Option[Double] = None, minEffectNoise: Option[Double] = None,
                   searchSamples: Int = Interleaved.SearchSamples): Unit = {
     // help where --help or -h is a word of its own, not an option's value (`--subdiv --help` is --subdiv's, refused there)
     val valued = Set("--json-dir", "--plots", "--model", "--subdiv", "--html", "--html-dir", "--min-effect-lsb", "--min-effect-noise", "--search-samples")
+    // `--name=value` as `--name value`, as mainargs reads the options before the files
+    val rest = rest0.flatMap(a => a.indexOf('=') match {
+      case k if k > 2 && a.startsWith("--") && valued(a.take(k)) => Seq(a.take(k), a.drop(k + 1))
+      case _ => Seq(a)
+    })
     if (rest.indices.exists(k => (rest(k) == "--help" || rest(k) == "-h") && !(k > 0 && valued(rest(k - 1))))) { println(Usage); return }
     var j = jsonDir; var p = plots; var m = model; var q = quiet; val files = Seq.newBuilder[String]
     var h = html; var hd = htmlDir
