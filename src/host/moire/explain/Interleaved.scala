@@ -131,10 +131,9 @@ object Interleaved {
     val params = fits.head.findings.indices.iterator.flatMap { j =>
       val f = fits.head.findings(j)
       f.params.keys.toSeq.sorted.iterator.flatMap { k =>
-        val vs = fits.map(_.findings(j).params.getOrElse(k, Double.NaN)); val sd = f.unc.getOrElse(k, Double.NaN)
-        val sds = fits.map(_.findings(j).unc.getOrElse(k, sd))
+        val (vs, sds) = series(fits, j, k)
         if (vs.exists(_.isNaN)) None
-        else if (!(sds.forall(s => s > 0 && !s.isInfinite))) {
+        else if (!stated(sds)) {
           if (vs.distinct.size > 1) Some(s"${f.effect} $k: ${vs.distinct.mkString(", ")}") else None
         } else {
           val (mean, _, chi2) = pooled(vs, sds)
@@ -163,6 +162,14 @@ object Interleaved {
       case (acc, x) => x :: acc
     }.reverse
 
+  /** Finding j's parameter k in each subsample's fit, and its sd there (the search's where a fit states none). */
+  private def series(fits: Seq[Fit], j: Int, k: String): (Seq[Double], Seq[Double]) = {
+    val sd = fits.head.findings(j).unc.getOrElse(k, Double.NaN)
+    (fits.map(_.findings(j).params.getOrElse(k, Double.NaN)), fits.map(_.findings(j).unc.getOrElse(k, sd)))
+  }
+  /** Every sd positive and finite: the values can be pooled. */
+  private def stated(sds: Seq[Double]): Boolean = sds.forall(s => s > 0 && !s.isInfinite)
+
   /** Inverse-variance mean, its sd and the chi-square of the values about it. */
   private def pooled(vs: Seq[Double], sds: Seq[Double]): (Double, Double, Double) = {
     val w = sds.map(s => 1 / (s * s)); val sw = w.sum
@@ -184,9 +191,9 @@ object Interleaved {
           val (hz, st) = line.get; val (m, s, chi2) = pooled(st.map(_._1), st.map(_._2))
           ("frequency_hz", (hz + m, math.max(f.unc.getOrElse("frequency_hz", 0.0), s * math.sqrt(math.max(1.0, chi2 / (d - 1))))))
         case (k, _) =>
-        val vs = fits.map(_.findings(j).params(k)); val sds = fits.map(_.findings(j).unc.getOrElse(k, f.unc.getOrElse(k, Double.NaN)))
+        val (vs, sds) = series(fits, j, k)
         // a parameter the other fits kept at the search's value (a line's frequency, a warm-up's time constant): the search's
-        if (vs.exists(_.isNaN) || !sds.forall(s => s > 0 && !s.isInfinite) || vs.distinct.size == 1) (k, (vs.head, sds.head))
+        if (vs.exists(_.isNaN) || !stated(sds) || vs.distinct.size == 1) (k, (vs.head, sds.head))
         else { val (m, s, chi2) = pooled(vs, sds); (k, (m, s * math.sqrt(math.max(1.0, chi2 / (d - 1))))) }
       }
       searched(j).copy(params = ps.map { case (k, v) => k -> v._1 }, unc = ps.map { case (k, v) => k -> v._2 })
