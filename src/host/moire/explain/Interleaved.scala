@@ -84,37 +84,51 @@ object Interleaved {
 
   /** The searched subsample's result with its findings confirmed on all the others, or the whole record's (`all`). */
   def explain(file: String, rec: Recording, d: Int, progress: Progress, holdBytes: Long, all: Recording => Result,
-              searched: Result => Unit): Result = {
+              searched: Result => Unit): Result =
+    search(file, rec, d, all, searched) match {
+      case Left(res) => res
+      case Right(s) =>
+        val fits = s.fit0 +: {
+          progress.phase(s"fit again on the other ${d - 1} of $d interleaved subsamples", d - 1)
+          (1 until d).map { r =>
+            val sub = pick(rec, d, r)
+            val e = new SignalEngine(sub, Reference.of(sub).fold(m => throw new ExplainError(s"$file: $m"), identity), holdBytes)
+            Laps("confirm: default fit")(e.init())
+            val (dropouts, glitches0) = Laps("confirm: bad data")(SignalExplain.badData(e))
+            e.spec = s.spec; Laps("confirm: converge")(e.converge()); Laps("confirm: settle")(SignalExplain.settle(e))
+            val glitches = Laps("confirm: glitches")(Glitches.more(e, glitches0))
+            val f = fitOf(e, s.found, d, r, glitches, dropouts)
+            progress.step(1); f
+          }
+        }
+        disagreement(fits, d, rec.sampleRateHz) match {
+          case Some(why) => whole(rec, all, searched, s"the model found on every $d${ordinal(d)} sample did not hold on the other subsamples ($why)")
+          case None => combined(s.result, fits, d, rec.length)
+        }
+    }
+
+  /** What the search on subsample 0 leaves for the others' fits: its result without engine or snapshots, its fit, the
+    * model it found and the findings to refresh.
+    */
+  private final case class Searched(result: Result, fit0: Fit, spec: ModelSpec, found: Seq[Finding])
+
+  /** The search on subsample 0, or the whole record's result where that search cannot stand for it. The search's engine
+    * (hundreds of MB at 20 M samples) is referenced from this method's frame alone: gone once it returns, before the
+    * other subsamples are fitted.
+    */
+  private def search(file: String, rec: Recording, d: Int, all: Recording => Result, searched: Result => Unit): Either[Result, Searched] = {
     // a subsample refused (an arc too short, no fringe) may be the subsample's fault: all samples have their say
     val r1 = try all(pick(rec, d, 0)) catch {
-      case x: ExplainError => return whole(rec, all, searched, s"the search on every $d${ordinal(d)} sample refused it (" +
-        x.getMessage.stripPrefix(s"$file: ").takeWhile(_ != ':') + ")")
+      case x: ExplainError => return Left(whole(rec, all, searched, s"the search on every $d${ordinal(d)} sample refused it (" +
+        x.getMessage.stripPrefix(s"$file: ").takeWhile(_ != ':') + ")"))
     }
     // where the model does not follow the searched subsample, nothing there stands for the record: all samples searched
-    if (r1.report.misfit.nonEmpty) return whole(rec, all, searched, s"the model found on every $d${ordinal(d)} sample does not follow it in " +
-      s"${r1.report.misfit.size} window${if (r1.report.misfit.size == 1) "" else "s"}")
+    if (r1.report.misfit.nonEmpty) return Left(whole(rec, all, searched, s"the model found on every $d${ordinal(d)} sample does not follow it in " +
+      s"${r1.report.misfit.size} window${if (r1.report.misfit.size == 1) "" else "s"}"))
     searched(r1)
     val found = r1.report.findings.filterNot(_.deltaBic.isNaN)
-    val fit0 = fitOf(r1.engine, found, d, 0, r1.glitches, r1.dropouts); val spec = r1.engine.spec
-    // the searched subsample's engine and snapshots go before the other subsamples are fitted
-    val r0 = r1.copy(engine = null, before = null, steps = r1.steps.map { case (f, _, _) => (f, null, null) })
-    val fits = fit0 +: {
-      progress.phase(s"fit again on the other ${d - 1} of $d interleaved subsamples", d - 1)
-      (1 until d).map { r =>
-        val sub = pick(rec, d, r)
-        val e = new SignalEngine(sub, Reference.of(sub).fold(m => throw new ExplainError(s"$file: $m"), identity), holdBytes)
-        Laps("confirm: default fit")(e.init())
-        val (dropouts, glitches0) = Laps("confirm: bad data")(SignalExplain.badData(e))
-        e.spec = spec; Laps("confirm: converge")(e.converge()); Laps("confirm: settle")(SignalExplain.settle(e))
-        val glitches = Laps("confirm: glitches")(Glitches.more(e, glitches0))
-        val f = fitOf(e, found, d, r, glitches, dropouts)
-        progress.step(1); f
-      }
-    }
-    disagreement(fits, d, rec.sampleRateHz) match {
-      case Some(why) => whole(rec, all, searched, s"the model found on every $d${ordinal(d)} sample did not hold on the other subsamples ($why)")
-      case None => combined(r0, fits, d, rec.length)
-    }
+    Right(Searched(r1.copy(engine = null, before = null, steps = r1.steps.map { case (f, _, _) => (f, null, null) }),
+      fitOf(r1.engine, found, d, 0, r1.glitches, r1.dropouts), r1.engine.spec, found))
   }
 
   /** All samples searched, and why. */

@@ -7,7 +7,7 @@ import moire.recording.{Recording, Reference}
   * (prediction, residual, noise model and -2 ln L of the current `spec`).
   */
 final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = None,
-                         holdBytes: Long = Runtime.getRuntime.maxMemory / 8) {
+                         holdBytes: Long = SignalEngine.HoldBytes) {
   val n: Int = rec.length
   val fs: Double = rec.sampleRateHz
   val lsb: Double = rec.adc.lsb
@@ -960,7 +960,7 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
   }
 
   /** The design of the current spec: the default part, each term's columns, then `extra` groups (held). The terms'
-    * columns are held when they all fit in `holdBytes` (an eighth of the heap), else made a block at a time where they
+    * columns are held when they all fit in `holdBytes` (`HoldBytes`), else made a block at a time where they
     * are read (long records; INL's are held).
     */
   private def groups(extra: IndexedSeq[IndexedSeq[Col]] = IndexedSeq()): ColGroups = {
@@ -1021,6 +1021,11 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
 
 object SignalEngine {
   val debug: Boolean = sys.props.contains("moire.debug")
+  /** The heap the terms' columns may take when held (else made a block at a time where they are read): an eighth of
+    * the heap, at most 256 MB. More bought no time (20 M samples: 43.5 s holding 352 MB of a subsample's columns, 44.1 s
+    * in a 1 GB heap holding none) and raised the peak heap with the heap's size.
+    */
+  val HoldBytes: Long = math.min(Runtime.getRuntime.maxMemory / 8, 256L << 20)
   /** The residual along the fringe over the residual across it above which the trajectory is made finer. */
   val MotionMisfit = 1.1
   /** Noise widths a prediction lies beyond a saturation level where the sample held there is left out of the fit

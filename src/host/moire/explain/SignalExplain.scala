@@ -63,7 +63,7 @@ object SignalExplain {
     * (null: the confirmation's fits need their memory).
     */
   def run(file: String, rec: Recording, model: Seq[EffectSpec], progress: Progress, maxFindings: Int = 8,
-          holdBytes: Long = Runtime.getRuntime.maxMemory / 8, materiality: Materiality = Materiality(),
+          holdBytes: Long = SignalEngine.HoldBytes, materiality: Materiality = Materiality(),
           searchSamples: Int = Interleaved.SearchSamples, searched: Result => Unit = _ => ()): Result = {
     val t0 = System.nanoTime()
     def all(r: Recording) = whole(file, r, model, progress, maxFindings, holdBytes, materiality)
@@ -81,7 +81,8 @@ object SignalExplain {
     val t0 = System.nanoTime()
     var res = search(file, rec, model, progress, maxFindings, holdBytes, materiality, Nil, 0)
     var depth = 0
-    while (res.rerun.nonEmpty && depth < MaxReruns) { depth += 1; res = search(file, rec, model, progress, maxFindings, holdBytes, materiality, res.rerun, depth) }
+    // the last search's engine goes before the next is made (two at once: twice the heap)
+    while (res.rerun.nonEmpty && depth < MaxReruns) { depth += 1; val prior = res.rerun; res = null; res = search(file, rec, model, progress, maxFindings, holdBytes, materiality, prior, depth) }
     res.copy(report = res.report.copy(seconds = (System.nanoTime() - t0) / 1e9))
   }
   /** Two candidates whose gains differ by less than this share of the larger predict the same signal here (a 0.3 % 2nd
