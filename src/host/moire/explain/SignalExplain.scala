@@ -128,6 +128,10 @@ object SignalExplain {
     val steps = Seq.newBuilder[(Finding, Snapshot, Snapshot)]
     var done = false; var round = 0
     val rejected = scala.collection.mutable.ArrayBuffer.empty[Located]
+    // material structure that replicates but that the record cannot tell from an alternative (a drift at one speed in one
+    // direction, or a contrast change along that travel): fitted, so that the model follows the signal and the rest is
+    // assessed, and listed as unexplained with what it cannot be told from, never as a finding
+    val unnamed = scala.collection.mutable.ArrayBuffer.empty[Located]
     while (!done && round < maxFindings) {
       val cands = new Candidates(e)
       progress.phase(s"effects, round ${round + 1}", cands.steps)
@@ -197,8 +201,26 @@ object SignalExplain {
             val why = if (!(bic0 - e.bic > 0)) Some("") else if (size < floor) Some("negligible")
               else if (ident.isDefined) ident
               else { val r = Replicate.why(e, prev); if (r.isDefined) refuted += c.effect; r }
+            // (what the record cannot tell from an alternative is kept, unnamed, when it is material and replicates)
+            val unnamedNow = ident.isDefined && why == ident && Replicate.why(e, prev).isEmpty
             lap("replicate")
             if (SignalEngine.debug) System.err.println(s"tried ${c.effect}/${c.channel}: " + why.orElse(claimed(claims, before, claimedNow)).fold("kept")(w => if (w.isEmpty) "no gain" else w))
+            // what the model now follows because of the change: glitches its misfit hid stand out; the motion may not
+            // need the shorter segments its misfit asked for (only after a change in time, which the default fit's phase
+            // may have followed as motion: after clipping, the longer segments won by BIC while the other channel's
+            // clipping was still in the residual, and a slow back-and-forth ended misfit)
+            def changed(): Unit = {
+              round += 1; accepted = true
+              glitches = Glitches.more(e, glitches)
+              if (Effects(c1.effect).exists(x => x.domain == effects.Domain.Settling || x.domain == effects.Domain.Time) && e.relengthen()) {
+                researchWarmup(e); lap("longer segments")
+              }
+            }
+            if (unnamedNow) {
+              unnamed += Located(s"${c1.effect} (${c1.channel}): ${c1.where}", f"structure of this shape lowers BIC by ${bic0 - e.bic}%.0f and changes " +
+                f"the signal by ${size / e.lsb}%.1f LSB, but ${ident.get}; fitted, unnamed, so that the rest of the record is assessed", c1.params, significant = true)
+              changed()
+            } else
             why.orElse(claimed(claims, before, claimedNow)) match {
               case Some(w) =>
                 if (w == "negligible") {
@@ -213,16 +235,7 @@ object SignalExplain {
               case None =>
                 val snapA = Snapshot.of(s"after ${c.effect}", e.resS, e.resC)
                 steps += ((Finding(c1.effect, c1.channel, "", c1.params, c1.unc, bic0 - e.bic, rmsB, e.rms, c1.where, size / e.lsb), snapB, snapA))
-                round += 1; accepted = true
-                // with the effect fitted, glitches its misfit hid stand out; the motion may not need the shorter
-                // segments its misfit asked for
-                glitches = Glitches.more(e, glitches)
-                // (only after a change in time, which the default fit's phase may have followed as motion: after
-                // clipping, the longer segments won by BIC while the other channel's clipping was still in the residual,
-                // and a slow back-and-forth ended misfit)
-                if (Effects(c1.effect).exists(x => x.domain == effects.Domain.Settling || x.domain == effects.Domain.Time) && e.relengthen()) {
-                  researchWarmup(e); lap("longer segments")
-                }
+                changed()
             }
         }
       }
@@ -270,7 +283,7 @@ object SignalExplain {
         f"the record (residual rms above ${Adequacy.Margin}%.0f x the noise floor from neighbouring samples): not assessed", f.params, significant = true)
     }
     val baseParams = if (misfit.isEmpty) baseParams0 else baseParams0 ++ Map("noise_sin_fs" -> floorNoise._1, "noise_cos_fs" -> floorNoise._2)
-    val unexplained = (if (confounded || !follows) Nil else left) ++ rejected ++ withdrawn
+    val unexplained = (if (confounded || !follows) Nil else left) ++ unnamed ++ rejected.filterNot(r => unnamed.exists(u => r.where.takeWhile(_ != ' ') == u.where.takeWhile(_ != ' '))) ++ withdrawn
     val coarse = CoarseQuantization.finding(e)
     val shown = if (follows) fin else Nil
     val report = Report(file, "signals", baseRms, baseBic, baseParams, located, coarse ++ shown.map(_._1), unexplained, finalRms, finalBic,
