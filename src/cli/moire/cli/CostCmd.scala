@@ -12,7 +12,7 @@ object CostCmd {
     val d = Designs.find(design, p).fold(e => throw new UsageError(e), identity)
     if (timeout < 1) throw new UsageError(s"--timeout must be at least 1 second, got $timeout")
     // outputs before the work: a bad path fails now, not after yosys
-    json.foreach(f => moire.files.SafeWrite.checkFile(moire.files.SafeWrite.fileArg(f)))
+    json.foreach(f => moire.files.SafeWrite.checkMade(moire.files.SafeWrite.fileArg(f)))
     keep.foreach(k => moire.files.SafeWrite.checkFolder(os.Path(k, os.pwd)))
     if (!Yosys.available) throw new UsageError("yosys not found on PATH (install yosys 0.23 or newer)")
     val work = keep.map(k => os.Path(k, os.pwd)).getOrElse(Cost.tempDir())
@@ -22,7 +22,7 @@ object CostCmd {
     print(r.text)
     json.foreach { f =>
       val path = os.Path(f, os.pwd)
-      moire.files.SafeWrite.text(path, ujson.write(r.json, indent = 2))
+      moire.files.SafeWrite.madeText(path, ujson.write(r.json, indent = 2))
       println(s"wrote $path")
     }
   }
@@ -48,7 +48,7 @@ object CostCmd {
     }
     if (pts.isEmpty) throw new UsageError(s"--sweep: no (n, b) with b - $spread <= n <= b in these lists")
     moire.files.SafeWrite.checkFolder(os.Path(out, os.pwd))
-    json.foreach(f => moire.files.SafeWrite.checkFile(moire.files.SafeWrite.fileArg(f)))
+    json.foreach(f => moire.files.SafeWrite.checkMade(moire.files.SafeWrite.fileArg(f)))
     if (!Yosys.available) throw new UsageError("yosys not found on PATH (install yosys 0.23 or newer)")
     val dir = os.Path(out, os.pwd)
     log(s"${pts.size} configurations; results cached in ${dir / "cache"}")
@@ -58,7 +58,7 @@ object CostCmd {
     for (f <- SweepRun.write(rows, dir)) println(s"wrote $f")
     json.foreach { f =>
       val path = os.Path(f, os.pwd)
-      moire.files.SafeWrite.text(path, ujson.write(ujson.Arr(rows.map(_.json): _*), indent = 2))
+      moire.files.SafeWrite.madeText(path, ujson.write(ujson.Arr(rows.map(_.json): _*), indent = 2))
       println(s"wrote $path")
     }
   }

@@ -105,12 +105,12 @@ object Main {
 
   @main(doc = "Reproduce the papers' accuracy tables; exit code 0 only when every row holds.")
   def accuracy(@arg(doc = "also write the rows as JSON to this file") json: Option[String] = None): Unit = {
-    json.foreach(f => moire.files.SafeWrite.checkFile(moire.files.SafeWrite.fileArg(f)))   // before the work, not after it
+    json.foreach(f => moire.files.SafeWrite.checkMade(moire.files.SafeWrite.fileArg(f)))   // before the work, not after it
     val rows = Reproduce.rows(s => System.err.println(s"accuracy: $s ..."))
     AccuracyTable.print(rows)
     json.foreach { f =>
       val path = os.Path(f, os.pwd)
-      moire.files.SafeWrite.text(path, ujson.write(ujson.Arr(rows.map(_.json): _*), indent = 2))
+      moire.files.SafeWrite.madeText(path, ujson.write(ujson.Arr(rows.map(_.json): _*), indent = 2))
       println(s"wrote $path")
     }
     val failed = rows.count(!_.holds)

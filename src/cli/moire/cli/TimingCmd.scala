@@ -25,7 +25,7 @@ object TimingCmd {
     if (!Seq("router1", "router2").contains(router)) throw new UsageError(s"--router: '$router' is not a nextpnr router; allowed: router1, router2")
     if (timeout < 1) throw new UsageError(s"--timeout must be at least 1 second, got $timeout")
     // outputs and the cache before any tool runs
-    (json ++ markdown).foreach(f => moire.files.SafeWrite.checkFile(moire.files.SafeWrite.fileArg(f)))
+    (json ++ markdown).foreach(f => moire.files.SafeWrite.checkMade(moire.files.SafeWrite.fileArg(f)))
     cache.foreach(c => moire.files.SafeWrite.checkFolder(moire.files.SafeWrite.folderArg(c, "--cache")))
     for (j <- json; m <- markdown if os.Path(j, os.pwd) == os.Path(m, os.pwd))
       throw new UsageError(s"--json and --markdown name one file ($j); give two names")
@@ -40,13 +40,13 @@ object TimingCmd {
     json.foreach { f =>
       val path = os.Path(f, os.pwd)
       val v = if (results.size == 1) results.head.json else ujson.Arr(results.map(_.json): _*)
-      moire.files.SafeWrite.text(path, ujson.write(v, indent = 2))
+      moire.files.SafeWrite.madeText(path, ujson.write(v, indent = 2))
       println(s"wrote $path")
     }
     markdown.foreach { f =>
       val path = os.Path(f, os.pwd)
-      val cmd = "./sbt \"run timing " + (if (all) "--all" else s"--design ${design.get}") + s" --speeds ${ss.mkString(",")}\""
-      moire.files.SafeWrite.text(path, TimingTable.markdown(results, cmd))
+      val cmd = "moire timing " + (if (all) "--all" else s"--design ${design.get}") + s" --speeds ${ss.mkString(",")}"
+      moire.files.SafeWrite.madeText(path, TimingTable.markdown(results, cmd))
       println(s"wrote $path")
     }
     val missed = results.filterNot(_.meets)

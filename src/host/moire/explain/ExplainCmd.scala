@@ -189,9 +189,9 @@ object ExplainCmd {
         def show(r: SignalExplain.Result): Unit = {
           val t0 = System.nanoTime()
           val ie = Laps("interpolation error")(InterpolationError.of(r.engine.rec, r.engine))
-          // a second call (a long record searched again on all samples) replaces the first's plots: those it does not
-          // make again, written by this run a moment before, go (an effect the subsample's search named and the whole's not)
-          plotFolder.foreach { d => val before = plotFiles; plotFiles = Laps("plots")(Plots.signals(r, d, stem, ie)); before.diff(plotFiles).foreach(os.remove) }
+          // the record's plots that this call does not make again go: an earlier run's (an effect it found and this one
+          // not), or this run's first call's (a long record searched again on all samples), each as moire wrote it
+          plotFolder.foreach { d => plotFiles = Laps("plots")(Plots.signals(r, d, stem, ie)); moire.files.SafeWrite.removeStale(d, Plots.ofStem(stem), plotFiles) }
           extra = extra.filterNot(_._1 == "interpolation_error") :+ ("interpolation_error" -> ie.json)
           if (sys.props.contains("moire.timing")) System.err.println(f"interpolation error and plots ${(System.nanoTime() - t0) / 1e6}%.0f ms")
         }

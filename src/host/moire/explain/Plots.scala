@@ -36,9 +36,16 @@ object Plots {
   /** Writes the chart as PNG, its axes at round values first (unless the chart set its own). */
   def save(c: XYChart, path: os.Path): os.Path = {
     if (c.getStyler.getXAxisMin == null) Axes.round(c)
-    Laps("plots: draw and encode")(moire.files.SafeWrite(path)(t => { val o = new java.io.FileOutputStream(t.toIO); try BitmapEncoder.saveBitmap(c, o, BitmapFormat.PNG) finally o.close() }))
+    Laps("plots: draw and encode")(moire.files.SafeWrite.made(Seq(path -> { t => val o = new java.io.FileOutputStream(t.toIO); try BitmapEncoder.saveBitmap(c, o, BitmapFormat.PNG) finally o.close() })))
     path
   }
+
+  /** Whether `name` is one of the plots `signals` makes for the record `stem` (the record `rec` only, not `rec_2`). */
+  def ofStem(stem: String)(name: String): Boolean = name.startsWith(stem + "_") && {
+    val rest = name.drop(stem.length + 1)
+    Fixed.contains(rest) || effects.Effects.all.exists(f => rest.matches(s"effect_[0-9]+_${java.util.regex.Pattern.quote(f.name)}\\.png"))
+  }
+  private val Fixed = Set("residual_time", "residual_phase", "residual_spectrum", "lissajous_before", "lissajous_after", "interpolation_error").map(_ + ".png")
 
   /** Mean of y per bin of x (bins over [lo, hi)). */
   def binned(x: Int => Double, y: Int => Double, n: Int, lo: Double, hi: Double, bins: Int, rms: Boolean = false): (Array[Double], Array[Double]) = {

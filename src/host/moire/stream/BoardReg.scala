@@ -29,7 +29,7 @@ object BoardReg {
     val loadFile = o.load.map(os.Path(_, os.pwd))
     loadFile.foreach(BoardRegFile.read) // a bad file fails before the port is opened
     val saveFile = o.save.map(os.Path(_, os.pwd))
-    saveFile.foreach(moire.files.SafeWrite.checkFile)
+    saveFile.foreach(moire.files.SafeWrite.checkMade)
     val writes = o.writes.map(parseWrite)
     // the same register written twice in one command: the first value would be lost at once
     writes.groupBy(_._1).collectFirst { case (a, ws) if ws.size > 1 =>

@@ -28,7 +28,7 @@ object BoardRegFile {
       "model" -> ujson.Obj.from(model.map { case (k, v) => k -> ujson.Num(v.toDouble) }),
       "registers" -> ujson.Obj.from((settings ++ harm.map { case (a, v) => Registers.name(a) -> v }).map { case (k, v) => k -> ujson.Num(v.toDouble) }))
     learned.foreach(l => j(BoardRegLearned.Key) = l.json)
-    moire.files.SafeWrite.text(file, ujson.write(j, indent = 2) + "\n")
+    moire.files.SafeWrite.madeText(file, ujson.write(j, indent = 2) + "\n")
     (settings.size, harm.size, learned)
   }
 

@@ -48,8 +48,10 @@ object Emit {
       val first = s"${top.get.desiredName}.sv"
       // Verilog files that hold a module (not firtool's extern_modules.sv, macro definitions only)
       val files = os.walk(tmp).filter(f => os.isFile(f) && Seq("sv", "v").contains(f.ext) && """(?m)^\s*module\s""".r.findFirstIn(os.read(f)).nonEmpty)
-      (top.get, files.sortBy(f => (f.last != first, f.last)).map { f =>
-        val d = dir / f.last; moire.files.SafeWrite(d)(t => os.copy(f, t)); d })
+      // a namesake a user wrote or edited is refused, not replaced (all or none are written)
+      val sorted = files.sortBy(f => (f.last != first, f.last))
+      moire.files.SafeWrite.made(sorted.map(f => (dir / f.last) -> ((t: os.Path) => os.copy(f, t))))
+      (top.get, sorted.map(f => dir / f.last))
     } finally os.remove.all(tmp)
   }
 }
