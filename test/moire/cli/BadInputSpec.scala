@@ -644,6 +644,9 @@ class BadInputSpec extends AnyFlatSpec with Matchers {
   }
   bad("monitor --replay of 10 rows", "monitor --replay (its bursts are explained) needs at least 64")(
     "monitor", "--replay", rec("ten-replay.csv", head + "sin,cos\n" + rows(10)), "--out", (dir / "mon").toString)
+  // it played the file with 4 counts per period, a scale in neither the file nor the options (another tool's fuzz, N2)
+  bad("monitor --replay of a file whose counts_per_period is 0", "metadata counts_per_period '0' is not a number above 0")(
+    "monitor", "--replay", rec("m0-replay.csv", head + "# counts_per_period: 0\nsin,cos\n" + rows(100)), "--out", (dir / "mon").toString)
   bad("record --port of a folder", "is a folder, not a serial port")("record", "--port", folderIn.toString, "--seconds", "1", "--out", (dir / "r.csv").toString)
   bad("record --port ''", "--port is empty")("record", "--port", "", "--seconds", "1", "--out", (dir / "r.csv").toString)
 

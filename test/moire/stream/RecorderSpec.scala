@@ -173,6 +173,20 @@ class RecorderSpec extends AnyFlatSpec with Matchers {
     r.rows should be >= 39 * n
   }
 
+  it should "refuse a board's counts per period that is no power of two before it records, and write numbers exactly" in {
+    // a file with M = 0 was written, and explain, replay and the monitor then refused it (another tool's fuzz sweep, N1)
+    val o = RecordOptions("memory", 1.0, (os.temp.dir() / "m0.csv").toString, quiet = true)
+    for (m <- Seq(0L, 1000L, 131072L)) {
+      val answers = Iterator(clock, Registers.AdcOffsetBinary.toLong, m)
+      val e = intercept[MoireError](Recorder.adcSetup(null, o, _ => answers.next()))
+      e.getMessage shouldBe s"memory: the board reports counts_per_period $m (a power of two from 4 to 65536 expected); give --counts-per-period"
+    }
+    Recorder.adcSetup(null, o, { val a = Iterator(clock, Registers.AdcOffsetBinary.toLong, 1024L); _ => a.next() })._3 shouldBe 1024
+    // --ref-counts-per-period 0.000012345678 was written 0.000012, and 1e-7 as "0." (N3)
+    for (v <- Seq(0.000012345678, 1e-7, 1e-300, 2.5, 40e6 / 3, 123456789012345678901.0))
+      moire.numbers.Decimal.double(Recorder.num(v)) shouldBe Some(v)
+  }
+
   it should "refuse a file of another kind under --out before it records" in {
     val out = os.temp.dir() / "notes.csv"
     os.write(out, "my notes\n")

@@ -40,6 +40,8 @@ object MonitorCmd {
       val rec = Recording.read(p)
       rec.warnings.foreach(w => warn(s"WARNING: $f: $w"))
       moire.explain.ExplainCmd.checkSignals(p, rec, "monitor --replay (its bursts are explained)")
+      // a scale the file states that is no number above 0 is refused as explain refuses it, not played at another
+      moire.recording.Reference.of(rec).left.foreach(m => throw new MonitorError(s"$p: $m"))
       new ReplaySource(rec, s"replay of ${p.last}", o.scale)
     case _ => new ReplaySource(SimBoard.recording(if (o.effects.isEmpty) SimBoard.DefaultEffects else o.effects), "simulated board", o.scale)
   }

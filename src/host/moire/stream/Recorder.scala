@@ -56,8 +56,7 @@ object Recorder {
     o.adcClockHz.foreach(f => if (!(f >= MinAdcClockHz) || f > MaxAdcClockHz)
       throw new StreamError(s"--adc-clock-hz must be from ${MinAdcClockHz.toLong} to ${MaxAdcClockHz.toLong} Hz (an ADC clock a board runs), got $f"))
     o.adcFormat.foreach(f => AdcFormat.parse(f).left.foreach(e => throw new StreamError(s"--adc-format: $e")))
-    // a moire board's subdivider counts M per period, a power of two (`SubdivConfig`): another value is no board's
-    o.countsPerPeriod.foreach(m => if (m < 4 || m > 65536 || (m & (m - 1)) != 0)
+    o.countsPerPeriod.foreach(m => if (!countsOk(m))
       throw new StreamError(s"--counts-per-period must be a power of two from 4 to 65536 (the board's M, counts per grating period), got $m"))
     for ((k, v) <- Seq("--ref-counts-per-period" -> o.refCountsPerPeriod, "--ref-counts-per-turn" -> o.refCountsPerTurn); x <- v)
       if (!(x > 0) || x.isInfinite) throw new StreamError(s"$k must be a positive finite number, got $x")
@@ -112,8 +111,13 @@ object Recorder {
       case Registers.AdcTwosComplement => AdcFormat.TwosComplement
       case v => throw new StreamError(s"${o.port}: the board reports adc_format $v (0 or 1 expected); give --adc-format")
     })
-    (clk, fmt, o.countsPerPeriod.getOrElse(ask(c.read(Registers.CountsPerPeriod))))
+    val m = o.countsPerPeriod.getOrElse(ask(c.read(Registers.CountsPerPeriod)))
+    // a file with another M is one that explain, replay and the monitor refuse: asked for now, not after the recording
+    if (!countsOk(m)) throw new StreamError(s"${o.port}: the board reports counts_per_period $m (a power of two from 4 to 65536 expected); give --counts-per-period")
+    (clk, fmt, m)
   }
+  /** A moire board's subdivider counts M per period, a power of two (`SubdivConfig`): another value is no board's. */
+  def countsOk(m: Long): Boolean = m >= 4 && m <= 65536 && (m & (m - 1)) == 0
 
   def record(link: ByteLink, o: RecordOptions, say: String => Unit, warn: String => Unit): RecordResult = {
     validate(o)
@@ -193,7 +197,8 @@ object Recorder {
   def refMeta(o: RecordOptions): Map[String, String] =
     o.refCountsPerPeriod.map(v => "ref_counts_per_period" -> num(v)).toMap ++ o.refCountsPerTurn.map(v => "ref_counts_per_turn" -> num(v))
 
-  def num(d: Double): String = if (d == math.rint(d) && math.abs(d) < 1e15) d.toLong.toString else f"$d%.6f".reverse.dropWhile(_ == '0').reverse
+  /** A number for the file's metadata: whole numbers as integers, others as Java writes a double (read back exactly). */
+  def num(d: Double): String = if (d == math.rint(d) && math.abs(d) < 1e15) d.toLong.toString else java.lang.Double.toString(d)
 
   /** Hunts the stream for the first record frame whose records are D apart (with n = 1: D after the previous
     * frame's record); returns the bytes after that frame.
