@@ -9,15 +9,20 @@ package moire.explain
   * time as the square of it (a ramp), a change linear in one does not replicate on the halves of the other.
   */
 object Identify {
-  def why(e: SignalEngine, c: Cand, refuted: Set[String] = Set.empty): Option[String] = c.spec.terms.diff(e.spec.terms).headOption match {
+  /** The alternatives of a change in time and of one along the travel: each other (a scan at one speed, one way). */
+  val Travel = "a contrast change along the travel"
+  val Time = "a drift in time"
+
+  /** The alternative the record cannot tell the candidate from, and why (None: it can). */
+  def confound(e: SignalEngine, c: Cand, refuted: Set[String] = Set.empty): Option[(String, String)] = c.spec.terms.diff(e.spec.terms).headOption match {
     case Some(t @ (Term.Drift | Term.Warmup(_))) =>
       val travel = e.spec.terms.contains(Term.Contrast) || refuted(effects.ContrastAlongTravel.name)
-      val alts = (if (travel) Nil else Seq("a contrast change along the travel" -> (() => e.termCols(Term.Contrast)))) :+
+      val alts = (if (travel) Nil else Seq(Travel -> (() => e.termCols(Term.Contrast)))) :+
         ("an amplitude change with speed" -> (() => speedCols(e)))
       beyond(e, t, alts ++ fringeHarmonics(e))
     case Some(t @ (Term.Contrast | Term.ContrastSpline(_))) =>
       val inTime = e.spec.terms.exists(t => t == Term.Drift || t.isInstanceOf[Term.Warmup]) || refuted(effects.Drift.name)
-      val time = if (inTime) Nil else Seq("a drift in time" -> (() => e.termCols(Term.Drift)))
+      val time = if (inTime) Nil else Seq(Time -> (() => e.termCols(Term.Drift)))
       beyond(e, t, time ++ fringeHarmonics(e))
     case _ => None
   }
@@ -57,7 +62,7 @@ object Identify {
   }
 
   /** The alternatives' columns are made one at a time (a long record's columns are large). */
-  private def beyond(e: SignalEngine, t: Term, alts: Seq[(String, () => IndexedSeq[Col])]): Option[String] = {
+  private def beyond(e: SignalEngine, t: Term, alts: Seq[(String, () => IndexedSeq[Col])]): Option[(String, String)] = {
     val base = e.baseCols(e.s1, e.s2, e.c1, e.c2); val own = e.termCols(t)
     alts.iterator.flatMap { case (name, make) =>
       val alt = make()
@@ -66,9 +71,9 @@ object Identify {
         case (Some(a), Some(b)) =>
           val gain = a - b - t.params * e.lnN
           if (gain > SignalExplain.Threshold) None
-          else Some(f"the record cannot tell it from $name: beyond that it lowers BIC by only $gain%.1f" +
-            (if (name.contains("(")) "" else f" (position and time correlate, r = ${correlation(e)}%.3f)"))
-        case (Some(_), None) => Some(s"the record cannot tell it from $name: the two are collinear")
+          else Some(name -> (f"the record cannot tell it from $name: beyond that it lowers BIC by only $gain%.1f" +
+            (if (name.contains("(")) "" else f" (position and time correlate, r = ${correlation(e)}%.3f)")))
+        case (Some(_), None) => Some(name -> s"the record cannot tell it from $name: the two are collinear")
         case _ => None
       }
     }.nextOption()

@@ -172,7 +172,8 @@ object SignalExplain {
         // what the record cannot tell from an alternative is still measured when the budget for small ones allows: too
         // small to matter, it is negligible (a drift of 0.08 LSB was "unexplained: cannot tell it from a contrast change")
         val quant = Quantization.why(e, c)
-        val ident = if (quant.isDefined) None else Identify.why(e, c, refuted.toSet)
+        val confound = if (quant.isDefined) None else Identify.confound(e, c, refuted.toSet)
+        val ident = confound.map(_._2)
         (if (quant.isDefined) quant else if (ident.isDefined && smallTries >= MaxTries) ident else None) match {
           case Some(why) => if (SignalEngine.debug) System.err.println(s"not tried ${c.effect}/${c.channel}: $why"); reject(c, why)
           case None =>
@@ -201,8 +202,11 @@ object SignalExplain {
             val why = if (!(bic0 - e.bic > 0)) Some("") else if (size < floor) Some("negligible")
               else if (ident.isDefined) ident
               else { val r = Replicate.why(e, prev); if (r.isDefined) refuted += c.effect; r }
-            // (what the record cannot tell from an alternative is kept, unnamed, when it is material and replicates)
-            val unnamedNow = ident.isDefined && why == ident && Replicate.why(e, prev).isEmpty
+            // (a change in time that the record cannot tell from one along the travel, or the reverse, is kept, unnamed,
+            // when it is material and replicates: no other candidate is the alternative. One it cannot tell from harmonics
+            // of the fringe or from a change with speed stays out: those are candidates of their own, found in their turn)
+            val unnamedNow = ident.isDefined && why == ident && confound.exists(x => x._1 == Identify.Travel || x._1 == Identify.Time) &&
+              Replicate.why(e, prev).isEmpty
             lap("replicate")
             if (SignalEngine.debug) System.err.println(s"tried ${c.effect}/${c.channel}: " + why.orElse(claimed(claims, before, claimedNow)).fold("kept")(w => if (w.isEmpty) "no gain" else w))
             // what the model now follows because of the change: glitches its misfit hid stand out; the motion may not
