@@ -148,6 +148,8 @@ lazy val root = (project in file("."))
       s"_moire_default_heap=$defaultHeap", IO.read(baseDirectory.value / "src" / "cli" / "heap.sh"),
       // -h is moire's, not the launcher script's (whose usage text would exit 1)
       """_moire_args=(); for a in "$@"; do [[ "$a" == "-h" ]] && a=--help; _moire_args+=("$a"); done; set -- "${_moire_args[@]}"""",
+      // the launcher script's own options that would reach Java as no option of it: one line, exit 2
+      IO.read(baseDirectory.value / "src" / "cli" / "launcher-args.sh"),
       "no_version_check=1",
       // the major version of the java this script runs (JAVA_HOME's, else PATH's), from its release file: no second JVM
       """_moire_jv=$(j="$JAVA_HOME"; [[ -n "$j" && -x "$j/bin/java" ]] || j=$(dirname "$(dirname "$(readlink -f "$(command -v java)" 2>/dev/null)")"); sed -n 's/^JAVA_VERSION="\([0-9]*\).*/\1/p' "$j/release" 2>/dev/null)""",

@@ -348,6 +348,13 @@ class BadInputSpec extends AnyFlatSpec with Matchers {
     "replay", rec("tc-replay.csv", head + "sin,cos\n" + pinRows(2000, _ & 4095)), "--out", (dir / "tc-replay-out.csv").toString)
   bad("an unknown --design", "--design: 'nosuch' is not a replayable design")("replay", good.toString, "--design", "nosuch")
   bad("--counts 3", "--counts (M) must be a power of two")("replay", good.toString, "--counts", "3")
+  // it blamed --input-bits and --counts, which the user had not typed (another tool's fuzz sweep, F20)
+  bad("a recording of 17-bit codes", "the recording's metadata adc_bits '17' is not one the subdivider takes (must be in 4..16, got 17); give --input-bits")(
+    "replay", rec("b17-replay.csv", "# moire-recording v1\n# sample_rate_hz: 1000000\n# adc_bits: 17\nsin,cos\n" + rows(100)))
+  bad("a recording whose counts_per_period is 1000", "the recording's metadata counts_per_period '1000' is not one the subdivider takes")(
+    "replay", rec("m1000-replay.csv", head + "# counts_per_period: 1000\nsin,cos\n" + rows(100)))
+  bad("--out=FILE onto a text file, before the run", "holds text, and this command writes a moire-replay file")(
+    "replay", s"--out=${rec("notes-replay.txt", "my notes\n")}", good.toString)
   bad("an unknown option last", "Unknown argument: --bogus (see replay --help)")(
     "replay", good.toString, "--out", (dir / "bogus.csv").toString, "--quiet", "--bogus")
   bad("an unknown option with a value", "Unknown argument: --bogus")("replay", good.toString, "--bogus", "3")
@@ -649,6 +656,17 @@ class BadInputSpec extends AnyFlatSpec with Matchers {
     "monitor", "--replay", rec("m0-replay.csv", head + "# counts_per_period: 0\nsin,cos\n" + rows(100)), "--out", (dir / "mon").toString)
   bad("record --port of a folder", "is a folder, not a serial port")("record", "--port", folderIn.toString, "--seconds", "1", "--out", (dir / "r.csv").toString)
   bad("record --port ''", "--port is empty")("record", "--port", "", "--seconds", "1", "--out", (dir / "r.csv").toString)
+
+  bad("explain --subdiv with --no-rtl", "--subdiv sets the subdivider the RTL check runs, and --no-rtl leaves that check out")(
+    "explain", good.toString, "--no-rtl", "--subdiv", "--counts 4096")
+  "An error line" should "cut a value of thousands of characters (a 100 kB --effect was told back whole)" in {
+    val (code, err) = runCli("simulate", "--samples", "100", "--out", (dir / "long.csv").toString, "--effect", "a" * 100000)
+    withClue(err.take(500)) {
+      code shouldBe 2
+      err.length should be < 1000
+      err should include("... (100002 characters)") // the value in its quotes
+    }
+  }
 
   behavior of "numbers (decimal only, the same everywhere)"
   bad("a sample rate of 1000000d (Java syntax)", "sample_rate_hz '1000000d' is not a sample rate")(

@@ -29,3 +29,22 @@ class HeapSpec extends AnyFlatSpec with Matchers {
     heapMb("-Dx=1", "-Xmx768m") shouldBe 768
   }
 }
+
+/** The launcher script's own options (src/cli/launcher-args.sh): `-Jfoo` made java look for a main class `foo` and print
+  * its ClassNotFoundException (another tool's fuzz sweep, F20).
+  */
+class LauncherArgsSpec extends AnyFlatSpec with Matchers {
+  private val script = os.pwd / "src" / "cli" / "launcher-args.sh"
+  private def run(args: String*): (Int, String) = {
+    val r = os.proc(Seq("bash", "-c", """. "$0"; echo passed""", script.toString) ++ args).call(check = false, stderr = os.Pipe)
+    (r.exitCode, (r.out.text() + r.err.text()).trim)
+  }
+
+  "the launcher" should "refuse a -J that carries no Java option, and -main, in one line" in {
+    run("-Jfoo", "simulate") shouldBe ((2, "moire: -Jfoo: -J passes an option to Java (like -J-Xmx8g), and 'foo' is none"))
+    run("simulate", "-J") shouldBe ((2, "moire: -J needs a Java option joined to it (like -J-Xmx8g)"))
+    run("-main", "foo") shouldBe ((2, "moire: -main is no option of moire's (its commands: moire --help)"))
+    run("-J-Xmx1g", "simulate", "--samples", "100") shouldBe ((0, "passed"))
+    run("explain", "x.csv") shouldBe ((0, "passed"))
+  }
+}

@@ -383,31 +383,41 @@ object Main {
       }
       parser.runEither(argv.toSeq, allowPositional = false) match {
         case Left(msg) =>
-          System.err.println(s"moire: ${oneLine(msg)}")
+          say(s"${oneLine(msg)}")
           2
         case Right(_) => 0
       }
     } catch {
-      case e: moire.MoireError => System.err.println(s"moire: ${e.getMessage}"); 2
+      case e: moire.MoireError => say(s"${e.getMessage}"); 2
       // Last resort: what a library let through still becomes one line in words, never a class name.
-      case e: java.io.IOException => System.err.println(s"moire: ${moire.files.SafeWrite.reason(e)}"); 2
+      case e: java.io.IOException => say(s"${moire.files.SafeWrite.reason(e)}"); 2
       case e: java.nio.file.InvalidPathException =>
-        System.err.println(s"moire: ${plain(e.getInput)}: a file name this locale's character set (${System.getProperty("sun.jnu.encoding")}) " +
+        say(s"${plain(e.getInput)}: a file name this locale's character set (${System.getProperty("sun.jnu.encoding")}) " +
           "cannot hold; run moire under a UTF-8 locale, e.g. LC_CTYPE=C.UTF-8"); 2
       case e: IllegalArgumentException =>
-        System.err.println(s"moire: ${plain(Option(e.getMessage).getOrElse("invalid value").stripPrefix("requirement failed: "))}"); 2
+        say(s"${plain(Option(e.getMessage).getOrElse("invalid value").stripPrefix("requirement failed: "))}"); 2
       case e: OutOfMemoryError =>
         if (sys.env.contains("MOIRE_DEBUG")) e.printStackTrace()
-        System.err.println(s"moire: out of memory in a heap of ${Runtime.getRuntime.maxMemory / 1048576} MB; give the JVM more " +
+        say(s"out of memory in a heap of ${Runtime.getRuntime.maxMemory / 1048576} MB; give the JVM more " +
           "(JAVA_OPTS=-Xmx8g moire ..., or moire -J-Xmx8g ...) or a shorter recording"); 2
       case e: Exception =>
         if (sys.env.contains("MOIRE_DEBUG")) e.printStackTrace()
-        System.err.println(s"moire: internal error: ${plain(Option(e.getMessage).getOrElse("no message"))} (MOIRE_DEBUG=1 shows where)"); 2
+        say(s"internal error: ${plain(Option(e.getMessage).getOrElse("no message"))} (MOIRE_DEBUG=1 shows where)"); 2
     } }
     // a command that failed leaves no empty output folder behind (its outputs' folders are made before the work)
     if (code != 0) moire.files.SafeWrite.removeEmptyMade()
     code
   }
+
+  /** An error line: "moire: " and the message, a value of thousands of characters in it cut (a 100 kB --effect was told
+    * back whole).
+    */
+  private def say(msg: String): Unit = System.err.println("moire: " + brief(msg))
+  def brief(msg: String): String = {
+    val cut = LongWord.replaceAllIn(msg, m => java.util.regex.Matcher.quoteReplacement(m.matched.take(100) + s"... (${m.matched.length} characters)"))
+    if (cut.length > 2000) cut.take(2000) + s"... (${cut.length} characters)" else cut
+  }
+  private val LongWord = "\\S{241,}".r
 
   /** An option of the command given twice (`explain --plots a --plots b` took the last): the parser refuses that for a
     * command without a list of files, and this says it alike for every command. Only the command's own options count

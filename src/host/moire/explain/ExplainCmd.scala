@@ -202,8 +202,11 @@ object ExplainCmd {
           val (f, notes) = BoardCheck.run(p.toString, rec, opts, say)
           r.report.copy(findings = r.report.findings ++ f, notes = r.report.notes ++ notes)
         }.getOrElse(r.report)
+        // --subdiv given for a recording the RTL check cannot run on: said, not dropped
+        val unused = rtl.filter(o => o.nonEmpty && !rec.extra.contains("position")).map(_ =>
+          "--subdiv not used: the RTL check runs on a recording with the board's position column, and this one has none")
         // what the reader left out (a last row cut short) comes first among the notes
-        checked.copy(notes = rec.warnings ++ checked.notes)
+        checked.copy(notes = rec.warnings ++ checked.notes ++ unused)
       }
     } finally progress.close()
     // new keys beside the report's: the readouts of the interpolation error, the HTML and the plots written
@@ -306,6 +309,7 @@ object ExplainCmd {
     // emit-subdiv options start with "--": a file name there was taken as the option's value
     sd.filter(v => v.trim.nonEmpty && !v.trim.startsWith("-")).foreach(v => throw new ExplainError(
       s"--subdiv takes the subdivider's emit-subdiv options as one quoted word (e.g. --subdiv \"--counts 4096\"), got '$v'"))
+    if (nr && sd.exists(_.trim.nonEmpty)) throw new ExplainError("--subdiv sets the subdivider the RTL check runs, and --no-rtl leaves that check out: give one of them")
     val floor = try Materiality(ml.getOrElse(Materiality.MinLsb), mn.getOrElse(Materiality.MinNoise))
       catch { case e: IllegalArgumentException => throw new ExplainError(e.getMessage.stripPrefix("requirement failed: ")) }
     explain(files.result(), j, p, m, q, if (nr) None else Some(sd.toSeq.flatMap(_.trim.split("\\s+")).filter(_.nonEmpty)), h, hd, floor, ss)

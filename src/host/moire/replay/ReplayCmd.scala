@@ -22,12 +22,21 @@ object ReplayCmd {
   /** Options of the subdivider: the recording's metadata first, then what the user gave (which wins). */
   def config(opts: Seq[String], meta: Map[String, String]): SubdivConfig = {
     def userGave(o: String) = opts.contains(o)
-    val fromMeta = Seq("--input-bits" -> meta.get("adc_bits"), "--adc-format" -> Recording.format(meta).toOption.map(_.name), "--counts" -> meta.get("counts_per_period"))
-      .collect { case (o, Some(v)) if !userGave(o) => Seq(o, v) }.flatten
-    subdivParser.constructEither(fromMeta ++ opts, allowPositional = false) match {
-      case Right(c) => c
-      case Left(msg) => throw new ReplayError(moire.options.SubdivCmd.oneLine(msg))
+    val keys = Seq("--input-bits" -> "adc_bits", "--adc-format" -> "adc_format", "--counts" -> "counts_per_period")
+    val taken = Seq("--input-bits" -> meta.get("adc_bits"), "--adc-format" -> Recording.format(meta).toOption.map(_.name), "--counts" -> meta.get("counts_per_period"))
+      .collect { case (o, Some(v)) if !userGave(o) => (o, v) }
+    val line = try subdivParser.constructEither(taken.flatMap { case (o, v) => Seq(o, v) } ++ opts, allowPositional = false) match {
+      // (the subdivider's own checks run where its parameters are made)
+      case Right(c) => c.params; return c
+      case Left(msg) => moire.options.SubdivCmd.oneLine(msg)
+    } catch {
+      case e: moire.options.OptionError => e.getMessage
+      case e: IllegalArgumentException => "--" + String.valueOf(e.getMessage).stripPrefix("requirement failed: ").stripPrefix("--")
     }
+    // a value the recording's metadata gave, not the user: the metadata is named
+    throw new ReplayError(taken.find { case (o, _) => line.startsWith(o + " ") || line.startsWith(o + ":") }.fold(line) { case (o, v) =>
+      s"the recording's metadata ${keys.toMap.apply(o)} '$v' is not one the subdivider takes (${line.stripPrefix(o).stripPrefix(":").trim}); give $o to replay it otherwise"
+    })
   }
 
   /** The pins of a recording, or one line saying why it cannot be replayed exactly. */
@@ -100,6 +109,8 @@ object ReplayCmd {
     val dest = out.fold(os.Path(moire.files.Stem.of(path) + "-replay.csv", os.pwd))(moire.files.SafeWrite.fileArg)
     moire.files.SafeWrite.refuseInputs(dest, Seq(path))
     if (out.isEmpty) moire.files.SafeWrite.checkPicked(dest, OutputCsv.Magic, "--out FILE") else moire.files.SafeWrite.checkFile(dest)
+    // a file of another kind under --out is refused now, not after the build and the run
+    moire.files.SafeWrite.checkKind(dest, "a " + OutputCsv.Magic.drop(2).takeWhile(c => c.isLetterOrDigit || c == '-') + " file")
     var t = System.nanoTime()
     def lap(): Double = { val now = System.nanoTime(); val s = (now - t) / 1e9; t = now; s }
     val rec = Recording.read(path)
