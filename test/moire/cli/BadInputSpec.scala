@@ -431,6 +431,17 @@ class BadInputSpec extends AnyFlatSpec with Matchers {
   bad("metadata samples that is no number", "metadata samples 'abc' is not a whole number of rows")("explain", rec("nsamp.csv", head + "# samples: abc\nsin,cos\n" + rows(200)))
 
   // 77 records lost on the link: the rows after them are 77 samples later than their row numbers say
+  // each was explained as if it were sound (another tool's fuzz sweep, F20)
+  private def indexed(name: String, meta: String, index: Int => String) =
+    rec(name, head + meta + "sin,cos,sample_index\n" + rows(2000).linesIterator.zipWithIndex.map { case (r, i) => s"$r,${index(i)}" }.mkString("\n") + "\n")
+  bad("a recording of decimation 0", "metadata decimation '0' is not a whole number from 1")(
+    "explain", "--quiet", "--no-rtl", indexed("idx-dec0.csv", "# decimation: 0\n", i => (100 * i).toString))
+  bad("a recording whose decimation is not its index's step", "sample_index steps by 100 from row to row, and the metadata says decimation 7")(
+    "explain", "--quiet", "--no-rtl", indexed("idx-dec7.csv", "# decimation: 7\n", i => (100 * i).toString))
+  bad("a recording whose sample_index runs backwards", "sample_index steps from 400000 to 399900 (data rows 1 and 2)")(
+    "explain", "--quiet", "--no-rtl", indexed("idx-back.csv", "", i => (400000 - 100 * i).toString))
+  bad("a recording whose sample_index holds fractions", "sample_index 0.5 (data row 1) is no count of ADC samples")(
+    "explain", "--quiet", "--no-rtl", indexed("idx-frac.csv", "", i => s"${i}.5"))
   bad("a recording whose sample_index skips records", "sample_index steps by 78 from 999 to 1077 (data row 1001)")("explain", rec("gap.csv",
     head + "sin,cos,sample_index\n" + rows(2000).linesIterator.zipWithIndex.collect { case (r, i) if i < 1000 || i >= 1077 => s"$r,$i" }.mkString("\n") + "\n"), "--quiet", "--no-rtl")
 

@@ -256,15 +256,28 @@ object ExplainCmd {
     * other than its first step (a decimated recording steps by its decimation throughout). The fit's time axis is the
     * row number over the sample rate: records lost on the link would shift every later sample's time.
     */
-  def gap(rec: Recording): Option[String] = rec.extra.get("sample_index").filter(_.length > 2).flatMap { ix =>
-    def step(i: Int) = (ix(i).toLong - ix(i - 1).toLong) & 0xffffffffL
-    val d = step(1)
-    (2 until ix.length).find(i => step(i) != d).map { i =>
-      def show(x: Double) = if (x == math.rint(x)) x.toLong.toString else x.toString
-      s"sample_index steps by ${step(i)} from ${show(ix(i - 1))} to ${show(ix(i))} (data row ${i + 1}) where it stepped by $d before: " +
-        "records are missing, and the fit's time axis needs every row in its place; explain the rows before and after apart"
-    }
+  def gap(rec: Recording): Option[String] = {
+    // the decimation (ADC samples per row) a file states: a whole number from 1, and the index's step where it has one
+    val dec = rec.meta.get("decimation").map(v => v -> moire.numbers.Decimal.double(v).filter(d => d >= 1 && d == math.rint(d) && d <= MaxCount))
+    def show(x: Double) = if (x == math.rint(x)) x.toLong.toString else x.toString
+    dec.collect { case (v, None) => s"metadata decimation '$v' is not a whole number from 1 to ${MaxCount.toLong} (ADC samples per row)" }.orElse(
+      rec.extra.get("sample_index").filter(_.length > 1).flatMap { ix =>
+        def step(i: Int) = (ix(i).toLong - ix(i - 1).toLong) & 0xffffffffL
+        val d = step(1)
+        ix.indices.find(i => !(ix(i) == math.rint(ix(i)) && ix(i) >= 0 && ix(i) <= MaxCount)).map(i =>
+          s"sample_index ${show(ix(i))} (data row ${i + 1}) is no count of ADC samples (a whole number from 0 to ${MaxCount.toLong})")
+          .orElse(if (d == 0 || d > (1L << 31)) Some(s"sample_index steps from ${show(ix(0))} to ${show(ix(1))} (data rows 1 and 2): it counts ADC samples, " +
+            "up (modulo 2^32) by the decimation each row") else None)
+          .orElse(dec.flatMap(_._2).filter(_ != d.toDouble).map(x => s"sample_index steps by $d from row to row, and the metadata says decimation ${show(x)}: " +
+            "one of them is wrong (the fit's time axis is the row number over the sample rate)"))
+          .orElse((2 until ix.length).find(i => step(i) != d).map { i =>
+            s"sample_index steps by ${step(i)} from ${show(ix(i - 1))} to ${show(ix(i))} (data row ${i + 1}) where it stepped by $d before: " +
+              "records are missing, and the fit's time axis needs every row in its place; explain the rows before and after apart"
+          })
+      })
   }
+  /** A 32-bit count's largest value (the board's sample index wraps after it). */
+  private val MaxCount = 4294967295.0
 
   /** A channel's share of samples at the end codes above which a recording is not explained. */
   val MaxRailShare = 0.5
