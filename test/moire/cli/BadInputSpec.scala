@@ -655,6 +655,14 @@ class BadInputSpec extends AnyFlatSpec with Matchers {
     val r = new scala.util.Random(4)
     (0 until 6000).map { i => s"${2048 + (1500 * math.sin(2 * math.Pi * i / 150.0)).round},${2048 + (90 * r.nextGaussian()).round}" }.mkString("\n") + "\n"
   }))
+  // the head moved over 1 % of a period: the cos channel barely changed, and it was "is the cos input connected?" (F20)
+  "explain" should "refuse a recording over 1 % of a fringe period as too short an arc" in {
+    val f = dir / "creep-1pc.csv"
+    val (c0, e0) = runCli("simulate", "--samples", "1000", "--motion", "constant:100", "--out", f.toString)
+    withClue(e0) { c0 shouldBe 0 }
+    val (code, err) = runCli("explain", "--no-rtl", "--quiet", f.toString)
+    withClue(err) { code shouldBe 2; err should include("too short an arc: the read head moved over less than one fringe period") }
+  }
   "explain --model" should "take one effect named many times as one term" in {
     val m = rec("m-same.json", ujson.write(ujson.Obj("effects" -> ujson.Arr.from(Seq.fill(5000)(ujson.Obj("effect" -> "harmonic", "order" -> 3, "amplitude_rel" -> 1e-3))))))
     val (code, err) = runCli("explain", good.toString, "--quiet", "--no-rtl", "--model", m)

@@ -499,26 +499,40 @@ object SignalExplain {
     else if (!(a > MinAmplitudeNoise * sd))
       Some(f"no fringe: the fitted amplitude ${a / e.lsb}%.3g LSB is not above ${MinAmplitudeNoise}%.0f x the noise " +
         f"(${sd / e.lsb}%.3g LSB rms); are the inputs connected, and the read head over the scale and moving?")
-    else if (shortArc(e)) {
-      // a head that creeps over part of a period draws an arc, not the ellipse: offsets, amplitudes and the phase error
-      // trade against each other along it (another generator's creep of 0.3 period was fitted with offsets of 0.37 FS).
-      // The arc's extent is the fit's, from an ellipse the arc does not fix: no figure of it is given
-      Some("too short an arc: the read head moved over less than one fringe period, so the signals trace an arc of the " +
-        "ellipse, not the whole of it, and an arc does not fix its offsets, amplitudes and phase error; record while the " +
-        "head moves over at least one whole fringe period")
-    }
+    // a head that creeps over part of a period draws an arc, not the ellipse: offsets, amplitudes and the phase error
+    // trade against each other along it (another generator's creep of 0.3 period was fitted with offsets of 0.37 FS).
+    // The arc's extent is the fit's, from an ellipse the arc does not fix: no figure of it is given
+    else if (shortArc(e)) Some(ShortArc)
     else {
       // one channel without its fringe (a dead or unconnected input that only carries noise): the other's phase is then
       // fitted against noise, and what is left looks like pickup of half the full scale
       // (the residual's rms first: the floor is below it, and only a channel that fails it pays for the floor's passes)
       def floorOf(r: Array[Double]) = Adequacy.floorOf(r, null, 0, e.n, Adequacy.JudgeOrder, null)
-      Seq(("sin", e.ampS, e.resS, e.noise.varS), ("cos", e.ampC, e.resC, e.noise.varC)).collectFirst {
-        case (ch, amp, res, v) if !(amp > MinAmplitudeNoise * math.sqrt(v)) && !(amp > MinAmplitudeNoise * floorOf(res)) =>
+      Seq(("sin", e.ampS, e.resS, e.noise.varS, e.yc), ("cos", e.ampC, e.resC, e.noise.varC, e.ys)).collectFirst {
+        case (ch, amp, res, v, other) if !(amp > MinAmplitudeNoise * math.sqrt(v)) && !(amp > MinAmplitudeNoise * floorOf(res)) =>
+        // the other channel that never goes up and down across its middle has no fringe either: the head moved over a
+        // small part of a period (1 % of one was "is the cos input connected?"), and one channel barely changes there
+        if (crossings(other, 3 * sd) < 2) ShortArc else {
         val f = floorOf(res)
         f"no fringe on the $ch channel: its fitted amplitude ${amp / e.lsb}%.3g LSB is not above ${MinAmplitudeNoise}%.0f x its noise " +
           f"(${f / e.lsb}%.3g LSB rms) while the other channel's is ${(if (ch == "sin") e.ampC else e.ampS) / e.lsb}%.3g LSB; is the $ch input connected?"
+        }
       }
     }
+  }
+  private val ShortArc = "too short an arc: the read head moved over less than one fringe period, so the signals trace an arc of the " +
+    "ellipse, not the whole of it, and an arc does not fix its offsets, amplitudes and phase error; record while the " +
+    "head moves over at least one whole fringe period"
+  /** Times a channel crosses the middle of its range, by more than `margin` each way (a fringe period: two). */
+  private def crossings(y: Array[Double], margin: Double): Int = {
+    var lo = Double.PositiveInfinity; var hi = Double.NegativeInfinity; var i = 0
+    while (i < y.length) { lo = math.min(lo, y(i)); hi = math.max(hi, y(i)); i += 1 }
+    val mid = 0.5 * (lo + hi); var side = 0; var k = 0; i = 0
+    while (i < y.length) {
+      if (y(i) > mid + margin) { if (side < 0) k += 1; side = 1 } else if (y(i) < mid - margin) { if (side > 0) k += 1; side = -1 }
+      i += 1
+    }
+    k
   }
 
   /** The fitted phase spans less than a fringe period and visits less than `MinArc` of it (in bins of 10 degrees).
