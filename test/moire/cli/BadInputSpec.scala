@@ -500,6 +500,13 @@ class BadInputSpec extends AnyFlatSpec with Matchers {
   bad("a monitor replay with a board's link rate", "--baud applies to a board (--port DEV); a replay plays the file at its own rate")(
     "monitor", "--replay", good.toString, "--baud", "115200")
   bad("a simulated board with a decimation", "--decimation applies to a board (--port DEV)")("monitor", "--simulate", "--decimation", "100")
+  // each was taken (another tool's fuzz sweep, F20)
+  bad("a simulated board of 1000 counts per period", "--counts-per-period must be a power of two from 4 to 65536")(
+    "monitor", "--simulate", "--counts-per-period", "1000", "--out", (dir / "mon").toString)
+  bad("a grating of 1.5 lines a turn", "--lines-per-rev counts a grating's lines on a turn: a whole number, got 1.5")(
+    "monitor", "--simulate", "--lines-per-rev", "1.5", "--out", (dir / "mon").toString)
+  bad("board ulx3s at 65 MHz with the default ADC clock", "--clock-hz 65000000: the default --adc-clock-hz 50000000 does not divide it")(
+    "board", "ulx3s", "--clock-hz", "65000000", "--out", (dir / "bu").toString)
   private val samplesModel = dir / "samples-model.json"
   os.write.over(samplesModel, """{"samples": 3000, "noise_rms": 0.001}""")
   bad("a model file and an option that set the same thing", "sets noise_rms, and --noise was given too")(

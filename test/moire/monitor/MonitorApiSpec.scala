@@ -58,6 +58,8 @@ class MonitorApiSpec extends AnyFlatSpec {
         ("api/burst", "[1,2", 400, "not JSON"),
         ("api/tolerances", """{"phase_deg": -1}""", 400, "phase_deg must be"),
         ("api/tolerances", """{"amplitude_min_pct": 99}""", 400, "must be below"),
+        // a mark no converter shows (another tool's fuzz sweep took 500 %)
+        ("api/tolerances", """{"amplitude_max_pct": 500}""", 400, "amplitude_max_pct must be a number above 0 and at most 100"),
         ("api/tolerances", """{"speed": 1}""", 400, "unknown tolerance"))) {
         val r = post(base + url, body)
         assert(r.statusCode == code && r.body.contains(msg), s"$url $body: ${r.statusCode} ${r.body}")

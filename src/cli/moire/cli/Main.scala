@@ -254,8 +254,14 @@ object Main {
       // options of the compensated design change nothing in the others: given there, they are a mistake
       for ((o, v) <- Seq("--lines" -> lines, "--harmonics" -> harmonics) if v.isDefined && design != "compensated")
         throw new UsageError(s"$o applies to --design compensated only, not $design")
-      val p = BoardCmd.params(name, design, adcClockHz, adcFormat, decimation, baud, frameRecords, fifoDepth, glitchFilter, counts, clockSource,
-        clockHz, lines.getOrElse(16384), harmonics.getOrElse(4))
+      val p = try BoardCmd.params(name, design, adcClockHz, adcFormat, decimation, baud, frameRecords, fifoDepth, glitchFilter, counts, clockSource,
+        clockHz, lines.getOrElse(16384), harmonics.getOrElse(4)) catch {
+        // the default ADC clock that a --clock-hz given does not divide: said as that, not as an --adc-clock-hz typed
+        case e: BoardCmd.BadOption if e.getMessage.startsWith("--adc-clock-hz") && given("--adc-clock-hz").isEmpty =>
+          val k = (math.max(1, math.ceil(clockHz / 65e6).toInt) to 1000).find(clockHz % _ == 0)
+          throw new UsageError(s"--clock-hz $clockHz: the default --adc-clock-hz $adcClockHz does not divide it; give --adc-clock-hz, " +
+            s"--clock-hz divided by an integer 1..1000" + k.fold("")(k => s" (${clockHz / k} is the fastest within the AD9226's 65 MS/s)"))
+      }
       moire.designs.BoardProject.run(name, p, out.fold(os.Path(s"generated/$name", os.pwd))(folder(_))).foreach(println)
     } catch { case e: BoardCmd.BadOption => throw new UsageError(e.getMessage) }
   }

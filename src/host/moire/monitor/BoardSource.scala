@@ -38,7 +38,7 @@ final class BoardSource(port: String, baud: Int, decimation: Option[Long], user:
             lock.lock()
             val s = try {
               val c = new BoardClient(l, timeoutMs)
-              val setup = Recorder.setup(c, opts(1, "monitor.csv"))
+              val setup = Recorder.setup(c, opts(1, "monitor.csv"), hint = "")
               val depth = if (c.read(Registers.Version) >= 2) Some(c.read(Registers.BurstDepth)) else None
               Some((setup, depth, c.decoder.pending))
             } catch {

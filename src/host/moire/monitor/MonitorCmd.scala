@@ -24,6 +24,10 @@ object MonitorCmd {
     for ((k, v) <- Seq("--counts-per-period" -> o.scale.countsPerPeriod, "--period-um" -> o.scale.periodUm,
       "--lines-per-rev" -> o.scale.linesPerRev, "--full-scale-v" -> o.scale.fullScaleV); x <- v)
       if (!(x > 0) || x.isInfinite) throw new MonitorError(s"$k must be a positive finite number, got $x")
+    // a board's M (the simulated one's too) is a power of two, as record and board take it; a grating has whole lines
+    if (o.replay.isEmpty) o.scale.countsPerPeriod.filterNot(m => m == math.rint(m) && moire.stream.Recorder.countsOk(m.toLong)).foreach(m =>
+      throw new MonitorError(s"--counts-per-period must be a power of two from 4 to 65536 (a board's M, counts per grating period), got $m"))
+    o.scale.linesPerRev.filter(l => l != math.rint(l)).foreach(l => throw new MonitorError(s"--lines-per-rev counts a grating's lines on a turn: a whole number, got $l"))
     if (o.bind.trim.isEmpty) throw new MonitorError("--bind: the address is empty; give one of this computer's (127.0.0.1 by default, 0.0.0.0 for all)")
     val notHere = new MonitorError(s"--bind '${o.bind}' is not an address of this computer")
     val a = try java.net.InetAddress.getByName(o.bind) catch { case _: java.net.UnknownHostException => throw notHere }

@@ -82,10 +82,12 @@ object Recorder {
 
   private val handHint = "; to record without commands give --listen-only with --decimation, --adc-clock-hz, --adc-format and --counts-per-period"
 
-  /** Register reads and the optional decimation write; hand values win over registers. */
-  def setup(c: BoardClient, o: RecordOptions): BoardSetup = {
-    BoardClient.check(c, o.baud, handHint)
-    def ask[T](f: => T): T = try f catch { case e: NoAnswer => throw new StreamError(e.getMessage + handHint) }
+  /** Register reads and the optional decimation write; hand values win over registers. `hint` ends an error of a
+    * board that does not answer (record's --listen-only; none for the monitor, which has no such option).
+    */
+  def setup(c: BoardClient, o: RecordOptions, hint: String = handHint): BoardSetup = {
+    BoardClient.check(c, o.baud, hint)
+    def ask[T](f: => T): T = try f catch { case e: NoAnswer => throw new StreamError(e.getMessage + hint) }
     val ctl = ask(c.read(Registers.Control))
     if (((ctl >> Registers.ControlBit.Enable) & 1) == 0)
       throw new StreamError(s"${o.port}: streaming is off on the board (control = $ctl); switch it on with: moire board-reg --port ${o.port} --write control=1")
