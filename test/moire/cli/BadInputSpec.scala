@@ -670,6 +670,15 @@ class BadInputSpec extends AnyFlatSpec with Matchers {
     val (code, err) = runCli("explain", "--no-rtl", "--quiet", f.toString)
     withClue(err) { code shouldBe 2; err should include("too short an arc: the read head moved over less than one fringe period") }
   }
+  "simulate --model" should "take --lines-per-rev and --effect beside a recording's model line (lines_per_rev null, effects [])" in {
+    val m = rec("m-line.json", """{"samples": 2000, "lines_per_rev": null, "effects": []}""")
+    val (c1, e1) = runCli("simulate", "--model", m, "--lines-per-rev", "1000", "--out", (dir / "m-line-l.csv").toString)
+    withClue(e1) { c1 shouldBe 0 }
+    moire.recording.Recording.read(dir / "m-line-l.csv").linesPerRev shouldBe Some(1000.0)
+    val (c2, e2) = runCli("simulate", "--model", m, "--effect", "harmonic:order=3,amplitude_rel=0.01", "--out", (dir / "m-line-e.csv").toString)
+    withClue(e2) { c2 shouldBe 0 }
+    os.read(dir / "m-line-e.csv") should include("\"effect\":\"harmonic\"")
+  }
   "explain --model" should "take one effect named many times as one term" in {
     val m = rec("m-same.json", ujson.write(ujson.Obj("effects" -> ujson.Arr.from(Seq.fill(5000)(ujson.Obj("effect" -> "harmonic", "order" -> 3, "amplitude_rel" -> 1e-3))))))
     val (code, err) = runCli("explain", good.toString, "--quiet", "--no-rtl", "--model", m)

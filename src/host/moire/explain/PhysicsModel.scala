@@ -246,13 +246,14 @@ object PhysicsModel {
   def fromJson(text: String, where: String, d: PhysicsModel, given: Map[String, String] = Map.empty): PhysicsModel = {
     val o = jsonObject(text, where)
     o.keys.find(k => !Keys.contains(k)).foreach(k => throw new ExplainError(s"$where: unknown key '$k' (a model file has ${Keys.mkString(", ")})"))
-    given.toSeq.sortBy(_._2).find(g => o.contains(g._1)).foreach { case (k, opt) =>
+    // (null and an empty list set nothing: a recording's `# model:` line names every key, lines_per_rev null, effects [])
+    given.toSeq.sortBy(_._2).find(g => o.get(g._1).exists(v => v != ujson.Null && !v.arrOpt.exists(_.isEmpty))).foreach { case (k, opt) =>
       throw new ExplainError(s"$where sets $k, and $opt was given too; give one of the two (the model file's value or the option)") }
     def n(k: String, dv: Double) = o.get(k).map(x => x.numOpt.getOrElse(throw new ExplainError(s"$where: $k must be a number"))).getOrElse(dv)
     val b = d.base
     val lpr = o.get("lines_per_rev") match {
       case None => d.linesPerRev
-      case Some(ujson.Null) => None
+      case Some(ujson.Null) => d.linesPerRev // (--lines-per-rev's, if given)
       case Some(x) => Some(x.numOpt.getOrElse(throw new ExplainError(s"$where: lines_per_rev must be a number or null")))
     }
     val v = Map("sample_rate_hz" -> d.sampleRateHz, "samples" -> d.samples.toDouble, "adc_bits" -> d.adc.bits.toDouble,
@@ -265,7 +266,7 @@ object PhysicsModel {
     val base = b.copy(amplitude = v("amplitude"), offsetSin = v("offset_sin"), offsetCos = v("offset_cos"), gainSin = v("gain_sin"),
       gainCos = v("gain_cos"), phaseErrorDeg = v("phase_error_deg"), noiseRms = v("noise_rms"), seed = v("seed").toLong)
     val fmt = o.get("adc").flatMap(_.strOpt).map(s => AdcFormat.parse(s).fold(e => throw new ExplainError(s"$where: $e"), identity)).getOrElse(d.adc.format)
-    val effects = effectsFromJson(o, where, d.effects)
+    val effects = effectsFromJson(o, where, d.effects) match { case Nil => d.effects; case es => es } // (an empty list: --effect's)
     try PhysicsModel(base, o.get("motion").map(motionFromJson(_, where)).getOrElse(d.motion), v("sample_rate_hz"), v("samples").toInt,
       Adc(v("adc_bits").toInt, fmt), lpr, effects)
     catch { case e: IllegalArgumentException => throw new ExplainError(s"$where: ${e.getMessage.stripPrefix("requirement failed: ")}") }
