@@ -14,7 +14,9 @@ final class Monitor(val live: Live, source: Source, out: os.Path, work: os.Path)
   val MaxBurst: Int = 1 << 20
 
   /** Parses a burst request {"samples": N, "trigger": "now", "pre": P, "wait_seconds": S}; Left with a message. */
-  def burstOptions(body: String): Either[String, BurstOptions] = {
+  /** A burst request's options, or why it is refused (a bad field, or what the source cannot capture). */
+  def burstOptions(body: String): Either[String, BurstOptions] = burstFields(body).flatMap(b => source.refuses(b).toLeft(b))
+  private def burstFields(body: String): Either[String, BurstOptions] = {
     val j = try moire.options.StrictJson.read(if (body.trim.isEmpty) "{}" else body) catch { case e: Exception => return Left(s"not JSON: ${e.getMessage.linesIterator.next().take(80)}") }
     val o = j.objOpt.getOrElse(return Left("expected a JSON object like {\"samples\": 16384, \"trigger\": \"now\"}"))
     val known = Set("samples", "trigger", "pre", "wait_seconds")

@@ -50,10 +50,13 @@ final class ReplaySource(rec: Recording, label: String, user: Scale) extends Sou
     thread.start()
   }
 
+  override def refuses(b: BurstOptions): Option[String] =
+    if (b.trigger != "now") Some(s"trigger '${b.trigger}': the $label has no trigger hardware; use now")
+    else if (b.samples < ExplainMin || b.samples > n) Some(s"samples must be in $ExplainMin..$n (the recording's length), got ${b.samples}")
+    else None
+
   def burst(b: BurstOptions, file: os.Path): Recording = {
-    if (b.trigger != "now") throw new MonitorError(s"trigger '${b.trigger}': the $label has no trigger hardware; use now")
-    if (b.samples < ExplainMin || b.samples > n)
-      throw new MonitorError(s"samples must be in $ExplainMin..$n (the recording's length), got ${b.samples}")
+    refuses(b).foreach(m => throw new MonitorError(m))
     val start = math.max(0L, cursor - b.pre)
     val ks = (start until start + b.samples).map(k => (k % n).toInt).toArray
     val out = Recording(rec.sampleRateHz, rec.adc, ks.map(rec.sin), ks.map(rec.cos),

@@ -10,6 +10,8 @@ trait Source extends AutoCloseable {
   def start(live: Live): Unit
   /** Captures a burst (blocking) into `file`; the recording written. Errors are [[MonitorError]]s. */
   def burst(b: BurstOptions, file: os.Path): Recording
+  /** Why this source cannot capture the burst `b` at all (a trigger it has no hardware for), said before it starts. */
+  def refuses(b: BurstOptions): Option[String] = None
 }
 
 /** A bad request or a failed operation of the monitor: one line for the user or the page. */
