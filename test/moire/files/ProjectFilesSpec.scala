@@ -44,3 +44,18 @@ class ProjectFilesSpec extends AnyFlatSpec with Matchers {
     os.read(out / "moire_de2_115.qsf") should include("my pin edits")
   }
 }
+
+/** A board project whose default decimation makes more records than its UART carries: said when it is written (it
+  * was a plain summary line, another tool's fuzz sweep, F20).
+  */
+class ProjectRateSpec extends AnyFlatSpec with Matchers {
+  "board" should "warn when the default decimation's records exceed what the UART carries" in {
+    val dir = os.temp.dir(prefix = "moire-project-rate-")
+    val (code, out, err) = moire.cli.CliInProcess.runCliOut("board", "de2-115", "--decimation", "1", "--out", (dir / "fast").toString)
+    withClue(err) { code shouldBe 0 }
+    out.linesIterator.filter(_.startsWith("WARNING: decimation 1 makes 50000000 records/s")).toSeq should have size 1
+    out should include("--decimation 74870 or more streams every record")
+    val (_, slow, _) = moire.cli.CliInProcess.runCliOut("board", "de2-115", "--out", (dir / "slow").toString)
+    slow should not include "WARNING"
+  }
+}

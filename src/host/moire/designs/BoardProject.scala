@@ -28,6 +28,10 @@ object BoardProject {
     val summary = s"${p.design.name}, system clock ${Mhz(p.clockHz)} MHz, ADC ${p.adcClockHz} Hz ${p.formatName}, " +
       f"decimation ${p.decimation} (${p.recordRate}%.1f records/s; the UART carries ${p.uartRecordRate}%.0f at ${p.baud} baud)"
     val latency = s"datapath latency ${p.datapathLatency} clocks after the capture register"
-    files.map(f => s"wrote $f") ++ Seq(s"top ${b.topName(p)}: $summary") ++ b.notes(p) ++ Seq(latency, b.nextStep(p, dir))
+    // a default decimation whose records the link cannot carry: the board would drop records from its first stream
+    val carries = if (p.recordRate <= p.uartRecordRate) Nil else Seq(f"WARNING: decimation ${p.decimation} makes ${p.recordRate}%.0f records/s and " +
+      f"${p.baud} baud carries at most ${p.uartRecordRate}%.0f: the board drops records until a larger one is written " +
+      f"(board-reg --write decimation=N); --decimation ${math.ceil(p.adcClockHz / p.uartRecordRate).toLong} or more streams every record")
+    files.map(f => s"wrote $f") ++ Seq(s"top ${b.topName(p)}: $summary") ++ carries ++ b.notes(p) ++ Seq(latency, b.nextStep(p, dir))
   }
 }
