@@ -8,10 +8,15 @@ import java.util.concurrent.{ExecutionException, Executors, Future, ThreadFactor
   * and the ones before it are done.
   */
 object Batch {
-  /** The fit's peak heap per sample of a long recording (docs/explain.md "Speed and memory": 239-255 MB per million
-    * at 4 M samples, 137 at 20 M; a short one's fixed part is small beside the heap).
+  /** The fit's peak heap per sample searched (docs/explain.md "Speed and memory": 342-372 MB per million at 1 M, all
+    * searched), up to [[SearchedAtMost]] samples; a longer record is searched on a subsample of at most about that many
+    * (`Interleaved`), and its other samples take [[HeapPerRow]] (their codes: 4 M 438 MB, 20 M 723-790 MB).
     */
-  val HeapPerSample = 260L
+  val HeapPerSample = 380L
+  val SearchedAtMost = 2500000L
+  val HeapPerRow = 10L
+  /** The heap explain needs for a recording of `rows` samples. */
+  def heapFor(rows: Long): Long = math.min(rows, SearchedAtMost) * HeapPerSample + rows * HeapPerRow
   /** The share of the heap (`Runtime.maxMemory`) the running files may take together. */
   val HeapShare = 0.7
 
@@ -53,7 +58,7 @@ object Batch {
   }
 
   /** The heap explain needs for a file: its rows (the file's size over the mean length of its first lines) times
-    * [[HeapPerSample]]; 0 for what cannot be read (its error comes at once).
+    * `heapFor`; 0 for what cannot be read (its error comes at once).
     */
   def heapOf(p: os.Path): Long =
     try {
@@ -61,6 +66,6 @@ object Batch {
       val in = java.nio.file.Files.newInputStream(p.toNIO)
       val head = try in.readNBytes(1 << 16) finally in.close()
       val lines = math.max(1, head.count(_ == '\n'))
-      (size.toDouble / head.length.max(1) * lines).toLong * HeapPerSample
+      heapFor((size.toDouble / head.length.max(1) * lines).toLong)
     } catch { case _: java.io.IOException | _: SecurityException => 0L }
 }
