@@ -58,7 +58,10 @@ object CalibrationData {
     moire.files.PathKind.notAFile(path).foreach(m => throw new CalibrationError(m))
     // through the bounded line reader: a binary file or one endless line is refused at once
     val (lines, ended) = try moire.recording.CsvText.linesEnded(path) catch { case e: moire.recording.RecordingError => throw new CalibrationError(e.getMessage) }
-    val d = parse(path.last, lines.mkString("\n"))
+    // errors name the file as given (explain's do), the data keep its name (the coefficients' source, the plots' stem)
+    val d = try parse(path.last, lines.mkString("\n")) catch {
+      case e: CalibrationError if e.getMessage.startsWith(path.last + ":") => throw new CalibrationError(path.toString + e.getMessage.drop(path.last.length))
+    }
     // a last data row without a line end is kept and said (a hand-made table often ends so; a cut file too)
     if (!ended && d.points.lastOption.exists(_.line == lines.size)) d.copy(cutShort = Some(lines.size)) else d
   }
