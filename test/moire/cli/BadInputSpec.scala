@@ -692,6 +692,9 @@ class BadInputSpec extends AnyFlatSpec with Matchers {
   bad("record --port of a folder", "is a folder, not a serial port")("record", "--port", folderIn.toString, "--seconds", "1", "--out", (dir / "r.csv").toString)
   bad("record --port ''", "--port is empty")("record", "--port", "", "--seconds", "1", "--out", (dir / "r.csv").toString)
 
+  // it ran a variant's built-in extra configuration alone, exit 0 (another tool's fuzz sweep, F11)
+  bad("a cost sweep whose --spread leaves no (n, b) of the grid", "--sweep: no (n, b) with b - 0 <= n <= b in these lists")(
+    "cost", "--sweep", "--spread", "0", "--sweep-iterations", "8", "--sweep-widths", "30", "--out", (dir / "cs0").toString)
   bad("explain --subdiv with --no-rtl", "--subdiv sets the subdivider the RTL check runs, and --no-rtl leaves that check out")(
     "explain", good.toString, "--no-rtl", "--subdiv", "--counts 4096")
   "An error line" should "cut a value of thousands of characters (a 100 kB --effect was told back whole)" in {

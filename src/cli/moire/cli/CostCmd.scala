@@ -46,7 +46,9 @@ object CostCmd {
     val pts = try grid.points catch {
       case e: IllegalArgumentException => throw new UsageError("--sweep: " + e.getMessage.stripPrefix("requirement failed: "))
     }
-    if (pts.isEmpty) throw new UsageError(s"--sweep: no (n, b) with b - $spread <= n <= b in these lists")
+    // (each variant's own extra configurations come on top of the grid: an empty grid ran them alone, without a word)
+    if (pts.isEmpty || !grid.widths.exists(b => grid.iterations.exists(n => n <= b && n >= b - spread)))
+      throw new UsageError(s"--sweep: no (n, b) with b - $spread <= n <= b in these lists")
     moire.files.SafeWrite.checkFolder(os.Path(out, os.pwd))
     json.foreach(f => moire.files.SafeWrite.checkMade(moire.files.SafeWrite.fileArg(f)))
     if (!Yosys.available) throw new UsageError("yosys not found on PATH (install yosys 0.23 or newer)")
