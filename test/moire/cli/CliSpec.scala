@@ -51,6 +51,13 @@ class CliSpec extends AnyFlatSpec {
     assert(out.contains("latency 14 clocks"))
   }
 
+  "design --function acos" should "pick and name the arccosine mode, with the launcher's command to emit it" in {
+    // it named asin-double (an arcsine) and `./sbt "run emit ..."` (another tool's fuzz sweep, F20)
+    val (code, out, err) = run("design", "--function", "acos", "--max-error", "1e-3")
+    assert(code == 0, err)
+    assert(out.contains("mode acos-double") && out.contains("emit it: moire emit --mode acos-double"), out)
+  }
+
   "No arguments" should "print the overview and write nothing" in {
     val cwd = os.temp.dir(prefix = "moire-noargs-")
     try {

@@ -131,7 +131,7 @@ object SignalExplain {
     // material structure that replicates but that the record cannot tell from an alternative (a drift at one speed in one
     // direction, or a contrast change along that travel): fitted, so that the model follows the signal and the rest is
     // assessed, and listed as unexplained with what it cannot be told from, never as a finding
-    val unnamed = scala.collection.mutable.ArrayBuffer.empty[Located]
+    val unnamed = scala.collection.mutable.ArrayBuffer.empty[Located]; val unnamedEffects = scala.collection.mutable.Set.empty[String]
     while (!done && round < maxFindings) {
       val cands = new Candidates(e)
       progress.phase(s"effects, round ${round + 1}", cands.steps)
@@ -221,7 +221,10 @@ object SignalExplain {
               }
             }
             if (unnamedNow) {
-              unnamed += Located(s"${c1.effect} (${c1.channel}): ${c1.where}", f"structure of this shape lowers BIC by ${bic0 - e.bic}%.0f and changes " +
+              // named by both effects, in one order whichever of the two was tried (its parameters are the one's fitted)
+              val both = Seq(c1.effect, if (confound.get._1 == Identify.Travel) effects.ContrastAlongTravel.name else effects.Drift.name).distinct.sorted
+              unnamedEffects ++= both
+              unnamed += Located(s"${both.mkString(" or ")} (${c1.channel}): ${c1.where}", f"structure of this shape lowers BIC by ${bic0 - e.bic}%.0f and changes " +
                 f"the signal by ${size / e.lsb}%.1f LSB, but ${ident.get}; fitted, unnamed, so that the rest of the record is assessed", c1.params, significant = true)
               changed()
             } else
@@ -287,7 +290,7 @@ object SignalExplain {
         f"the record (residual rms above ${Adequacy.Margin}%.0f x the noise floor from neighbouring samples): not assessed", f.params, significant = true)
     }
     val baseParams = if (misfit.isEmpty) baseParams0 else baseParams0 ++ Map("noise_sin_fs" -> floorNoise._1, "noise_cos_fs" -> floorNoise._2)
-    val unexplained = (if (confounded || !follows) Nil else left) ++ unnamed ++ rejected.filterNot(r => unnamed.exists(u => r.where.takeWhile(_ != ' ') == u.where.takeWhile(_ != ' '))) ++ withdrawn
+    val unexplained = (if (confounded || !follows) Nil else left) ++ unnamed ++ rejected.filterNot(r => unnamedEffects(r.where.takeWhile(_ != ' '))) ++ withdrawn
     val coarse = CoarseQuantization.finding(e)
     val shown = if (follows) fin else Nil
     val report = Report(file, "signals", baseRms, baseBic, baseParams, located, coarse ++ shown.map(_._1), unexplained, finalRms, finalBic,

@@ -9,7 +9,7 @@ final case class Design(function: String, target: Double, p: CordicParams, bound
        |  cheapest: iterations n = ${p.iterations}, width b = ${p.width} (${p.dataFrac} fractional bits), mode ${p.mode.name}
        |  error bound ${bound}%.3e, measured ${measured.maxError}%.3e over ${measured.samples} inputs: ${if (measured.ok && measured.maxError <= target) "confirmed" else "NOT confirmed"}
        |  cost proxy: $adderBits adder bits${if (p.peakTableSize > 0) s" + ${p.peakTableSize} x ${p.angleBits} table bits" else ""}; latency ${p.latency} clocks
-       |  emit it: ./sbt "run emit --mode ${p.mode.name} --iterations ${p.iterations} --width ${p.width}$tableOpt"""".stripMargin + paperNote
+       |  emit it: moire emit --mode ${p.mode.name} --iterations ${p.iterations} --width ${p.width}$tableOpt""".stripMargin + paperNote
   }
 
   private def tableOpt: String = if (p.peakTableSize > 0) s" --peak-table ${p.peakTableSize}" else ""
@@ -25,7 +25,8 @@ final case class Design(function: String, target: Double, p: CordicParams, bound
 object Designer {
   def modeFor(function: String): Either[String, CordicMode] = function match {
     case "sin" | "cos" | "sincos" => Right(CordicMode.SinCos)
-    case "asin" | "acos" => Right(CordicMode.AsinDouble)
+    case "asin" => Right(CordicMode.AsinDouble)
+    case "acos" => Right(CordicMode.AcosDouble)
     case "atan2" => Right(CordicMode.Atan2)
     case other => Left(s"--function: '$other' is not supported; allowed: sin (or cos, sincos), asin (or acos), atan2")
   }
