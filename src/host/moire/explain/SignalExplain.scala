@@ -202,10 +202,13 @@ object SignalExplain {
             val why = if (!(bic0 - e.bic > 0)) Some("") else if (size < floor) Some("negligible")
               else if (ident.isDefined) ident
               else { val r = Replicate.why(e, prev); if (r.isDefined) refuted += c.effect; r }
-            // (a change in time that the record cannot tell from one along the travel, or the reverse, is kept, unnamed,
-            // when it is material and replicates: no other candidate is the alternative. One it cannot tell from harmonics
-            // of the fringe or from a change with speed stays out: those are candidates of their own, found in their turn)
-            val unnamedNow = ident.isDefined && why == ident && confound.exists(x => x._1 == Identify.Travel || x._1 == Identify.Time) &&
+            // (a linear change in time that the record cannot tell from a linear one along the travel, or the reverse, is
+            // kept, unnamed, when it is material and replicates: the two are one column at one speed. One it cannot tell
+            // from harmonics of the fringe or from a change with speed stays out: those are candidates of their own, found
+            // in their turn; and so does a warm-up, whose five parameters a partial likeness would let take up other
+            // structure: a 0.1 LSB drift on a chirp was fitted as a warm-up of 0.12 s)
+            val linear = c.spec.terms.diff(prev.terms).headOption.exists(t => t == Term.Drift || t == Term.Contrast)
+            val unnamedNow = linear && ident.isDefined && why == ident && confound.exists(x => x._1 == Identify.Travel || x._1 == Identify.Time) &&
               Replicate.why(e, prev).isEmpty
             lap("replicate")
             if (SignalEngine.debug) System.err.println(s"tried ${c.effect}/${c.channel}: " + why.orElse(claimed(claims, before, claimedNow)).fold("kept")(w => if (w.isEmpty) "no gain" else w))
