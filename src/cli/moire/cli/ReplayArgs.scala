@@ -12,10 +12,7 @@ object ReplayArgs {
 
   def parse(args0: Seq[String]): ReplayCmd.Options = {
     // `--name=value` as `--name value`, as the other commands take it (--quiet takes no value)
-    val args = args0.flatMap(a => a.indexOf('=') match {
-      case k if k > 2 && a.startsWith("--") && a.take(k) != "--quiet" => Seq(a.take(k), a.drop(k + 1))
-      case _ => Seq(a)
-    })
+    val args = moire.options.NameValue.split(args0, _ != "--quiet")
     var o = ReplayCmd.Options(None)
     def count(opt: String, v: String, min: Int) =
       moire.numbers.Decimal.int(v).filter(_ >= min).getOrElse(throw new ReplayError(s"$opt: '$v' is not a whole number from $min to ${Int.MaxValue}"))

@@ -290,10 +290,7 @@ object ExplainCmd {
     // help where --help or -h is a word of its own, not an option's value (`--subdiv --help` is --subdiv's, refused there)
     val valued = Set("--json-dir", "--plots", "--model", "--subdiv", "--html", "--html-dir", "--min-effect-lsb", "--min-effect-noise", "--search-samples")
     // `--name=value` as `--name value`, as mainargs reads the options before the files
-    val rest = rest0.flatMap(a => a.indexOf('=') match {
-      case k if k > 2 && a.startsWith("--") && valued(a.take(k)) => Seq(a.take(k), a.drop(k + 1))
-      case _ => Seq(a)
-    })
+    val rest = moire.options.NameValue.split(rest0, valued)
     if (rest.indices.exists(k => (rest(k) == "--help" || rest(k) == "-h") && !(k > 0 && valued(rest(k - 1))))) { println(Usage); return }
     var j = jsonDir; var p = plots; var m = model; var q = quiet; val files = Seq.newBuilder[String]
     var h = html; var hd = htmlDir

@@ -45,7 +45,11 @@ object Plots {
     val rest = name.drop(stem.length + 1)
     Fixed.contains(rest) || effects.Effects.all.exists(f => rest.matches(s"effect_[0-9]+_${java.util.regex.Pattern.quote(f.name)}\\.png"))
   }
-  private val Fixed = Set("residual_time", "residual_phase", "residual_spectrum", "lissajous_before", "lissajous_after", "interpolation_error").map(_ + ".png")
+  // the names of the plots every record gets (after its stem and "_"), and each finding's (`effect_K_NAME.png`)
+  private val ResidualTime = "residual_time.png"; private val ResidualPhase = "residual_phase.png"
+  private val ResidualSpectrum = "residual_spectrum.png"; private val LissajousBefore = "lissajous_before.png"
+  private val LissajousAfter = "lissajous_after.png"; private val InterpolationErr = "interpolation_error.png"
+  private val Fixed = Set(ResidualTime, ResidualPhase, ResidualSpectrum, LissajousBefore, LissajousAfter, InterpolationErr)
 
   /** Mean of y per bin of x (bins over [lo, hi)). */
   def binned(x: Int => Double, y: Int => Double, n: Int, lo: Double, hi: Double, bins: Int, rms: Boolean = false): (Array[Double], Array[Double]) = {
@@ -95,7 +99,7 @@ object Plots {
       for (s <- snaps; (res, ch) <- Seq((s.resS, "sin"), (s.resC, "cos"))) {
         val (x, y) = binned(j => j * s.stride / e.fs, j => res(j) / lsb, s.size, 0, n / e.fs, 64, rms = true); line(ct, s"$ch, ${s.label}", x, y)
       }
-      save(ct, dir / s"${stem}_residual_time.png")
+      save(ct, dir / s"${stem}_$ResidualTime")
     }
     // fringe phase
     plots += { () =>
@@ -103,16 +107,16 @@ object Plots {
       for (s <- snaps; (res, ch) <- Seq((s.resS, "sin"), (s.resC, "cos"))) {
         val (x, y) = binned(pts.fringeDeg(_), j => res(j) / lsb, s.size, 0, 360, 72); line(cp, s"$ch, ${s.label}", x, y)
       }
-      save(cp, dir / s"${stem}_residual_phase.png")
+      save(cp, dir / s"${stem}_$ResidualPhase")
     }
     // spectrum
-    plots += (() => spectrum(s"$stem: residual spectrum", snaps, e, dir / s"${stem}_residual_spectrum.png"))
+    plots += (() => spectrum(s"$stem: residual spectrum", snaps, e, dir / s"${stem}_$ResidualSpectrum"))
     // effects
     for (((f, b, a), k) <- r.steps.zipWithIndex) plots += (() => effect(f, b, a, e, pts, dir / s"${stem}_effect_${k + 1}_${f.effect}.png", stem))
     // the Lissajous figure before and after the Heydemann correction, the interpolation error
-    plots += (() => save(LissajousPlot.before(s"$stem: Lissajous figure", e.yc, e.ys, ie.ellipse), dir / s"${stem}_lissajous_before.png"))
-    ie.ellipse.foreach(el => plots += (() => save(LissajousPlot.after(s"$stem: Lissajous figure after correction", e.yc, e.ys, el), dir / s"${stem}_lissajous_after.png")))
-    plots += (() => save(InterpolationPlot.chart(s"$stem: interpolation error", ie), dir / s"${stem}_interpolation_error.png"))
+    plots += (() => save(LissajousPlot.before(s"$stem: Lissajous figure", e.yc, e.ys, ie.ellipse), dir / s"${stem}_$LissajousBefore"))
+    ie.ellipse.foreach(el => plots += (() => save(LissajousPlot.after(s"$stem: Lissajous figure after correction", e.yc, e.ys, el), dir / s"${stem}_$LissajousAfter")))
+    plots += (() => save(InterpolationPlot.chart(s"$stem: interpolation error", ie), dir / s"${stem}_$InterpolationErr"))
     val todo = plots.result().toArray
     val out = new Array[os.Path](todo.length)
     // every plot runs to its end (each cleans up after itself when its write fails); the first failure is thrown after
