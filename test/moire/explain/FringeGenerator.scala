@@ -13,7 +13,8 @@ import java.util.Random
 object FringeGenerator {
   /** motion: "constant" (f0), "chirp" (f0 -> f1), "swell" (f0 up to f1 and back), "reverse" (peak `travel` periods at
     * `rateHz`), "vibration" (a standstill shaken at `rateHz` and 0.185 x it, `travel` scaling), "uneven" (drive f0
-    * plus two vibrations whose speed peaks at `wobble` x f0, so it may reverse).
+    * plus two vibrations whose speed peaks at `wobble` x f0, so it may reverse), "dwell" (moves of `travel` periods at
+    * `rateHz` moves a second, each followed by a standstill).
     */
   final case class Spec(n: Int = 50000, fs: Double = 2e6, motion: String = "constant", f0: Double = 20e3, f1: Double = 60e3,
                         travel: Double = 50, rateHz: Double = 100, wobble: Double = 0.5, amp: Double = 0.8, offS: Double = 0.01,
@@ -41,6 +42,11 @@ object FringeGenerator {
     case "vibration" =>
       // a standstill shaken at rateHz and 0.185 x rateHz: peak travel * (0.3, 0.1) periods about 0.2
       s.travel * (0.3 * math.sin(2 * math.Pi * s.rateHz * t) + 0.1 * math.sin(2 * math.Pi * 0.185 * s.rateHz * t)) + 0.2
+    case "dwell" =>
+      // moves of `travel` periods, `rateHz` a second: each an S-curve (no jerk at its ends) over 60 % of its time, then
+      // a standstill
+      val per = 1 / s.rateHz; val k = math.floor(t / per); val x = math.min(1.0, (t - k * per) / (0.6 * per))
+      s.travel * (k + x - math.sin(2 * math.Pi * x) / (2 * math.Pi))
     case other => throw new IllegalArgumentException(s"motion $other")
   }
 

@@ -64,6 +64,31 @@ class InterleavedSpec extends AnyFlatSpec with Matchers {
     }
   }
 
+  it should "search all samples when the motion takes the subsample's shortest trajectory segments" in {
+    // VibrationSpec's shake at 2 kHz, 1 MS/s: on every 2nd sample the 64-sample segments last 128 us and left twice the
+    // noise floor in the residual
+    val rec = FringeGenerator.recording(FringeGenerator.Spec(n = 300000, fs = 1e6, motion = "vibration", travel = 1.5, rateHz = 2000,
+      noiseLsb = 1.7, seed = 8))
+    Interleaved.factor(rec, 150000) shouldBe 2
+    val r = run(rec, 150000)
+    withClue(s"${describe(r)}; notes ${r.notes}") {
+      r.notes.exists(n => n.startsWith("explained on all 300000 samples") && n.contains("shortest trajectory segments")) shouldBe true
+      r.findings shouldBe empty
+      r.finalRms should be < 2.0 * lsb12
+    }
+  }
+
+  it should "search all samples when the model does not follow another subsample" in {
+    // every other sample of a stretch 60 LSB high on sin (two converters interleaved, one off): subsample 0 is clean
+    val rec = sim(Nil, motion = Motion.Ramp(20e3, 50e3, 0.04), n = 400000)
+    for (i <- 100001 until 160000 by 2) rec.sin(i) += 60
+    val r = run(rec, 200000)
+    withClue(s"${describe(r)}; notes ${r.notes}") {
+      r.notes.find(_.startsWith("explained on all 400000 samples")).getOrElse(fail("searched on a subsample")) should
+        include("does not follow subsample 1 in")
+    }
+  }
+
   "the subsampling factor" should "keep 4 samples per period of the fastest fringe, and leave a short record whole" in {
     val fast = sim(Nil, motion = Motion.Constant(1e6), n = 300000)
     // (the angle is read about the mid-ranges, without the fit's gains and phase error: a few % high at most)

@@ -87,7 +87,7 @@ class RecorderSpec extends AnyFlatSpec with Matchers {
   }
 
   it should "record a clean stream without a warning (listen-only, setup by hand)" in PtyPair { pty =>
-    val all = BoardStreamFixture.records(200 * n, d, clock.toDouble, first = 0xFFFFFFFFL - 50 * n * d) // index wraps mid-run
+    val all = BoardStreamFixture.records(200 * n, d, clock.toDouble, first = 0xFFFFFFFFL - 5 * n * d) // index wraps after 5 frames (early: a loaded machine streams fewer in the time)
     val board = new FakeBoard(pty, Map.empty)
     board.stream(all.grouped(n).map(rs => Planned(rs)), 20000)
     val out = pty.dir / "clean.csv"

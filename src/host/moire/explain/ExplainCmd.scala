@@ -351,7 +351,7 @@ object ExplainCmd {
       |    --no-rtl             do not compare board outputs with the RTL
       |    --min-effect-lsb X   materiality floor: a finding changes the signal by at least X LSB (default 0.25) ...
       |    --min-effect-noise F ... and F times the noise rms (default 0.1); smaller but significant: `negligible`
-      |    --search-samples N   a record of more than N samples (default 1000000) is searched on every d-th sample and
+      |    --search-samples N   a record of more than N samples (default 250000) is searched on every d-th sample and
       |                         the model found is fitted again on the other d - 1 interleaved subsamples: its parameters
       |                         combined over all samples, or all samples searched where they disagree; 0: search every sample
       |  Effects (the catalogue; docs/explain.md says what each is):

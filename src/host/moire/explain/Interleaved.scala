@@ -13,8 +13,11 @@ import SignalExplain.Result
   * the sample's neighbours, so each holds every effect of the record over its whole time and speed range.
   */
 object Interleaved {
-  /** Records longer than this are searched on an interleaved subsample of at most this many samples. */
-  val SearchSamples = 1000000
+  /** Records longer than this are searched on an interleaved subsample of at most this many samples. A material effect
+    * (`Materiality`: 0.25 LSB, 0.1 of the noise) over the whole record stands thousands of BIC units above the noise in
+    * 250,000 samples; one over a short stretch of it has a quarter of a 1 M record's evidence (docs/explain.md).
+    */
+  val SearchSamples = 250000
   /** The fastest fringe keeps this many samples per period in a subsample, at least (the phase is unwrapped from them). */
   val MinSamplesPerFringe = 4.0
   /** Agreement between the subsamples fails at this chi-square tail probability. */
@@ -66,7 +69,8 @@ object Interleaved {
     * record), the lines' phases (radian) with their sd, and each line's Gauss-Newton frequency step (Hz) with its sd.
     */
   private final case class Fit(findings: Seq[Finding], rms: Double, n: Int, glitches: Seq[(Int, Double)],
-                               dropouts: Seq[(Int, Int)], lines: Seq[(Double, Double, Double)], steps: Map[Double, (Double, Double)])
+                               dropouts: Seq[(Int, Int)], lines: Seq[(Double, Double, Double)], steps: Map[Double, (Double, Double)],
+                               misfit: Int)
 
   private def fitOf(e: SignalEngine, found: Seq[Finding], d: Int, r: Int, glitches: Seq[(Int, Double)], dropouts: Seq[(Int, Int)]): Fit = {
     val v = e.meanSquare
@@ -79,7 +83,9 @@ object Interleaved {
     }
     val steps = terms.map { t => val at = e.termIndex(t); t.hz -> effects.Interference.frequencyStep(e, t.hz, e.sol.beta.slice(at, at + 4)) }.toMap
     Fit(found.map(f => SignalExplain.refresh(f, e)), e.rms, e.n, glitches.map { case (i, l) => (i * d + r, l) },
-      dropouts.map { case (a, b) => (a * d + r, (b - 1) * d + r + 1) }, lines, steps)
+      dropouts.map { case (a, b) => (a * d + r, (b - 1) * d + r + 1) }, lines, steps,
+      // windows where the model does not follow this subsample (`Adequacy`; the search's own passed its judgement)
+      if (r == 0) 0 else Laps("confirm: adequacy")(Adequacy.windows(e).count(_.ratio > Adequacy.Margin)))
   }
 
   /** The searched subsample's result with its findings confirmed on all the others, or the whole record's (`all`). */
@@ -101,7 +107,8 @@ object Interleaved {
             progress.step(1); f
           }
         }
-        disagreement(fits, d, rec.sampleRateHz) match {
+        fits.zipWithIndex.find(_._1.misfit > 0).map { case (f, r) =>
+          s"it does not follow subsample $r in ${f.misfit} of ${Adequacy.Windows} windows" }.orElse(disagreement(fits, d, rec.sampleRateHz)) match {
           case Some(why) => whole(rec, all, searched, s"the model found on every $d${ordinal(d)} sample did not hold on the other subsamples ($why)")
           case None => combined(s.result, fits, d, rec.length)
         }
@@ -125,6 +132,15 @@ object Interleaved {
     // where the model does not follow the searched subsample, nothing there stands for the record: all samples searched
     if (r1.report.misfit.nonEmpty) return Left(whole(rec, all, searched, s"the model found on every $d${ordinal(d)} sample does not follow it in " +
       s"${r1.report.misfit.size} window${if (r1.report.misfit.size == 1) "" else "s"}"))
+    // a motion that took the subsample's shortest trajectory segments may bend faster than they follow: all samples
+    // allow segments of the same length in samples, d times shorter in time (a 2 kHz shake at 1 MS/s on every 2nd
+    // sample: 2 x the noise floor left, 1 x on all samples)
+    r1.engine.traj match {
+      case t: Trajectory if t.nseg > 1 && t.len <= Trajectory.MinLength =>
+        return Left(whole(rec, all, searched, f"the motion took the shortest trajectory segments on every $d${ordinal(d)} sample " +
+          f"(${t.len} samples, ${t.len * d / rec.sampleRateHz * 1e6}%.0f us): all samples follow it in shorter ones"))
+      case _ =>
+    }
     searched(r1)
     val found = r1.report.findings.filterNot(_.deltaBic.isNaN)
     Right(Searched(r1.copy(engine = null, before = null, steps = r1.steps.map { case (f, _, _) => (f, null, null) }),
@@ -179,7 +195,11 @@ object Interleaved {
   /** Finding j's parameter k in each subsample's fit, and its sd there (the search's where a fit states none). */
   private def series(fits: Seq[Fit], j: Int, k: String): (Seq[Double], Seq[Double]) = {
     val sd = fits.head.findings(j).unc.getOrElse(k, Double.NaN)
-    (fits.map(_.findings(j).params.getOrElse(k, Double.NaN)), fits.map(_.findings(j).unc.getOrElse(k, sd)))
+    val vs = fits.map(_.findings(j).params.getOrElse(k, Double.NaN))
+    // an angle (degree) as near the first subsample's as a whole turn allows: a harmonic's phase at -179.98 and 179.98
+    // is one phase (it read as a chi-square of 14,941,776 and all samples searched again)
+    val near = if (k.endsWith("_deg") && !vs.head.isNaN) vs.map(v => v - 360 * math.rint((v - vs.head) / 360)) else vs
+    (near, fits.map(_.findings(j).unc.getOrElse(k, sd)))
   }
   /** Every sd positive and finite: the values can be pooled. */
   private def stated(sds: Seq[Double]): Boolean = sds.forall(s => s > 0 && !s.isInfinite)
@@ -208,7 +228,10 @@ object Interleaved {
         val (vs, sds) = series(fits, j, k)
         // a parameter the other fits kept at the search's value (a line's frequency, a warm-up's time constant): the search's
         if (vs.exists(_.isNaN) || !stated(sds) || vs.distinct.size == 1) (k, (vs.head, sds.head))
-        else { val (m, s, chi2) = pooled(vs, sds); (k, (m, s * math.sqrt(math.max(1.0, chi2 / (d - 1))))) }
+        else { val (m0, s, chi2) = pooled(vs, sds)
+          // an angle back within -180..180 degree
+          val m = if (k.endsWith("_deg") && math.abs(m0) > 180) m0 - 360 * math.rint(m0 / 360) else m0
+          (k, (m, s * math.sqrt(math.max(1.0, chi2 / (d - 1))))) }
       }
       searched(j).copy(params = ps.map { case (k, v) => k -> v._1 }, unc = ps.map { case (k, v) => k -> v._2 })
     }

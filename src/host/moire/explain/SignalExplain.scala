@@ -273,7 +273,12 @@ object SignalExplain {
     // negligible structure (significant, below the floor) stays in the residual: its located departure is listed there
     val small = negligible.result().groupBy(x => (x.effect, x.channel)).values.map(_.last).toSeq
     val smallClaims = small.flatMap(x => Effects(x.effect).toSeq.flatMap(_.claims))
-    val left = Locate.all(e).filter(l => l.significant && !smallClaims.exists(l.where.startsWith))
+    // a significant departure smaller than the floor is no structure to explain: a note (a clean S-curve's dwells: the
+    // trajectory's phase at a standstill left "sin amplitude -33.6 %, 802 sd" of a fundamental 2e-5 of full scale there)
+    val (left, tiny) = Locate.all(e).filter(l => l.significant && !smallClaims.exists(l.where.startsWith))
+      .partition(_.params.get(Locate.SizeLsb).forall(_ >= floorEnd / e.lsb))
+    val tinyNotes = tiny.map(l => f"${l.where}: ${l.summary}; the residual departs by ${l.params(Locate.SizeLsb)}%.3g LSB there " +
+      f"(floor ${floorEnd / e.lsb}%.3g LSB): significant, too small to matter")
     // with a free motion that bends within a period, what is left cannot be told from the motion: not tested, not unexplained
     val confounded = Identifiable.motionConfounded(e)
     val finalRms = e.rms; val finalBic = e.bic
@@ -297,7 +302,7 @@ object SignalExplain {
     val coarse = CoarseQuantization.finding(e)
     val shown = if (follows) fin else Nil
     val report = Report(file, "signals", baseRms, baseBic, baseParams, located, coarse ++ shown.map(_._1), unexplained, finalRms, finalBic,
-      rec.length, (System.nanoTime() - t0) / 1e9, notes(e) ++ Glitches.note(glitches) ++ Dropouts.note(dropouts), Coverage.untested(e, cands.fMin, cands.fMax) ++
+      rec.length, (System.nanoTime() - t0) / 1e9, notes(e) ++ tinyNotes ++ Glitches.note(glitches) ++ Dropouts.note(dropouts), Coverage.untested(e, cands.fMin, cands.fMax) ++
         (if (confounded) Identifiable.leftOver(left) else Nil), small, misfit)
     Result(report, e, before, shown, rerun, glitches, dropouts)
   }

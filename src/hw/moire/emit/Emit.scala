@@ -23,8 +23,20 @@ object Emit {
   /** The elaborated top and its Verilog text (design first, black-box resources appended by firtool). */
   def elaborate[M <: RawModule](gen: => M, target: Target = Target.Verilog): (M, String) = {
     var top: Option[M] = None
-    val text = ChiselStage.emitSystemVerilog({ val m = gen; top = Some(m); m }, Array.empty[String], target.opts)
+    val text = firtool(ChiselStage.emitSystemVerilog({ val m = gen; top = Some(m); m }, Array.empty[String], target.opts))
     (top.get, text)
+  }
+
+  /** `body`, again after a pause where firtool could not be resolved: on a new machine's first use another process (the
+    * suite's other JVM, a launcher) may be unpacking it into the same cache (`Error resolving firtool` in a CI run).
+    */
+  private def firtool[T](body: => T): T = {
+    var tries = 0
+    while (true) {
+      try return body
+      catch { case x: Exception if tries < 3 && Option(x.getMessage).exists(_.contains("resolving firtool")) => tries += 1; Thread.sleep(3000L * tries) }
+    }
+    throw new IllegalStateException("unreachable")
   }
 
   /** Elaborates `gen` without lowering it (fast): the top, to read its name and latency. */
@@ -43,8 +55,8 @@ object Emit {
     var top: Option[M] = None
     val tmp = os.temp.dir(prefix = "moire-emit-")
     try {
-      ChiselStage.emitSystemVerilogFile({ val m = gen; top = Some(m); m },
-        Array("--target-dir", tmp.toString, "--split-verilog"), target.opts)
+      firtool(ChiselStage.emitSystemVerilogFile({ val m = gen; top = Some(m); m },
+        Array("--target-dir", tmp.toString, "--split-verilog"), target.opts))
       val first = s"${top.get.desiredName}.sv"
       // Verilog files that hold a module (not firtool's extern_modules.sv, macro definitions only)
       val files = os.walk(tmp).filter(f => os.isFile(f) && Seq("sv", "v").contains(f.ext) && """(?m)^\s*module\s""".r.findFirstIn(os.read(f)).nonEmpty)
