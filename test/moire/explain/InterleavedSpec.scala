@@ -89,6 +89,17 @@ class InterleavedSpec extends AnyFlatSpec with Matchers {
     }
   }
 
+  it should "not go back to all samples for a parameter that describes each subsample (a contrast change's travel)" in {
+    // travel_periods is each subsample's own travel, a sample apart: 10999.929, .947, .965, .983 sent 1 M records back
+    val rec = sim(Seq(EffectSpec("contrast_along_travel", Map("gain_sin_per_period" -> 2e-6, "gain_cos_per_period" -> 2e-6))),
+      motion = Motion.Ramp(20e3, 50e3, 0.04), n = 400000)
+    val r = run(rec, 100000)
+    withClue(s"${describe(r)}; notes ${r.notes}") {
+      r.findings.map(_.effect) should contain("contrast_along_travel")
+      interleavedNote(r) shouldBe defined
+    }
+  }
+
   "the subsampling factor" should "keep 4 samples per period of the fastest fringe, and leave a short record whole" in {
     val fast = sim(Nil, motion = Motion.Constant(1e6), n = 300000)
     // (the angle is read about the mid-ranges, without the fit's gains and phase error: a few % high at most)

@@ -218,7 +218,7 @@ object Main {
               @arg(doc = "folder for one HTML report per recording") htmlDir: Option[String] = None,
               @arg(doc = "materiality floor in LSB: a finding changes the signal by at least this much (default 0.25)") minEffectLsb: Option[Double] = None,
               @arg(doc = "materiality floor as a fraction of the noise rms (default 0.1)") minEffectNoise: Option[Double] = None,
-              @arg(doc = "a longer record is searched on every d-th sample and confirmed on the others (default 1000000; 0: search every sample)") searchSamples: Option[String] = None): Unit =
+              @arg(doc = "a longer record is searched on every d-th sample and confirmed on the others (default 250000; 0: search every sample)") searchSamples: Option[String] = None): Unit =
     moire.explain.ExplainCmd.explainArgs(files.value, jsonDir, plots, model, quiet.value, subdiv, noRtl.value, html, htmlDir, minEffectLsb, minEffectNoise,
       searchSamples.map(moire.explain.ExplainCmd.searchSamplesOf).getOrElse(moire.explain.Interleaved.SearchSamples))
 
@@ -227,7 +227,7 @@ object Main {
                    @arg(doc = "folder for the recording, JSON and plots (default: a temporary folder)") out: Option[String] = None,
                    @arg(doc = "explain this moire-recording v1 file instead of a simulated one (not with --samples)") recording: Option[String] = None,
                    @arg(doc = "explain the file this many times in one JVM, each run's figures printed: the first includes the JIT's compiling, the others show the fit alone (1..10, default 1)") runs: Int = 1,
-                   @arg(doc = "as explain's: a longer record is searched on every d-th sample and confirmed on the others (default 1000000; 0: search every sample)") searchSamples: Option[String] = None): Unit =
+                   @arg(doc = "as explain's: a longer record is searched on every d-th sample and confirmed on the others (default 250000; 0: search every sample)") searchSamples: Option[String] = None): Unit =
     if (recording.isDefined && given("--samples").nonEmpty) throw new UsageError("--samples sets the simulated recording's length; with --recording the file's length is taken: leave --samples out")
     else moire.explain.ExplainCmd.bench(samples, out.map(folderName(_)), recording, println(_), runs,
       searchSamples.map(moire.explain.ExplainCmd.searchSamplesOf).getOrElse(moire.explain.Interleaved.SearchSamples))

@@ -164,7 +164,9 @@ object Interleaved {
         val (vs, sds) = series(fits, j, k)
         if (vs.exists(_.isNaN)) None
         else if (!stated(sds)) {
-          if (vs.distinct.size > 1) Some(s"${f.effect} $k: ${vs.distinct.mkString(", ")}") else None
+          // a discrete value (a bit, an order) must be the same; one without an sd that is no whole number describes
+          // the subsample (a contrast change's travel_periods: each subsample's own travel, a sample apart)
+          if (vs.forall(v => v == math.rint(v)) && vs.distinct.size > 1) Some(s"${f.effect} $k: ${vs.distinct.mkString(", ")}") else None
         } else {
           val (mean, _, chi2) = pooled(vs, sds)
           if (chi2 > limit) Some(f"${f.effect} $k: ${vs.min}%.5g..${vs.max}%.5g about $mean%.5g, chi-square $chi2%.1f for ${d - 1} degrees of freedom") else None
