@@ -8,7 +8,8 @@ import org.scalatest.matchers.should.Matchers
   * standstill over 40 % of each move's time). At a standstill the fitted phase sits still and the sin channel's
   * fundamental is about 0 there: the residual's projection on it read as an amplitude change of -32 % against speed at
   * 10 to 800 sd, a change of the signal of a few hundredths of an LSB. A departure smaller than the materiality floor is
-  * a note, never unexplained structure.
+  * a note, never unexplained structure. (Most of that departure was the uniform segments missing the moves' ends; the
+  * segments there are now halved, and the departure is mostly gone.)
   */
 class DwellSpec extends AnyFlatSpec with Matchers {
   import ExplainSupport._
@@ -30,9 +31,26 @@ class DwellSpec extends AnyFlatSpec with Matchers {
       val r = SignalExplain.run("dwells", dwells(400000, 4, fringes, seed), Nil, Progress.none, searchSamples = Int.MaxValue).report
       withClue(s"$fringes periods a move: ${describe(r)}; unexplained ${r.unexplained.map(_.summary)}; not tested ${r.untested}; notes ${r.notes}: ") {
         r.findings shouldBe empty
-        r.located.exists(l => l.where.startsWith("against speed") && l.significant) shouldBe true
         (r.unexplained.map(_.where) ++ r.untested).filter(_.contains("against speed")) shouldBe empty
-        r.notes.exists(n => n.startsWith("against speed") && n.contains("too small to matter")) shouldBe true
+        // (with the segments over the transitions halved, the departure may be gone; where it is located, it is a note)
+        if (r.located.exists(l => l.where.startsWith("against speed") && l.significant))
+          r.notes.exists(n => n.startsWith("against speed") && n.contains("too small to matter")) shouldBe true
+      }
+    }
+  }
+
+  // The uniform segments the default fit chose (6 periods at the typical speed) did not follow a move's end into its
+  // standstill (an S-curve's jerk ends there): a material "against fringe phase 0.54 LSB" was left unexplained on
+  // `dwells(400000, 4, 600, 7)`. The segments over the transitions are halved where that lowers BIC.
+  it should "follow a move's end into a standstill, with nothing left unexplained" in {
+    for (seed <- Seq(7L, 8L)) {
+      val rec = FringeGenerator.recording(FringeGenerator.Spec(n = 400000, fs = 1e6, motion = "dwell", travel = 600, rateHz = 10,
+        noiseLsb = 1.0, seed = seed))
+      val r = SignalExplain.run("dwells", rec, Nil, Progress.none, searchSamples = Int.MaxValue).report
+      withClue(s"seed $seed: ${describe(r)}; unexplained ${r.unexplained.map(_.summary)}; misfit ${r.misfit.map(_.summary)}: ") {
+        r.findings shouldBe empty
+        r.unexplained shouldBe empty
+        r.misfit shouldBe empty
       }
     }
   }

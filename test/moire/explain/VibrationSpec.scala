@@ -22,4 +22,22 @@ class VibrationSpec extends AnyFlatSpec with Matchers {
       r.baseline("amplitude_sin_fs") shouldBe 0.8 +- 0.01
     }
   }
+
+  // A 2 kHz shake of 2 fringe periods at 1 MS/s turns within 250 samples: 94-sample cubics (a period at its typical
+  // speed) left 4 x the noise floor in every window, "no effect assessed"; 56-sample ones a misfit of 1.5 x along the
+  // path that five pickup lines took up. Shorter segments, down to 16 samples, where the motion turns within a few.
+  it should "follow a fast shake with segments shorter than 64 samples, and find nothing in it" in {
+    for (seed <- Seq(21L, 22L)) {
+      val rec = FringeGenerator.recording(FringeGenerator.Spec(n = 300000, fs = 1e6, motion = "reverse", travel = 2, rateHz = 2000,
+        noiseLsb = 1.0, seed = seed))
+      val r = SignalExplain.run("shake", rec, Nil, Progress.none, searchSamples = Int.MaxValue).report
+      withClue(s"seed $seed: ${describe(r)}; unexplained ${r.unexplained.map(_.summary)}; misfit ${r.misfit.map(_.summary)}: ") {
+        r.findings shouldBe empty
+        r.misfit shouldBe empty
+        r.unexplained shouldBe empty
+        r.finalRms should be < 1.15 * lsb12
+        r.baseline("trajectory_segments") should be > 300000.0 / 64
+      }
+    }
+  }
 }

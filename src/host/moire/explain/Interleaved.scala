@@ -136,9 +136,9 @@ object Interleaved {
     // allow segments of the same length in samples, d times shorter in time (a 2 kHz shake at 1 MS/s on every 2nd
     // sample: 2 x the noise floor left, 1 x on all samples)
     r1.engine.traj match {
-      case t: Trajectory if t.nseg > 1 && t.len <= Trajectory.MinLength =>
+      case t: Trajectory if t.nseg > 1 && t.shortest <= Trajectory.MinLength =>
         return Left(whole(rec, all, searched, f"the motion took the shortest trajectory segments on every $d${ordinal(d)} sample " +
-          f"(${t.len} samples, ${t.len * d / rec.sampleRateHz * 1e6}%.0f us): all samples follow it in shorter ones"))
+          f"(${t.shortest} samples, ${t.shortest * d / rec.sampleRateHz * 1e6}%.0f us): all samples follow it in shorter ones"))
       case _ =>
     }
     searched(r1)

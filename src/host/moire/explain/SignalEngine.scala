@@ -180,7 +180,9 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
       if (lens.size == 1 && lens.head <= shortest) { free(lens.head); return }
       // each length's fitted trajectory and repaired data are kept: the best is restored and solved once, not fitted again
       final case class Fitted(len: Int, bic: Double, traj: PhaseTrack, repS: Array[Double], repC: Array[Double], cens: Repaired, gain: Double,
-                              motionMisfit: Boolean, far: Boolean)
+                              motionMisfit: Boolean, far: Boolean, ratio: Double) {
+        def follows: Boolean = !motionMisfit && !far
+      }
       def kept(l: Int) = {
         // the motion not followed: a residual mostly along the signals' path, or, where the phase is off by so much that
         // the residual points anywhere, one of a tenth of the fringe's amplitude
@@ -189,7 +191,7 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
         val rb = if (far || r <= SignalEngine.MotionMisfit) r else alongOverAcrossBeyondFringe
         if (SignalEngine.debug) System.err.println(f"trajectory segments of $l samples: BIC $bic%.1f, residual along / across the fringe $r%.3f" +
           f"${if (rb != r) f" ($rb%.3f beyond the fringe's own shape)" else ""}${if (far) ", far off" else ""}")
-        shared = true; Fitted(l, bic, _traj, _repS, _repC, _cens, lastGain, far || rb > SignalEngine.MotionMisfit, far)
+        shared = true; Fitted(l, bic, _traj, _repS, _repC, _cens, lastGain, far || rb > SignalEngine.MotionMisfit, far, rb)
       }
       def restore(f: Fitted): Unit = {
         _traj = f.traj; evalTraj(); _repS = f.repS; _repC = f.repC; _cens = f.cens
@@ -208,25 +210,46 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
         def lost = f.forall(_.far)
         // (and the longest segments already leave motion: where they follow it, what shorter ones gain by BIC is the
         // fringe's own shape that they half follow, a harmonic of it on both channels)
-        while ((lost && f.last.len > Trajectory.MinLength) ||
-          (f.minBy(_.bic).len == f.last.len && f.last.len > shortest && f.last.motionMisfit && f.head.motionMisfit))
-          f = f :+ fit(math.max(if (lost) Trajectory.MinLength else shortest, (f.last.len * 0.4).toInt))
+        // Where the shortest still leave the motion, shorter ones still, down to `Trajectory.LeastLength`, while they
+        // lower BIC or, none following it yet, take up more of it (a 2 kHz shake of 5 periods at 1 MS/s: 64-sample
+        // cubics left 2.4 x the noise floor; of 2 periods, 56-sample ones a misfit that five pickup lines took up)
+        def best = f.minBy(_.bic).len == f.last.len && f.last.motionMisfit && f.head.motionMisfit
+        def closing = f.size > 1 && !f.last.far && f.last.motionMisfit && f.head.motionMisfit && !f.exists(_.follows) &&
+          f.last.ratio < 0.7 * f(f.size - 2).ratio
+        // (only where the motion changes within a few such segments: the speed's own time, rms speed over rms change of
+        // it, under 4 of them; else what they leave is the fringe's shape, not motion: a 0.5 % 3rd harmonic on a
+        // 400 Hz back-and-forth at 10 MS/s went into 23-sample segments and came out at 0.016 %)
+        def turns = f.last.len / fs > motionTimeS / 4
+        // (each length shorter than the last: where all are far off, none below `Trajectory.MinLength`; a head
+        // creeping over 1 % of a period tried 64 samples again and again)
+        def next: Int =
+          if (f.last.len <= shortest && !lost) math.max(Trajectory.LeastLength, (f.last.len * 0.6).toInt)
+          else math.max(if (lost) Trajectory.MinLength else shortest, (f.last.len * 0.4).toInt)
+        while (((lost && f.last.len > Trajectory.MinLength) || (best && f.last.len > shortest) ||
+          (!lost && (best || closing) && f.last.len > Trajectory.LeastLength && f.last.len <= shortest && turns)) && next < f.last.len)
+          f = f :+ fit(next)
         f
       }
-      if (FitPath.isReference) { free(shorter(lens.map { l => free(l); kept(l) }, l => { free(l); kept(l) }).minBy(_.bic).len); return }
+      // the lowest BIC; but where that length leaves the motion and a shorter one follows it, the shorter one (what a
+      // trajectory leaves of the motion, the effects' searches take up: pickup lines at the shake's harmonics)
+      def chosen(fs: Seq[Fitted]): Fitted = {
+        val b = fs.minBy(_.bic)
+        if (b.follows || b.far) b else fs.filter(x => x.follows && x.len < b.len).sortBy(_.bic).headOption.getOrElse(b)
+      }
+      if (FitPath.isReference) { free(chosen(shorter(lens.map { l => free(l); kept(l) }, l => { free(l); kept(l) })).len); return }
       // the fast path: each length's plain solve and first refining step, then the further steps only for the lengths
       // within reach of the best (their BIC within twice their last step's gain and the threshold of it)
       def tried(l: Int) = { prepare(new Trajectory(n, l, fs), raw); refit(2, refineTraj = true); kept(l) }
       val first = shorter(lens.map(tried), tried)
-      val lead = first.minBy(_.bic)
-      val reach = first.filter(f => (f eq lead) || f.bic - lead.bic < 2 * math.max(f.gain, 0) + 10)
+      val lead = chosen(first)
+      val reach = first.filter(f => (f eq lead) || (f.follows || !lead.follows) && f.bic - lead.bic < 2 * math.max(f.gain, 0) + 10)
       var now = first.last
       val done = reach.map { f =>
         if (f ne now) restore(f)
         refit(3, refineTraj = true, from = 2); finish()
         val k = kept(f.len); now = k; k
       }
-      val best = done.minBy(_.bic)
+      val best = chosen(done)
       if (best ne now) restore(best)
     }
     // a reference with a corrupted row is not used (its reason said in the report)
@@ -281,6 +304,16 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
       i += 1
     }
     if (c > 0) a / c else Double.PositiveInfinity
+  }
+
+  /** The time (s) in which the fitted motion changes: its fringe frequency's rms over the rms of its rate of change
+    * (1 / (2 pi f) for a back-and-forth at f), from differences over `Trajectory.MinLength` samples.
+    */
+  def motionTimeS: Double = {
+    val k = math.min(n - 1, Trajectory.MinLength); if (k < 1) return Double.PositiveInfinity
+    var ff = 0.0; var dd = 0.0; var i = 0
+    while (i + k < n) { val d = (freq(i + k) - freq(i)) * fs / k; ff += freq(i) * freq(i); dd += d * d; i += 1 }
+    if (dd > 0) math.sqrt(ff / dd) else Double.PositiveInfinity
   }
 
   /** `alongOverAcross` of the residual less its part that is a function of the fringe phase (a mean and harmonics 1 to
@@ -812,6 +845,51 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
     }
   }
 
+  /** The free trajectory's segments halved where cubics on the halves lower BIC by more than their 4 parameters and
+    * the threshold: the phase residual's weighted sum of squares they take up over the residual's variance, beyond
+    * what the same cubics take up of the residual across the path (motion is along it alone), each
+    * sample's standardised phase residual held within `SplitZ` (one glitch splits nothing). For motion that changes
+    * within a segment (a move ending in a standstill, a jerk) and not over the record: the uniform segments the default
+    * fit chose left a move-and-dwell's transitions as a material departure against fringe phase. Halves of a fringe
+    * period at the typical speed and `Trajectory.MinLength` at least; refitted after each pass, kept while BIC falls.
+    * After the bad data are out (a glitch in a short segment threw its cubic off). True when a segment was halved.
+    */
+  def splitSegments(): Boolean = {
+    val least = math.max(Trajectory.MinLength, Identifiable.shortestSegment(n, fs, typicalHz))
+    var pass = 0
+    while (pass < SignalEngine.SplitPasses) traj match {
+      case t: Trajectory if t.len >= 2 * least =>
+        val k = 4 * math.Pi * math.Pi / meanSquare
+        if (!(k > 0 && !k.isInfinite)) return pass > 0
+        val sk = deepCensored; val ex = lost; val zMax = SignalEngine.SplitZ
+        // the residual along the path (a phase error) and across it, alike: motion the cubics miss is along it alone;
+        // a pickup, a glitch or an offset's change is as much across, and halves would take up its along part
+        def part(along: Boolean): Array[Double] = t.splitGains({ (i, o) =>
+          val out = ex != null && ex(i)
+          val gs = if (out || (sk != null && sk.s(i))) 0.0 else gS(i); val gc = if (out || (sk != null && sk.c(i))) 0.0 else gC(i)
+          val ww = gs * gs + gc * gc
+          if (ww > 0) {
+            val d = (if (along) resS(i) * gs + resC(i) * gc else resS(i) * gc - resC(i) * gs) / ww / (2 * math.Pi)
+            val lim = zMax / math.sqrt(k * ww)
+            o(0) = math.max(-lim, math.min(lim, d)); o(1) = ww
+          } else { o(0) = 0.0; o(1) = 0.0 }
+        }, least)
+        val (ga, gc) = (part(along = true), part(along = false))
+        val which = ga.indices.map(j => (ga(j) - gc(j)) * k > 4 * lnN + SignalExplain.Threshold).toArray
+        // a departure at a few places is the motion's (a move's end); one in many segments is the signal's or the
+        // segment length's, which the lengths' BIC chose (a 5 LSB pickup at 1 kHz on 3 kHz fringes: 89 of 366)
+        if (!which.exists(identity) || which.count(identity) > SignalEngine.SplitShare * t.nseg) return pass > 0
+        val back = save().getOrElse(return pass > 0)
+        val before = bic; val ph = phase.clone()
+        val nt = t.split(which); _traj = nt; nt.addFit(ph, null); evalTraj(); refit(3, refineTraj = true, from = 1)
+        if (SignalEngine.debug) System.err.println(f"segments split: ${which.count(identity)} of ${t.nseg}, BIC $bic%.1f against $before%.1f")
+        if (!(bic < before)) { back(); return pass > 0 }
+        pass += 1
+      case _ => return pass > 0
+    }
+    pass > 0
+  }
+
   // the segment lengths the default fit tried for a free trajectory, longest first
   private var segmentLens: Seq[Int] = Nil
 
@@ -1028,6 +1106,13 @@ object SignalEngine {
   val HoldBytes: Long = math.min(Runtime.getRuntime.maxMemory / 8, 256L << 20)
   /** The residual along the fringe over the residual across it above which the trajectory is made finer. */
   val MotionMisfit = 1.1
+  /** Passes of `splitSegments` at most (a segment becomes 2^SplitPasses at most), and the standardised phase residual
+    * a sample brings to them at most.
+    */
+  val SplitPasses = 6
+  val SplitZ = 4.0
+  /** The share of the segments a pass may halve at most (more is no local change of the motion). */
+  val SplitShare = 0.1
   /** Noise widths a prediction lies beyond a saturation level where the sample held there is left out of the fit
     * (`deepCensored`; its tail mean is within 1e-4 noise widths of the prediction there).
     */

@@ -316,6 +316,8 @@ object SignalExplain {
     if (dropouts.nonEmpty) { e.lost = Dropouts.mask(e.n, dropouts); e.badData = e.lost; e.exclude(null) }
     var glitches = Glitches.find(e)
     if (glitches.nonEmpty) { e.badData = Glitches.union(e.badData, Glitches.mask(e.n, glitches)); e.exclude(null); glitches = Glitches.more(e, glitches) }
+    // the motion's local changes that the uniform segments miss, with the bad data out (then a look for more of them)
+    if (e.splitSegments()) glitches = Glitches.more(e, glitches)
     (dropouts, glitches)
   }
 

@@ -11,13 +11,42 @@ trait PhaseTrack {
   def keep(): () => Unit
 }
 
-/** A smooth phase trajectory: one cubic in time per segment of `len` samples, phase in periods. */
-final class Trajectory(val n: Int, val len: Int, val fs: Double) extends PhaseTrack {
-  val nseg: Int = math.max(1, (n + len - 1) / len)
+/** A smooth phase trajectory: one cubic in time per segment of `len` samples, phase in periods; segments where the
+  * motion asked for shorter ones halved (`split`): segment s spans samples [bounds(s), bounds(s + 1)).
+  */
+final class Trajectory(val n: Int, val len: Int, val fs: Double, given: Array[Int] = null) extends PhaseTrack {
+  val bounds: Array[Int] =
+    if (given != null) given else { val k = math.max(1, (n + len - 1) / len); Array.tabulate(k + 1)(s => math.min(n, s * len)) }
+  val nseg: Int = bounds.length - 1
   /** Cubic coefficients of segment s in local time x in [-1, 1]. */
   val coef: Array[Double] = new Array[Double](4 * nseg)
-  private def seg(s: Int): (Int, Int) = (s * len, math.min(n, (s + 1) * len))
+  private def seg(s: Int): (Int, Int) = (bounds(s), bounds(s + 1))
+  /** The shortest segment (samples), but for the last one (the record's remainder after whole segments). */
+  def shortest: Int = if (nseg == 1) n else (0 until nseg - 1).map(s => bounds(s + 1) - bounds(s)).min
   def params: Int = 4 * nseg
+
+  /** This trajectory with the segments `which` halved (coefficients zero: fit it to a phase). */
+  def split(which: Array[Boolean]): Trajectory = {
+    val b = Array.newBuilder[Int]
+    for (s <- 0 until nseg) { b += bounds(s); if (which(s)) b += (bounds(s) + bounds(s + 1)) / 2 }
+    b += n
+    new Trajectory(n, len, fs, b.result())
+  }
+
+  /** Per segment, how much two cubics on its halves (each of `least` samples at least) explain of `dw`'s weighted
+    * difference beyond one cubic on the whole: the weighted sum of squares a split would take up (0 where too short).
+    */
+  def splitGains(dw: Trajectory.Residual, least: Int): Array[Double] = {
+    val g = new Array[Double](nseg)
+    Par.each(nseg, n) { s =>
+      val (a, b) = seg(s)
+      if (b - a >= 2 * least) {
+        val m = (a + b) / 2
+        g(s) = math.max(0.0, Trajectory.explained(dw, a, m) + Trajectory.explained(dw, m, b) - Trajectory.explained(dw, a, b))
+      }
+    }
+    g
+  }
   def keep(): () => Unit = { val c = coef.clone(); () => System.arraycopy(c, 0, coef, 0, c.length) }
 
   /** Phase (periods) and fringe frequency (Hz) of every sample. */
@@ -83,6 +112,16 @@ object Trajectory {
     out(7) = y0; out(8) = y1; out(9) = y2; out(10) = y3
   }
 
+  /** The weighted sum of squares of `dw`'s difference over [a, b) that its least-squares cubic there explains. */
+  def explained(dw: Residual, a: Int, b: Int): Double = {
+    val mid = 0.5 * (a + b - 1); val half = math.max(0.5, 0.5 * (b - a - 1))
+    val sums = new Array[Double](11); segmentSums(dw, a, b, mid, 1 / half, new Array[Double](2), sums)
+    val deg = math.min(3, b - a - 1)
+    val m = Array.tabulate(4, 5)((r, c) => if (c == 4) (if (r <= deg) sums(7 + r) else 0.0) else if (r <= deg && c <= deg) sums(r + c) else if (r == c) 1.0 else 0.0)
+    val beta = solve4(m)
+    (0 to deg).map(r => beta(r) * sums(7 + r)).sum
+  }
+
   /** Gaussian elimination with partial pivoting of a 4x5 augmented matrix (zero where singular). */
   def solve4(m: Array[Array[Double]]): Array[Double] = {
     val a = m.map(_.clone()); val n = 4
@@ -108,8 +147,10 @@ object Trajectory {
     x
   }
 
-  /** The shortest segment (samples). */
+  /** The shortest segment (samples) for motion the longer ones follow, or that are all far off. */
   val MinLength = 64
+  /** The shortest segment (samples) at all: for motion that 64-sample cubics still leave, while shorter ones lower BIC. */
+  val LeastLength = 16
 
   /** Segment length for a recording: `periods` fringe periods at the typical speed, 64 .. 65536 samples. */
   def segmentLength(n: Int, fs: Double, typicalHz: Double, periods: Double): Int = {
