@@ -44,14 +44,8 @@ class DwellSpec extends AnyFlatSpec with Matchers {
   // `dwells(400000, 4, 600, 7)`. The segments over the transitions are halved where that lowers BIC.
   it should "follow a move's end into a standstill, with nothing left unexplained" in {
     for (seed <- Seq(7L, 8L)) {
-      val rec = FringeGenerator.recording(FringeGenerator.Spec(n = 400000, fs = 1e6, motion = "dwell", travel = 600, rateHz = 10,
-        noiseLsb = 1.0, seed = seed))
-      val r = SignalExplain.run("dwells", rec, Nil, Progress.none, searchSamples = Int.MaxValue).report
-      withClue(s"seed $seed: ${describe(r)}; unexplained ${r.unexplained.map(_.summary)}; misfit ${r.misfit.map(_.summary)}: ") {
-        r.findings shouldBe empty
-        r.unexplained shouldBe empty
-        r.misfit shouldBe empty
-      }
+      val r = explainAll("dwells", FringeGenerator.Spec(n = 400000, fs = 1e6, motion = "dwell", travel = 600, rateHz = 10, noiseLsb = 1.0, seed = seed))
+      withClue(s"seed $seed: ${clue(r)}: ") { (r.findings, r.unexplained, r.misfit) shouldBe ((Nil, Nil, Nil)) }
     }
   }
 }

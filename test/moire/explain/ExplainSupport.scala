@@ -20,4 +20,11 @@ object ExplainSupport {
   def within(actual: Double, expected: Double, rel: Double = 0.2): Boolean = math.abs(actual - expected) <= rel * math.abs(expected)
 
   def describe(r: Report): String = r.findings.map(f => s"${f.effect}(${f.channel}) ${f.params} dBIC=${f.deltaBic}").mkString("; ")
+
+  /** The independent generator's record of `spec`, explained on all its samples. */
+  def explainAll(name: String, spec: FringeGenerator.Spec): Report =
+    SignalExplain.run(name, FringeGenerator.recording(spec), Nil, Progress.none, searchSamples = Int.MaxValue).report
+
+  /** What a report found, left unexplained and did not follow: for a clue. */
+  def clue(r: Report): String = s"${describe(r)}; unexplained ${r.unexplained.map(_.summary)}; misfit ${r.misfit.map(_.summary)}"
 }

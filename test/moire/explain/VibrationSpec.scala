@@ -28,13 +28,9 @@ class VibrationSpec extends AnyFlatSpec with Matchers {
   // path that five pickup lines took up. Shorter segments, down to 16 samples, where the motion turns within a few.
   it should "follow a fast shake with segments shorter than 64 samples, and find nothing in it" in {
     for (seed <- Seq(21L, 22L)) {
-      val rec = FringeGenerator.recording(FringeGenerator.Spec(n = 300000, fs = 1e6, motion = "reverse", travel = 2, rateHz = 2000,
-        noiseLsb = 1.0, seed = seed))
-      val r = SignalExplain.run("shake", rec, Nil, Progress.none, searchSamples = Int.MaxValue).report
-      withClue(s"seed $seed: ${describe(r)}; unexplained ${r.unexplained.map(_.summary)}; misfit ${r.misfit.map(_.summary)}: ") {
-        r.findings shouldBe empty
-        r.misfit shouldBe empty
-        r.unexplained shouldBe empty
+      val r = explainAll("shake", FringeGenerator.Spec(n = 300000, fs = 1e6, motion = "reverse", travel = 2, rateHz = 2000, noiseLsb = 1.0, seed = seed))
+      withClue(s"seed $seed: ${clue(r)}: ") {
+        (r.findings, r.unexplained, r.misfit) shouldBe ((Nil, Nil, Nil))
         r.finalRms should be < 1.15 * lsb12
         r.baseline("trajectory_segments") should be > 300000.0 / 64
       }

@@ -317,7 +317,7 @@ object SignalExplain {
     var glitches = Glitches.find(e)
     if (glitches.nonEmpty) { e.badData = Glitches.union(e.badData, Glitches.mask(e.n, glitches)); e.exclude(null); glitches = Glitches.more(e, glitches) }
     // the motion's local changes that the uniform segments miss, with the bad data out (then a look for more of them)
-    if (e.splitSegments()) glitches = Glitches.more(e, glitches)
+    if (Laps("split segments")(e.splitSegments())) glitches = Glitches.more(e, glitches)
     (dropouts, glitches)
   }
 
