@@ -232,9 +232,9 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
       }
       // the lowest BIC; but where that length leaves the motion and a shorter one follows it, the shorter one (what a
       // trajectory leaves of the motion, the effects' searches take up: pickup lines at the shake's harmonics)
-      def chosen(fs: Seq[Fitted]): Fitted = {
-        val b = fs.minBy(_.bic)
-        if (b.follows || b.far) b else fs.filter(x => x.follows && x.len < b.len).sortBy(_.bic).headOption.getOrElse(b)
+      def chosen(fits: Seq[Fitted]): Fitted = {
+        val b = fits.minBy(_.bic)
+        if (b.follows || b.far) b else fits.filter(x => x.follows && x.len < b.len).sortBy(_.bic).headOption.getOrElse(b)
       }
       if (FitPath.isReference) { free(chosen(shorter(lens.map { l => free(l); kept(l) }, l => { free(l); kept(l) })).len); return }
       // the fast path: each length's plain solve and first refining step, then the further steps only for the lengths
