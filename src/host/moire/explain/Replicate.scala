@@ -56,6 +56,9 @@ object Replicate {
     }
   }
 
+  /** The bins either side of a line (from, to) whose power gives the noise beside it. */
+  val NearFrom = 3; val NearTo = 10
+
   /** Interleaved blocks per part: each part takes every other block of n / `Blocks` samples. */
   val Blocks = 64
   /** A periodic effect is split into contiguous halves when each half covers at least this many of its cycles. */
@@ -103,7 +106,7 @@ object Replicate {
       val (ys, yc) = { val w = 2 * math.Pi * t.hz / e.fs; val k = pts.length; val a = new Array[Double](k); val c = new Array[Double](k); var q = 0
         while (q < k) { val i = idx(pts(q)); val sx = math.sin(w * i); val cx = math.cos(w * i); a(q) = e.resS(i) + b(at) * sx + b(at + 1) * cx; c(q) = e.resC(i) + b(at + 2) * sx + b(at + 3) * cx; q += 1 }
         (a, c) }
-      def power(hz: Double): Double = {
+      def powerOf(ys: Array[Double], yc: Array[Double], hz: Double): Double = {
         var a = 0.0; var b = 0.0; var c = 0.0; var d = 0.0; var k = 0
         while (k < pts.length) {
           val i = idx(pts(k)); val x = 2 * math.Pi * hz * i / e.fs; val sx = math.sin(x); val cx = math.cos(x)
@@ -111,12 +114,22 @@ object Replicate {
         }
         -(a * a + b * b + c * c + d * d)
       }
+      def power(hz: Double): Double = powerOf(ys, yc, hz)
       val half = e.fs / m
       val hz = cands.minimize(power, t.hz - half, t.hz + half, grid = 8, golden = 16)
       val (sol, rss) = lineFit(e, t, hz, idx)
       if (!sol.ok) None
       else {
-        val v = rss / (2.0 * m)
+        // the noise beside the line: the residual's power 3 to 10 bins either side, over white noise's (2 v per point);
+        // 1/f noise or a wander under a 50 Hz line is stronger there than its mean over all frequencies, and a half's
+        // line moves with it (hum on a scanned stage with 1/f noise: 50.1 against 50.0 Hz, "6.9 sd" by white noise)
+        val v0 = rss / (2.0 * m)
+        val near = {
+          val rs = pts.map(q => e.resS(idx(q))); val rc = pts.map(q => e.resC(idx(q)))
+          val fsAt = (Replicate.NearFrom to Replicate.NearTo).flatMap(k => Seq(hz - k * half, hz + k * half)).filter(f => f > 0 && f < e.fs / 2)
+          if (fsAt.isEmpty || !(v0 > 0)) 1.0 else fsAt.map(f => -powerOf(rs, rc, f)).sum / fsAt.size / (2 * v0 * pts.length)
+        }
+        val v = v0 * math.max(1.0, near)
         val as = math.hypot(sol.beta(6), sol.beta(7)); val ac = math.hypot(sol.beta(8), sol.beta(9))
         // Cramer-Rao bound of a sinusoid's frequency in white noise, both channels' power together, for the samples the
         // search used (its subsample spans the half, so the bound grows as the root of m over their number)

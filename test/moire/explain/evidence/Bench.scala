@@ -29,7 +29,7 @@ final case class Bench(amp: Double = 0.8, offS: Double = 0.011, offC: Double = -
                        cosCutoffHz: Double = 0,
                        skewS: Double = 0,
                        inlSinLsb: Double = 0, inlCosLsb: Double = 0,
-                       stuck: Option[(String, Int, Int)] = None, seed: Long = 1) {
+                       stuck: Option[(String, Int, Int)] = None, flickerLsb: Double = 0, seed: Long = 1) {
   require(jitterS == 0 || cutoffHz == 0, "jitter is modelled before the low-pass; use one or the other")
   def half: Int = 1 << (bits - 1)
   def lsb: Double = 1.0 / half
@@ -64,6 +64,12 @@ final case class Bench(amp: Double = 0.8, offS: Double = 0.011, offC: Double = -
     var phaseNoise = math.toRadians(phaseNoiseDeg) * pn.nextGaussian()
     var ys = 0.0; var yc = 0.0
     val x0 = tr.periods(0)
+    // 1/f noise of each channel (amplifier flicker, a supply's wander): one-pole noises with corners a decade apart
+    // from 1 Hz to 10 kHz, each of the same variance, their sum flickerLsb rms; its own random numbers
+    val fl = new Random(seed + 104729); val corners = Seq(1.0, 10.0, 100.0, 1e3, 1e4)
+    val flRho = corners.map(fc => math.exp(-2 * math.Pi * fc / fs)).toArray
+    val flSd = flickerLsb * lsb / math.sqrt(corners.size)
+    val flS = Array.fill(corners.size)(flSd * fl.nextGaussian()); val flC = Array.fill(corners.size)(flSd * fl.nextGaussian())
     for (i <- 0 until n) {
       val t = i / fs
       if (i > 0) phaseNoise = rho * phaseNoise + pnStep * pn.nextGaussian()
@@ -90,9 +96,15 @@ final case class Bench(amp: Double = 0.8, offS: Double = 0.011, offC: Double = -
         if (pC.on) vc = yc
       }
       var pick = warmOffsetLsb * lsb * warm
+      var flickS = 0.0; var flickC = 0.0
+      if (flickerLsb > 0) for (k <- corners.indices) {
+        val q = math.sqrt(1 - flRho(k) * flRho(k)) * flSd
+        flS(k) = flRho(k) * flS(k) + q * fl.nextGaussian(); flC(k) = flRho(k) * flC(k) + q * fl.nextGaussian()
+        flickS += flS(k); flickC += flC(k)
+      }
       for ((hz, l) <- lines) pick += l * lsb * math.sin(2 * math.Pi * hz * t + 0.4)
-      cs(i) = adc(offS + vs + pick + noiseLsb * lsb * rnd.nextGaussian(), inlSinLsb, "sin")
-      cc(i) = adc(offC + vc + pick + noiseLsb * lsb * rnd.nextGaussian(), inlCosLsb, "cos")
+      cs(i) = adc(offS + vs + pick + flickS + noiseLsb * lsb * rnd.nextGaussian(), inlSinLsb, "sin")
+      cc(i) = adc(offC + vc + pick + flickC + noiseLsb * lsb * rnd.nextGaussian(), inlCosLsb, "cos")
     }
     (cs, cc)
   }
