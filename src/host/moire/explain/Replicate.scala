@@ -131,8 +131,8 @@ object Replicate {
         }
         val v = v0 * math.max(1.0, near)
         val as = math.hypot(sol.beta(6), sol.beta(7)); val ac = math.hypot(sol.beta(8), sol.beta(9))
-        // Cramer-Rao bound of a sinusoid's frequency in white noise, both channels' power together, for the samples the
-        // search used (its subsample spans the half, so the bound grows as the root of m over their number)
+        // Cramer-Rao bound of a sinusoid's frequency at the noise beside the line, both channels' power together, for the
+        // samples the search used (its subsample spans the half, so the bound grows as the root of m over their number)
         val sdF = e.fs / (2 * math.Pi) * math.sqrt(24 * v / ((as * as + ac * ac) * m.toDouble * m * m)) * math.sqrt(m.toDouble / pts.length)
         val sdA = math.sqrt(v * sol.inv(6)(6))
         Some(Est(Array(hz, as, ac), Array(Array(sdF * sdF, 0, 0), Array(0, sdA * sdA, 0), Array(0, 0, sdA * sdA)), Array(0.0, floorA, floorA)))
