@@ -146,9 +146,8 @@ lazy val root = (project in file("."))
       IO.read(baseDirectory.value / "src" / "cli" / "utf8-locale.sh"),
       // JAVA_OPTS=-Xmx8g is honoured (the default heap from application.ini would come after it and win)
       s"_moire_default_heap=$defaultHeap", IO.read(baseDirectory.value / "src" / "cli" / "heap.sh"),
-      // -h is moire's, not the launcher script's (whose usage text would exit 1)
-      """_moire_args=(); for a in "$@"; do [[ "$a" == "-h" ]] && a=--help; _moire_args+=("$a"); done; set -- "${_moire_args[@]}"""",
-      // the launcher script's own options that would reach Java as no option of it: one line, exit 2
+      // Java options before the command, every word from it on moire's (-h, -v, -d, -J... too); a -J that carries no
+      // Java option: one line, exit 2
       IO.read(baseDirectory.value / "src" / "cli" / "launcher-args.sh"),
       "no_version_check=1",
       // the major version of the java this script runs (JAVA_HOME's, else PATH's), from its release file: no second JVM

@@ -31,20 +31,28 @@ class HeapSpec extends AnyFlatSpec with Matchers {
 }
 
 /** The launcher script's own options (src/cli/launcher-args.sh): `-Jfoo` made java look for a main class `foo` and print
-  * its ClassNotFoundException (another tool's fuzz sweep, F20).
+  * its ClassNotFoundException (another tool's fuzz sweep, F20); the script took its options from anywhere, even as an
+  * option's value (`emit --out -v` printed the java command line, `emit -XX:+Foo` stopped the JVM). The arguments the
+  * script's own parser gets are printed one a line: Java's before a `--`, moire's after it.
   */
 class LauncherArgsSpec extends AnyFlatSpec with Matchers {
   private val script = os.pwd / "src" / "cli" / "launcher-args.sh"
   private def run(args: String*): (Int, String) = {
-    val r = os.proc(Seq("bash", "-c", """. "$0"; echo passed""", script.toString) ++ args).call(check = false, stderr = os.Pipe)
+    val r = os.proc(Seq("bash", "-c", """. "$0"; printf '%s\n' "$@"""", script.toString) ++ args).call(check = false, stderr = os.Pipe)
     (r.exitCode, (r.out.text() + r.err.text()).trim)
   }
 
-  "the launcher" should "refuse a -J that carries no Java option, and -main, in one line" in {
+  "the launcher" should "refuse a -J that carries no Java option in one line" in {
     run("-Jfoo", "simulate") shouldBe ((2, "moire: -Jfoo: -J passes an option to Java (like -J-Xmx8g), and 'foo' is none"))
-    run("simulate", "-J") shouldBe ((2, "moire: -J needs a Java option joined to it (like -J-Xmx8g)"))
-    run("-main", "foo") shouldBe ((2, "moire: -main is no option of moire's (its commands: moire --help)"))
-    run("-J-Xmx1g", "simulate", "--samples", "100") shouldBe ((0, "passed"))
-    run("explain", "x.csv") shouldBe ((0, "passed"))
+    run("-J", "simulate") shouldBe ((2, "moire: -J needs a Java option joined to it (like -J-Xmx8g)"))
+  }
+
+  it should "take Java options before the command and leave every word from the command on to moire" in {
+    run("-J-Xmx1g", "-Dx=1", "simulate", "--samples", "100") shouldBe ((0, "-J-Xmx1g\n-Dx=1\n--\nsimulate\n--samples\n100"))
+    run("explain", "x.csv") shouldBe ((0, "--\nexplain\nx.csv"))
+    for (own <- Seq("-v", "-d", "-help", "-mem", "-jvm-debug", "-java-home", "-main", "-no-version-check", "-J", "-Jfoo", "-J-Xmx1m", "-XX:+Foo", "-Dy=2"))
+      withClue(own) { run("emit", "--out", own) shouldBe ((0, s"--\nemit\n--out\n$own")) }
+    run("-main", "foo") shouldBe ((0, "--\n-main\nfoo"))
+    run() shouldBe ((0, "--"))
   }
 }
