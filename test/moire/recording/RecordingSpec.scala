@@ -97,6 +97,9 @@ class RecordingSpec extends AnyFlatSpec with Matchers {
     bad(good.updated(6, "2048,x,0.5"), "f.csv:7: cos 'x' is not an integer")
     bad(good.updated(7, "0,4096,1.5"), "f.csv:8: cos code 4096 is outside the 12-bit ADC range 0..4095")
     bad(good.updated(7, "0,-1,1.5"), "outside the 12-bit ADC range")
+    // a negative code read as offset binary: the line that declares signed codes is named
+    bad(good.updated(7, "-1085,-1290,1.5"), "'-1085,-1290,1.5'; signed codes need the line '# adc_format: twos-complement' before the header")
+    bad(good.updated(7, "0,-3000,1.5"), "outside the 12-bit ADC range 0..4095: '0,-3000,1.5'")
     bad(good.updated(6, "2048,4095"), "f.csv:7: 2 cells, the header has 3")
     bad(good.updated(6, "2048,4095,NaN"), "f.csv:7: ref_deg 'NaN' is not a finite number")
     bad(good.take(6), "no data rows")

@@ -212,7 +212,10 @@ object Recording {
     // the code v of column col, checked: within the converter's range, signed codes and pin patterns not mixed
     private def checked(v: Int, col: String, line: String, ln: Long): Int = {
       if (v < minCode || v > maxCode)
-        badRow(ln, line, s"$col code $v is outside the $bits-bit ADC range ${if (signedOk) s"$minCode..$maxCode (signed codes or pin patterns)" else s"0..$maxCode"}")
+        bad(ln, s"$col code $v is outside the $bits-bit ADC range ${if (signedOk) s"$minCode..$maxCode (signed codes or pin patterns)" else s"0..$maxCode"}: " +
+          s"'${Shown.text(line)}'" +
+          // a negative code in a file read as offset binary: signed codes, said how to declare them
+          (if (!signedOk && v < 0 && v >= -(maxCode + 1) / 2) "; signed codes need the line '# adc_format: twos-complement' before the header (docs/recording.md)" else ""))
       if (v < 0) { if (firstNegative == 0) firstNegative = ln }
       else if (v > (maxCode >> 1) && firstHigh == 0) firstHigh = ln
       if (firstNegative != 0 && firstHigh != 0) mixed(ln)
