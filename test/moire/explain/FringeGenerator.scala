@@ -24,7 +24,7 @@ object FringeGenerator {
                         warmGain: Double = 0.0, warmOffset: Double = 0.0, warmTauS: Double = 0.01,
                         driftGainPerS: Double = 0.0, driftOffsetPerS: Double = 0.0, humFs: Double = 0.0, humHz: Double = 50.0,
                         h2: Double = 0.0, h2Deg: Double = -60, clipFs: Double = 0.0, noiseAfterLsb: Double = 0.0,
-                        holds: Seq[(Int, Int)] = Nil, zeros: Seq[(Int, Int)] = Nil)
+                        holds: Seq[(Int, Int)] = Nil, zeros: Seq[(Int, Int)] = Nil, cuts: Seq[(Int, Int)] = Nil)
 
   /** Fringe phase in periods at time t. */
   def periods(s: Spec, t: Double): Double = s.motion match {
@@ -80,9 +80,11 @@ object FringeGenerator {
       def clip(v: Double) = if (s.clipFs > 0) math.max(-s.clipFs, math.min(s.clipFs, v)) else v
       // the converter's own noise, after the amplifier (and its saturation)
       def adc(v: Double) = if (s.noiseAfterLsb > 0) v + s.noiseAfterLsb / half * rnd.nextGaussian() else v
-      // data lost: runs [a, b) where a FIFO repeats the last word, or where both converters read 0
+      // data lost: runs [a, b) cut out, or where a FIFO repeats the last word, or where both converters read 0
       val (cs, cc) = (code(adc(clip(vs))), code(adc(clip(vc))))
-      if (s.zeros.exists { case (a, b) => i >= a && i < b }) sb.append("0,0\n")
+      // samples cut out of the capture: the next one follows with no gap in the rows (a FIFO that overflowed)
+      if (s.cuts.exists { case (a, b) => i >= a && i < b }) ()
+      else if (s.zeros.exists { case (a, b) => i >= a && i < b }) sb.append("0,0\n")
       else if (s.holds.exists { case (a, b) => i >= a && i < b }) sb.append(last)
       else { last = s"$cs,$cc\n"; sb.append(last) }
       i += 1

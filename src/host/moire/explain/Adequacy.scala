@@ -205,13 +205,15 @@ object Adequacy {
     runs.map { case (a, b, r) =>
       var x0 = Double.MaxValue; var x1 = -Double.MaxValue; var f0 = Double.MaxValue; var f1 = 0.0; var i = a
       while (i < b) { val x = e.phase(i) - p0; x0 = math.min(x0, x); x1 = math.max(x1, x); val f = math.abs(e.freq(i)); f0 = math.min(f0, f); f1 = math.max(f1, f); i += 1 }
+      // a step of the phase there names the physics (samples lost, a slip)
+      val jumps = Jumps.find(e, a, b)
       Located("the default model does not follow the signal here",
         f"residual rms up to ${r}%.1f x the noise floor (from neighbouring samples) at ${a / e.fs}%.4g..${b / e.fs}%.4g s, position ${x0}%.4g..${x1}%.4g " +
-          f"fringe periods from the start, fringe frequency ${f0 / 1e3}%.4g..${f1 / 1e3}%.4g kHz; " +
+          f"fringe periods from the start, fringe frequency ${f0 / 1e3}%.4g..${f1 / 1e3}%.4g kHz; " + jumps.map(j => Jumps.describe(j, e.fs) + "; ").mkString +
           (if (!assessable(e, ws)) f"the model does not follow over ${share * 100}%.0f %% of the record: no effect is assessed"
            else f"effects are fitted and judged without these samples (${share * 100}%.0f %% of the record)"),
         Map("ratio" -> r, "t0_s" -> a / e.fs, "t1_s" -> b / e.fs, "position0_periods" -> x0, "position1_periods" -> x1, "f0_hz" -> f0, "f1_hz" -> f1,
-          "share_not_followed" -> share),
+          "share_not_followed" -> share) ++ jumps.headOption.map(j => Map("phase_step_periods" -> j.periods, "phase_step_s" -> j.at / e.fs)).getOrElse(Map()),
         significant = true)
     }
   }

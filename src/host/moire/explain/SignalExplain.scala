@@ -68,8 +68,20 @@ object SignalExplain {
     val t0 = System.nanoTime()
     def all(r: Recording) = whole(file, r, model, progress, maxFindings, holdBytes, materiality)
     val d = Interleaved.factor(rec, searchSamples)
-    val res = if (d == 1) { val r = all(rec); searched(r); r } else Interleaved.explain(file, rec, d, progress, holdBytes, all, searched)
-    res.copy(report = res.report.copy(seconds = (System.nanoTime() - t0) / 1e9))
+    // the fitted ellipse, for the steps of the phase over all samples (a step in a subsample is d samples wide)
+    var base: Array[Double] = null
+    def seen(r: Result): Unit = { base = r.engine.base.clone(); searched(r) }
+    val res = if (d == 1) { val r = all(rec); seen(r); r } else Interleaved.explain(file, rec, d, progress, holdBytes, all, seen)
+    val steps = if (base == null) None else Jumps.note(Laps("steps")(Jumps.inRecord(rec, base, badRows(rec.length, res))), rec.sampleRateHz)
+    res.copy(report = res.report.copy(seconds = (System.nanoTime() - t0) / 1e9, notes = res.report.notes ++ steps))
+  }
+
+  /** The rows of bad data (glitches, runs lost) of a result, as a test. */
+  private def badRows(n: Int, r: Result): Int => Boolean = {
+    val m = new java.util.BitSet(n)
+    r.glitches.foreach { case (i, _) => m.set(i) }
+    r.dropouts.foreach { case (a, b) => m.set(a, b) }
+    i => m.get(i)
   }
 
   /** Explains a recording on all its samples. Adequacy first: where the final model does not follow the signal in some

@@ -44,6 +44,15 @@ class MisfitSpec extends AnyFlatSpec with Matchers {
     for ((name, r) <- reports) withClue(s"$name: ${misfit(r)}") { hasTimeRange(misfit(r).get) shouldBe true }
   }
 
+  // a step of the phase is named where the phase steps from one sample to the next (samples lost, `Jumps`), not in a
+  // motion that rings or slips over several samples
+  it should "name no step of the phase in motion that rings, slips over 15 us or vibrates" in {
+    for ((name, r) <- reports) withClue(s"$name: ${r.misfit.map(_.summary)}") {
+      r.misfit.filter(_.params.contains("phase_step_periods")) shouldBe empty
+      r.notes.filter(_.contains("phase steps")) shouldBe empty
+    }
+  }
+
   // Shocks ringing at 12 kHz and slips of 2 periods in 60 us were beyond the default model's segments (64 samples at
   // least) and were reported as a misfit; segments down to 16 samples follow them now (where the motion turns within a
   // few of them): to the noise floor, and nothing found. Ringing at 60 kHz and slips in 15 us (above) still are not.
