@@ -47,6 +47,18 @@ object FringeGenerator {
       // a standstill
       val per = 1 / s.rateHz; val k = math.floor(t / per); val x = math.min(1.0, (t - k * per) / (0.6 * per))
       s.travel * (k + x - math.sin(2 * math.Pi * x) / (2 * math.Pi))
+    case "trap" =>
+      // moves back and forth with a trapezoid speed (up to f0 in 5 ms, 10 ms at f0, down in 5 ms), 5 ms still at each end:
+      // the acceleration steps, which no cubic follows across
+      val ta = 0.005; val tc = 0.01; val td = 0.005; val half = 2 * ta + tc + td
+      def move(u: Double) = {
+        val w = math.min(u, 2 * ta + tc); val u3 = w - ta - tc
+        if (w < ta) 0.5 * s.f0 / ta * w * w
+        else if (w < ta + tc) 0.5 * s.f0 * ta + s.f0 * (w - ta)
+        else 0.5 * s.f0 * ta + s.f0 * tc + s.f0 * u3 - 0.5 * s.f0 / ta * u3 * u3
+      }
+      val tt = t % (2 * half)
+      if (tt < half) move(tt) else move(half) - move(tt - half)
     case other => throw new IllegalArgumentException(s"motion $other")
   }
 

@@ -186,7 +186,17 @@ object ExplainCmd {
         val rec = Recording.read(p)
         checkSignals(p, rec)
         // the interpolation error and plots from the searched engine (a long record's subsample, `Interleaved`)
+        // on a side thread while the other subsamples are fitted (the plots read the searched engine alone)
+        var shown: Option[java.util.concurrent.CompletableFuture[Unit]] = None
+        def done(): Unit = shown.foreach { f =>
+          try f.join() catch { case e: java.util.concurrent.CompletionException => throw e.getCause }
+          shown = None
+        }
         def show(r: SignalExplain.Result): Unit = {
+          done()
+          shown = Some(java.util.concurrent.CompletableFuture.supplyAsync(() => draw(r), Plots.Pool))
+        }
+        def draw(r: SignalExplain.Result): Unit = {
           val t0 = System.nanoTime()
           val ie = Laps("interpolation error")(InterpolationError.of(r.engine.rec, r.engine))
           // the record's plots that this call does not make again go: an earlier run's (an effect it found and this one
@@ -195,7 +205,9 @@ object ExplainCmd {
           extra = extra.filterNot(_._1 == "interpolation_error") :+ ("interpolation_error" -> ie.json)
           if (sys.props.contains("moire.timing")) System.err.println(f"interpolation error and plots ${(System.nanoTime() - t0) / 1e6}%.0f ms")
         }
-        val r = SignalExplain.run(p.toString, rec, givenEffects, progress, materiality = materiality, searchSamples = searchSamples, searched = show)
+        val r = try SignalExplain.run(p.toString, rec, givenEffects, progress, materiality = materiality, searchSamples = searchSamples, searched = show)
+          catch { case e: Throwable => try done() catch { case _: Throwable => () }; throw e }
+        done()
         progress.close()
         // Board outputs (a `position` column) against the RTL run on the recorded codes.
         val checked = rtl.filter(_ => rec.extra.contains("position")).map { opts =>

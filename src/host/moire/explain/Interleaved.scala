@@ -18,6 +18,12 @@ object Interleaved {
     * 250,000 samples; one over a short stretch of it has a quarter of a 1 M record's evidence (docs/explain.md).
     */
   val SearchSamples = 250000
+  /** Records up to this long are searched again on all samples where the subsample's search leaves structure it does
+    * not explain: there the search on all samples may (another generator's 60 Hz hum on move-and-dwell motion, 800 k
+    * samples: on every 4th sample the hum beside five unexplained items, final rms 0.000564; on all, the hum alone, 0.000506).
+    * A longer record keeps the subsample's result and says so (all of 20 M samples would take half an hour).
+    */
+  val WholeIfUnexplained = 1200000
   /** The fastest fringe keeps this many samples per period in a subsample, at least (the phase is unwrapped from them). */
   val MinSamplesPerFringe = 4.0
   /** Agreement between the subsamples fails at this chi-square tail probability. */
@@ -132,6 +138,10 @@ object Interleaved {
     // where the model does not follow the searched subsample, nothing there stands for the record: all samples searched
     if (r1.report.misfit.nonEmpty) return Left(whole(rec, all, searched, s"the model found on every $d${ordinal(d)} sample does not follow it in " +
       s"${r1.report.misfit.size} window${if (r1.report.misfit.size == 1) "" else "s"}"))
+    // structure the subsample's model does not explain: all samples have their say where that costs no more than a few
+    // times the search (the note says the rest)
+    if (r1.report.unexplained.nonEmpty && rec.length <= WholeIfUnexplained) return Left(whole(rec, all, searched,
+      s"the model found on every $d${ordinal(d)} sample leaves ${r1.report.unexplained.size} departure${if (r1.report.unexplained.size == 1) "" else "s"} unexplained"))
     // a motion that took the subsample's shortest trajectory segments may bend faster than they follow: all samples
     // allow segments of the same length in samples, d times shorter in time (a 2 kHz shake at 1 MS/s on every 2nd
     // sample: 2 x the noise floor left, 1 x on all samples)
@@ -141,10 +151,12 @@ object Interleaved {
           f"(${t.shortest} samples, ${t.shortest * d / rec.sampleRateHz * 1e6}%.0f us): all samples follow it in shorter ones"))
       case _ =>
     }
-    searched(r1)
     val found = r1.report.findings.filterNot(_.deltaBic.isNaN)
+    val fit0 = fitOf(r1.engine, found, d, 0, r1.glitches, r1.dropouts)
+    // the engine is read by `searched` alone from here (its plots may be drawn beside the other subsamples' fits)
+    searched(r1)
     Right(Searched(r1.copy(engine = null, before = null, steps = r1.steps.map { case (f, _, _) => (f, null, null) }),
-      fitOf(r1.engine, found, d, 0, r1.glitches, r1.dropouts), r1.engine.spec, found))
+      fit0, r1.engine.spec, found))
   }
 
   /** All samples searched, and why. */
@@ -245,7 +257,10 @@ object Interleaved {
     val note = s"searched on every ${d}${ordinal(d)} sample (${fits.head.n} of $n samples, each at ${d} x the sample interval); the model found " +
       s"was fitted again on $others, and each finding's parameters, the same on all ${d} within their uncertainty, are their " +
       "combined values over all samples (a line's frequency moved by their combined steps, with the search's sd; a warm-up's time constant is the search's). The BIC figures " +
-      "and located departures are the searched subsample's; the final rms is over all samples"
+      "and located departures are the searched subsample's; the final rms is over all samples" +
+      // a long record's structure left unexplained on the subsample: the search on all samples was not made
+      (if (rep.unexplained.isEmpty) "" else s". The departures left unexplained on the subsample were not searched on all samples " +
+        s"(above $WholeIfUnexplained samples; --search-samples 0 searches all, in far more time and memory)")
     val report = rep.copy(findings = rep.findings.map(f => byOrig.getOrElse(f, f)), finalRms = rms, samples = n,
       notes = note +: (rep.notes.filterNot(old) ++ Glitches.note(glitches) ++ Dropouts.note(dropouts)))
     val steps = r0.steps.map { case (f, b, a) => (found.find(g => g.effect == f.effect && g.channel == f.channel && g.where == f.where).getOrElse(f), b, a) }
