@@ -131,47 +131,16 @@ object CordicBound {
       Some(((t.start - 1).toDouble / t.oneCode, t.binError + 0.5 * pow2(-p.angleBits) * 2 * math.Pi))
     }
 
-  /** Conventional arcsine (seed 002 eq. 8): the misjudged rotation directions have no closed form,
-    * so the algorithmic term is the largest error of the ideal (double-precision) recursion over
-    * a fine input grid; rounding enters as a band on the input, as for the double rotation.
+  /** Conventional arcsine (seed 002 eq. 8): the misjudged rotation directions have no closed form, so the
+    * algorithmic term is the exact worst error of the ideal recursion and the rounding term what the model's
+    * rounded comparisons add to it, both by [[ArcsineSearch]] over every input up to the peak table.
     */
   def asinConventional(p: CordicParams): CordicBound = {
-    val eta = vectorRounding(p) * 2
     val tbl = peakTableBound(p)
     val aMax = tbl.map(_._1).getOrElse(1.0)
-    val ideal = idealConventionalMax(p.iterations, aMax, eta)
-    CordicBound(ideal, asinBand(aMax, eta) + vectorRounding(p), tableError(p), angleOutput(p), tbl.map(_._2).getOrElse(0.0))
-  }
-
-  /** Largest error of the exact-arithmetic conventional arcsine over a grid of A in [-aMax, aMax],
-    * widened by eta (each grid point is also tried at A +- eta).
-    */
-  def idealConventionalMax(n: Int, aMax: Double, eta: Double, points: Int = 1 << 16): Double = {
-    val k = (0 until n).map(i => math.sqrt(1 + pow2(-2 * i))).product
-    val angles = (0 until n).map(i => math.atan(pow2(-i))).toArray
-    def run(a: Double): Double = {
-      var x = 1 / k; var y = 0.0; var z = 0.0; var i = 0
-      while (i < n) {
-        val t = pow2(-i)
-        val ccw = a >= y
-        val nx = if (ccw) x - t * y else x + t * y
-        val ny = if (ccw) y + t * x else y - t * x
-        z += (if (ccw) angles(i) else -angles(i)); x = nx; y = ny; i += 1
-      }
-      z
-    }
-    var worst = 0.0
-    var j = 0
-    while (j <= points) {
-      val a = aMax * j / points
-      val ref = math.asin(a)
-      for (da <- Seq(-eta, 0.0, eta)) {
-        val aa = math.max(-1.0, math.min(1.0, a + da))
-        worst = math.max(worst, math.abs(run(aa) - ref))
-      }
-      j += 1
-    }
-    worst // the recursion is odd-symmetric in A
+    val ideal = ArcsineSearch.worst(p, aMax, rounded = false)
+    val rounded = ArcsineSearch.worst(p, aMax, rounded = true)
+    CordicBound(ideal, math.max(0.0, rounded - ideal), tableError(p), angleOutput(p), tbl.map(_._2).getOrElse(0.0))
   }
 
   /** The bound that a configuration's headline figure is checked against (angle in radians or data). */
