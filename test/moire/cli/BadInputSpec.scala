@@ -406,9 +406,9 @@ class BadInputSpec extends AnyFlatSpec with Matchers {
     "explain", rec("bits.csv", "# moire-recording v1\n# sample_rate_hz: 1000000\n# adc_bits: 0\n# source: x\nsin,cos\n" + rows(100)))
   bad("an empty entry in an effect's list", "--effect harmonic: an empty entry in 'order=3,,amplitude_rel=0.01'")(
     "simulate", "--out", (dir / "ee.csv").toString, "--effect", "harmonic:order=3,,amplitude_rel=0.01")
-  bad("a sine's error of 5 full scale", "--max-error must be below the output's whole range (1 full scale), got 5.0")(
+  bad("a sine's error of 5 full scale", "--max-error must be below half the output's range (1 full scale), which a constant output meets; got 5.0")(
     "design", "--function", "sin", "--max-error", "5")
-  bad("an angle's error of 10 radians", "--max-error must be below the output's whole range (pi radians), got 10.0")(
+  bad("an angle's error of 10 radians", "--max-error must be below half the output's range (pi radians), which a constant output meets; got 10.0")(
     "design", "--function", "atan2", "--max-error", "10")
   bad("an empty record --out", "an output file's name is empty")("record", "--port", "/dev/nonexistent-tty", "--seconds", "1", "--out", "")
   bad("an empty --cache", "--cache: the folder's name is empty")("timing", "--design", "counter", "--cache", "")

@@ -143,6 +143,19 @@ object CordicBound {
     CordicBound(ideal, math.max(0.0, rounded - ideal), tableError(p), angleOutput(p), tbl.map(_._2).getOrElse(0.0))
   }
 
+  /** The largest error of the best constant output, half the output's range: sine and cosine 1 full scale
+    * (K without gain compensation), rotate the headline radius, atan2 pi, arcsine and arccosine pi/2.
+    */
+  def constantError(p: CordicParams): Double = p.mode match {
+    case SinCos => if (p.gainCompensation) 1.0 else p.gain
+    case Rotate => pow2(p.dataInt) * (if (p.gainCompensation) 1.0 else p.gain)
+    case Atan2 => math.Pi
+    case _ => math.Pi / 2
+  }
+
+  /** A bound a constant output would meet guarantees nothing: the rounding of n steps swamps b bits. */
+  def vacuous(p: CordicParams, bound: Double): Boolean = bound >= constantError(p)
+
   /** The bound that a configuration's headline figure is checked against (angle in radians or data). */
   def headline(p: CordicParams): CordicBound = p.mode match {
     case SinCos => rotation(p)

@@ -39,11 +39,16 @@ object Designer {
     def make(n: Int, b: Int) = CordicParams(mode, n, b, rounding = r, peakTableSize = peakTable)
     val check = scala.util.Try(make(16, 18)).toEither.left.map(e =>
       "--" + e.getMessage.stripPrefix("requirement failed: "))
-    val candidates = if (check.isLeft) Nil else for {
+    // a target a constant output meets asks nothing of a design, and a bound that large guarantees nothing
+    val half = mode match { case CordicMode.SinCos => "1 full scale"; case CordicMode.Atan2 => "pi radians"; case _ => "pi/2 radians" }
+    val inRange = check.flatMap(p => if (target < CordicBound.constantError(p)) Right(())
+      else Left(s"--max-error must be below half the output's range ($half), which a constant output meets; got $target"))
+    def meets(p: CordicParams) = { val b = CordicBound.headline(p).total; b <= target && !CordicBound.vacuous(p, b) }
+    val candidates = if (inRange.isLeft) Nil else for {
       n <- 4 to 40
-      b <- (8 to 48).find(b => CordicBound.headline(make(n, b)).total <= target)
+      b <- (8 to 48).find(b => meets(make(n, b)))
     } yield make(n, b)
-    check.flatMap(_ =>
+    inRange.flatMap(_ =>
     if (candidates.isEmpty) Left(f"--max-error: $target%.3e is below what n <= 40 and b <= 48 can guarantee" +
       (if (peakTable > 0) s" with a $peakTable-entry peak table" else ""))
     else {
