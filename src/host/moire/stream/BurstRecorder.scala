@@ -115,7 +115,7 @@ object BurstRecorder {
     take(c.takeBurstFrames())
     val bytes = StreamV1.BurstInfoBytes + b.samples * 4 + (b.samples / StreamV1.BurstFrameWords + 1) * StreamV1.burstFrameBytes(0)
     val limit = System.nanoTime() + ((bytes * 10.0 / o.baud * 1.5 + 2) * 1e9).toLong
-    val bar = if (o.quiet) None else Some(new moire.progress.Bar("burst", b.samples, " samples", 10))
+    val bar = if (o.quiet) None else Some(new moire.progress.Bar("burst", b.samples, " samples", 10, plainGapS = moire.progress.Bar.CaptureGapS))
     def got = samples.map(_.words.size.toLong).sum
     try {
       while (System.nanoTime() < limit && !(info.isDefined && got >= info.get.length)) {

@@ -278,7 +278,9 @@ object Recorder {
     val buf = new Array[Byte](4096)
     val t0 = System.nanoTime()
     val deadline = t0 + (o.seconds * 1e9).toLong
-    val bar = if (o.quiet) None else Some(new moire.progress.Bar("record", math.ceil(o.seconds * 10).toLong, " s", 10))
+    // in a log or a pipe a line every 10 s at most, not one each tenth of a short recording
+    val bar = if (o.quiet) None else Some(new moire.progress.Bar("record", math.ceil(o.seconds * 10).toLong, " s", 10,
+      plainGapS = moire.progress.Bar.CaptureGapS))
     var failed: Option[StreamError] = None
     try try {
       take(dec.feed(first))
