@@ -1,7 +1,6 @@
 package moire.stream
 
 import moire.protocol.{BurstLayout, Registers, StreamV1}
-import moire.recording.Recording
 import moire.signal.AdcFormat
 
 /** A burst request: N samples, the trigger, the samples before it, how long to wait for the trigger.
@@ -51,7 +50,7 @@ object BurstRecorder {
   def record(link: ByteLink, o: RecordOptions, b: BurstOptions, say: String => Unit, warn: String => Unit): RecordResult = {
     validate(o, b)
     val file = os.Path(o.out, os.pwd)
-    moire.files.SafeWrite.checkFile(file)
+    moire.files.SafeWrite.checkWritable(file)   // before the burst, which may never come again
     val c = new BoardClient(link, o.timeoutMs)
     BoardClient.check(c, o.baud, "")
     def ask(f: => Long): Long = try f catch { case e: NoAnswer => throw new StreamError(e.getMessage) }
@@ -92,13 +91,14 @@ object BurstRecorder {
     val (rec, check) = try BurstAssembler.recording(info, samples, clk, fmt, meta) catch {
       case e: StreamError => throw new StreamError(e.getMessage + (if (lost.nonEmpty) s" (${lost.mkString(", ")})" else ""))
     }
-    Recording.write(file, rec)
+    val saved = KeepRecording(file, rec, "moire-burst")
     val elapsed = (System.nanoTime() - t0) / 1e9
-    say(f"wrote $file: burst of ${rec.length} samples at ${Recorder.num(clk)} Hz (${b.pre} before the trigger at sample index ${info.trigger.index}) in $elapsed%.2f s")
+    say(f"wrote ${saved.file}: burst of ${rec.length} samples at ${Recorder.num(clk)} Hz (${b.pre} before the trigger at sample index ${info.trigger.index}) in $elapsed%.2f s")
     say(s"reference count: ${check.refSkips} A/B steps skipped" + check.triggerError.fold("")(e => s", rebuilt minus board count at the trigger $e"))
     val warnings = (if (lost.nonEmpty) Seq(s"WARNING: data lost on the link: ${lost.mkString(", ")}") else Nil) ++
       (if (check.refSkips > 0 || check.triggerError.exists(_ != 0)) Seq("WARNING: the reference count rebuilt from the A/B pins disagrees with the board's counter (see ref_skips, ref_trigger_error in the file)") else Nil)
     warnings.foreach(warn)
+    saved.failure.foreach(f => throw new StreamError(s"$f; the burst of ${rec.length} samples is in ${saved.file} instead"))
     RecordResult(file, rec.length, st, BoardSetup(1, clk, fmt, m, None, fromBoard = true), rec.meta, warnings)
   }
 

@@ -69,7 +69,7 @@ object Recorder {
     }
     if (o.port.trim.isEmpty) throw new StreamError("--port is empty: name a serial port, e.g. /dev/ttyUSB0")
     moire.files.SafeWrite.refuseInputs(o.out, Seq(o.port))   // the port's link is no output
-    moire.files.SafeWrite.checkFile(os.Path(o.out, os.pwd))   // before the port is opened and the capture runs
+    moire.files.SafeWrite.checkWritable(os.Path(o.out, os.pwd))   // before the port is opened and the capture runs
     moire.files.SafeWrite.checkKind(os.Path(o.out, os.pwd), "a moire recording") // (notes under its name: refused now, not after it)
   }
 
@@ -123,7 +123,6 @@ object Recorder {
 
   def record(link: ByteLink, o: RecordOptions, say: String => Unit, warn: String => Unit): RecordResult = {
     validate(o)
-    moire.files.SafeWrite.checkFile(os.Path(o.out, os.pwd))   // before the capture, not after it
     val client = new BoardClient(link, o.timeoutMs)
     val s = if (o.listenOnly) BoardSetup(o.decimation.get, o.adcClockHz.get, AdcFormat.parse(o.adcFormat.get).toOption.get,
       o.countsPerPeriod.get, None, fromBoard = false) else setup(client, o)
@@ -135,8 +134,8 @@ object Recorder {
       s"(${stats.bytes} bytes): the board stopped streaming?")
     if (rec.rows == 0) throw new StreamError(s"${o.port}: ${stats.frames} frames but no records in ${o.seconds} s: is streaming on (control bit0)?")
     val meta = metadata(o, s, stats, elapsed) ++ failed.map(_ => "link_failed_after_s" -> f"$elapsed%.3f")
-    val file = os.Path(o.out, os.pwd)
-    Recording.write(file, rec.recording(s, meta))
+    val saved = KeepRecording(os.Path(o.out, os.pwd), rec.recording(s, meta), "moire-record")
+    val file = saved.file
     val summary = Seq(
       f"wrote $file: ${rec.rows} records at ${num(s.sampleRateHz)} Hz (adc clock ${num(s.adcClockHz)} Hz / D ${s.decimation}) in $elapsed%.2f s",
       s"frames ${stats.frames}, records ${stats.records}, CRC errors ${stats.crcErrors}, bad headers ${stats.badHeaders}, " +
@@ -145,8 +144,11 @@ object Recorder {
     summary.foreach(say)
     val warnings = lossWarning(stats).toSeq ++ (if (failed.isDefined) None else stoppedWarning(rec.rows, stats, s, o.baud, elapsed))
     warnings.foreach(warn)
-    // the link gone mid-recording (a cable pulled): the records that arrived are in the file, and the command fails
-    failed.foreach(e => throw new StreamError(f"${e.getMessage.stripSuffix(".")} after $elapsed%.2f s of ${num(o.seconds)}; $file holds the ${rec.rows} records received"))
+    // the link gone mid-recording (a cable pulled), a disk full at the end: the records that arrived are in a file,
+    // and the command fails naming it
+    val ended = failed.map(e => f"${e.getMessage.stripSuffix(".")} after $elapsed%.2f s of ${num(o.seconds)}")
+    val where = saved.failure.fold(s"$file holds the ${rec.rows} records received")(f => s"$f; the ${rec.rows} records received are in $file instead")
+    if (ended.isDefined || saved.failure.isDefined) throw new StreamError((ended.toSeq :+ where).mkString("; "))
     RecordResult(file, rec.rows, stats, s, meta, warnings)
   }
 

@@ -265,6 +265,19 @@ object SafeWrite {
     if (os.exists(target) && !Files.isWritable(target.toNIO)) throw new FileError(s"$target: the file is read-only")
   }
 
+  /** `checkFile`, and a file really made in `target`'s folder (then removed): before work that cannot be done again
+    * (a recording), whose output must not fail at the end. The folder's mode does not tell: root may write by it in
+    * /proc or on a read-only mount, and a full disk takes no byte either.
+    */
+  def checkWritable(target: os.Path): Unit = {
+    checkFile(target)
+    val probe = target / os.up / s".${target.last}.probe-${ProcessHandle.current().pid()}-${Thread.currentThread().getId}"
+    Temporaries.add(probe)
+    try Files.write(probe.toNIO, Array[Byte]('\n'))
+    catch { case e: IOException => throw new FileError(s"$target: cannot write a file there (${reason(e)})") }
+    finally { try Files.deleteIfExists(probe.toNIO) catch { case _: IOException => () }; Temporaries.done(probe) }
+  }
+
   /** The command running writes recordings (simulate, record): its outputs may replace a simulated recording. */
   val writesRecordings = new scala.util.DynamicVariable[Boolean](false)
 
