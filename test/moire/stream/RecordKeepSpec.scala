@@ -1,13 +1,16 @@
 package moire.stream
 
 import moire.MoireError
-import moire.files.SafeWrite
+import moire.files.{Interrupts, SafeWrite}
 import moire.recording.Recording
 import org.scalatest.flatspec.AnyFlatSpec
 import org.scalatest.matchers.should.Matchers
+import scala.concurrent.{Await, Future}
+import scala.concurrent.ExecutionContext.Implicits.global
+import scala.concurrent.duration._
 
 /** A recording cannot be made again: `record` checks its output before it starts, keeps the records when the file
-  * cannot be written at the end (a full disk), and says in one line where they are.
+  * cannot be written at the end (a full disk) and when Ctrl-C stops it, and says in one line where they are.
   */
 class RecordKeepSpec extends AnyFlatSpec with Matchers {
   private val d = 80000L
@@ -49,5 +52,59 @@ class RecordKeepSpec extends AnyFlatSpec with Matchers {
       Recording.read(kept).length shouldBe rows
     } finally os.remove(kept)
     os.exists(out) shouldBe false
+  }
+
+  it should "keep what arrived when interrupted (the shutdown hook's path), and fail with one line naming the file" in {
+    val out = os.temp.dir(prefix = "moire-int-") / "rec.csv"
+    val t0 = System.nanoTime()
+    val run = Future(Recorder.record(PacedLink.board(8.0, 500), opts(out, 8.0), _ => (), _ => ()))
+    Thread.sleep(1500)
+    Interrupts.interrupt() shouldBe true // what Ctrl-C's hook calls first
+    val e = intercept[MoireError](Await.result(run, 10.seconds))
+    (System.nanoTime() - t0) / 1e9 should be < 4.0
+    val m = e.getMessage
+    m.linesIterator.size shouldBe 1
+    m should fullyMatch regex s"""interrupted after \\d+\\.\\d\\d s of 8 s; \\Q$out\\E holds the \\d+ records received"""
+    val rec = Recording.read(out)
+    m should include(s"holds the ${rec.length} records received")
+    rec.length should be > 300 // 1.5 s at 500 a second, less the frame that starts it
+    rec.meta.get("interrupted_after_s").map(_.toDouble) should not be empty
+    os.list(out / os.up).map(_.last) shouldBe Seq("rec.csv") // written whole, no temporary left
+    Interrupts.interrupt() shouldBe false // nothing stoppable runs any more
+  }
+
+  "moire record (command line)" should "write what arrived and say so in one line on Ctrl-C (SIGINT), exit 130" in PtyPair { pty =>
+    val board = new FakeBoard(pty, FakeBoard.registers(), streamWhen = Some(_.addr == moire.protocol.Registers.FrameRecords.addr))
+    val n = 8
+    board.stream(BoardStreamFixture.records(8 * 500, d, 40e6).grouped(n).map(rs => Planned(rs)), moire.protocol.StreamV1.recordFrameBytes(n) * 500 / n)
+    val out = pty.dir / "sig.csv"
+    val javaBin = new java.io.File(System.getProperty("java.home"), "bin/java").getPath
+    // a job started in the background by a non-interactive shell inherits SIGINT ignored, and so would the child: perl
+    // puts the default action back and execs the JVM (same pid), as InterruptSpec does
+    val restore = Seq("perl", "-e", "$SIG{INT} = 'DEFAULT'; exec @ARGV or die \"exec: $!\"")
+    val p = new ProcessBuilder((restore ++ Seq(javaBin, "-cp", System.getProperty("java.class.path"), "moire.cli.Main", "record",
+      "--port", pty.host.toString, "--seconds", "8", "--out", out.toString)): _*).redirectErrorStream(true).start()
+    val lines = new java.util.concurrent.LinkedBlockingQueue[String]()
+    val reader = new Thread(() => scala.io.Source.fromInputStream(p.getInputStream).getLines().foreach(lines.add))
+    reader.setDaemon(true); reader.start()
+    try {
+      // the progress line at the start of the capture (no terminal here), then a second and a half of records
+      val first = lines.poll(30, java.util.concurrent.TimeUnit.SECONDS)
+      withClue(s"first line: $first") { first should startWith("record: ") }
+      Thread.sleep(1500)
+      os.proc("kill", "-INT", p.pid().toString).call() // Ctrl-C (Process.destroy would close the pipe the last line comes through)
+      p.waitFor(20, java.util.concurrent.TimeUnit.SECONDS) shouldBe true
+      reader.join(5000)
+    } finally { p.destroyForcibly(); board.close() }
+    val said = Iterator.continually(lines.poll()).takeWhile(_ != null).toSeq
+    withClue(s"exit ${p.exitValue()}, said:\n${said.mkString("\n")}\n") {
+      p.exitValue() shouldBe 130
+      val err = said.filter(_.startsWith("moire: "))
+      err should have size 1
+      err.head should fullyMatch regex s"""moire: interrupted after \\d+\\.\\d\\d s of 8 s; \\Q$out\\E holds the \\d+ records received"""
+      val rows = err.head.split(" records received")(0).split(' ').last.toInt
+      Recording.read(out).length shouldBe rows
+      rows should be > 300
+    }
   }
 }

@@ -354,7 +354,8 @@ object Main {
         println(Help.command(m, this, extra)); 0
     }
 
-  def main(args: Array[String]): Unit = { val code = run(args); if (code != 0) sys.exit(code) }
+  // a recording stopped by Ctrl-C is waited for until its last line is said (`Interrupts`)
+  def main(args: Array[String]): Unit = { val code = moire.files.Interrupts.command(run(args)); if (code != 0) sys.exit(code) }
 
   /** The command line without leaving the JVM: the exit code (2 for a user's mistake, told in one line). */
   def run(args: Array[String]): Int = {

@@ -128,12 +128,23 @@ object Recorder {
       o.countsPerPeriod.get, None, fromBoard = false) else setup(client, o)
     capacityWarning(s, o.baud).foreach(warn)
     val start = settle(client, o, s)
-    val (rec, stats, elapsed, failed) = capture(link, o, s, start)
-    failed.filter(_ => rec.rows == 0).foreach(e => throw e)
+    // from here on Ctrl-C keeps what arrived: the capture ends early and the file is written before the JVM ends
+    moire.files.Interrupts.stoppable(stop => keep(capture(link, o, s, start, stop), o, s, say, warn))
+  }
+
+  /** Writes the records captured and says so; fails (after writing them) when the link failed, Ctrl-C stopped the
+    * capture, or the file had to go elsewhere.
+    */
+  private def keep(c: Captured, o: RecordOptions, s: BoardSetup, say: String => Unit, warn: String => Unit): RecordResult = {
+    val (rec, stats, elapsed) = (c.cols, c.stats, c.elapsed)
+    val upTo = f"after $elapsed%.2f s of ${num(o.seconds)}"
+    c.failed.filter(_ => rec.rows == 0).foreach(e => throw e)
+    if (c.interrupted && rec.rows == 0) throw new StreamError(s"interrupted $upTo s, before any record arrived; no file written")
     if (stats.frames == 0) throw new StreamError(s"${o.port}: no frames in ${o.seconds} s at ${o.baud} baud after the start " +
       s"(${stats.bytes} bytes): the board stopped streaming?")
     if (rec.rows == 0) throw new StreamError(s"${o.port}: ${stats.frames} frames but no records in ${o.seconds} s: is streaming on (control bit0)?")
-    val meta = metadata(o, s, stats, elapsed) ++ failed.map(_ => "link_failed_after_s" -> f"$elapsed%.3f")
+    val meta = metadata(o, s, stats, elapsed) ++ c.failed.map(_ => "link_failed_after_s" -> f"$elapsed%.3f") ++
+      (if (c.interrupted) Some("interrupted_after_s" -> f"$elapsed%.3f") else None)
     val saved = KeepRecording(os.Path(o.out, os.pwd), rec.recording(s, meta), "moire-record")
     val file = saved.file
     val summary = Seq(
@@ -142,11 +153,11 @@ object Recorder {
         s"seq gaps ${stats.seqGaps} (${stats.seqMissing} frames), sample-index gaps ${stats.indexGaps} (${stats.indexMissing} records), " +
         s"dropped records ${stats.dropped}, truncated ${stats.truncated}")
     summary.foreach(say)
-    val warnings = lossWarning(stats).toSeq ++ (if (failed.isDefined) None else stoppedWarning(rec.rows, stats, s, o.baud, elapsed))
+    val warnings = lossWarning(stats).toSeq ++ (if (c.failed.isDefined) None else stoppedWarning(rec.rows, stats, s, o.baud, elapsed))
     warnings.foreach(warn)
-    // the link gone mid-recording (a cable pulled), a disk full at the end: the records that arrived are in a file,
-    // and the command fails naming it
-    val ended = failed.map(e => f"${e.getMessage.stripSuffix(".")} after $elapsed%.2f s of ${num(o.seconds)}")
+    // the link gone mid-recording (a cable pulled), Ctrl-C, a disk full at the end: the records that arrived are in a
+    // file, and the command fails naming it
+    val ended = c.failed.map(e => s"${e.getMessage.stripSuffix(".")} $upTo").orElse(if (c.interrupted) Some(s"interrupted $upTo s") else None)
     val where = saved.failure.fold(s"$file holds the ${rec.rows} records received")(f => s"$f; the ${rec.rows} records received are in $file instead")
     if (ended.isDefined || saved.failure.isDefined) throw new StreamError((ended.toSeq :+ where).mkString("; "))
     RecordResult(file, rec.rows, stats, s, meta, warnings)
@@ -269,16 +280,18 @@ object Recorder {
         extra.collect { case (k, v) if k != RecordColumns.ref || v.length == rows => k -> v.toArray })
   }
 
-  /** Reads for `seconds`, then to the end of the frame in progress (at most 1 s more). */
-  /** The records until the time is up, their figures and seconds, and the link's failure when it failed on the way
-    * (what arrived before it is kept).
+  /** What `capture` got: the records, their figures and seconds, the link's failure when it failed on the way (what
+    * arrived before it is kept), and whether Ctrl-C ended it.
     */
-  private def capture(link: ByteLink, o: RecordOptions, s: BoardSetup, first: Array[Byte]): (Columns, StreamStats, Double, Option[StreamError]) = {
+  private final case class Captured(cols: Columns, stats: StreamStats, elapsed: Double, failed: Option[StreamError], interrupted: Boolean)
+
+  /** Reads for `seconds` (or until `stop` is requested), then to the end of the frame in progress (at most 1 s more). */
+  private def capture(link: ByteLink, o: RecordOptions, s: BoardSetup, first: Array[Byte], stop: moire.files.Interrupts.Stop): Captured = {
+    val t0 = System.nanoTime()
     val dec = new Decoder(s.decimation)
     val cols = new Columns
     def take(fs: Vector[Frame]): Unit = fs.foreach { case f: RecordFrame => f.records.foreach(cols.add); case _ => }
     val buf = new Array[Byte](4096)
-    val t0 = System.nanoTime()
     val deadline = t0 + (o.seconds * 1e9).toLong
     // in a log or a pipe a line every 10 s at most, not one each tenth of a short recording
     val bar = if (o.quiet) None else Some(new moire.progress.Bar("record", math.ceil(o.seconds * 10).toLong, " s", 10,
@@ -286,7 +299,7 @@ object Recorder {
     var failed: Option[StreamError] = None
     try try {
       take(dec.feed(first))
-      while (System.nanoTime() < deadline) {
+      while (System.nanoTime() < deadline && !stop.requested) {
         val n = link.read(buf)
         if (n > 0) take(dec.feed(buf, 0, n))
         bar.foreach { b =>
@@ -303,9 +316,14 @@ object Recorder {
         while (i < n && !done) { val fs = dec.feed(buf, i, 1); take(fs); done = fs.nonEmpty || dec.buffered == 0; i += 1 }
       }
       take(dec.finish())
-    } catch { case e: StreamError => failed = Some(e); take(dec.finish()) }
+    } catch {
+      // a port that fails as the JVM ends was closed by its library's own hook: Ctrl-C, not a cable pulled
+      case e: StreamError => if (!stop.requested && !moire.files.Interrupts.shuttingDown) failed = Some(e); take(dec.finish())
+    }
     finally bar.foreach(_.close())
-    (cols, dec.stats, (System.nanoTime() - t0) / 1e9, failed)
+    val elapsed = (System.nanoTime() - t0) / 1e9
+    val interrupted = failed.isEmpty && (stop.requested || moire.files.Interrupts.shuttingDown) && elapsed < o.seconds
+    Captured(cols, dec.stats, elapsed, failed, interrupted)
   }
 }
 

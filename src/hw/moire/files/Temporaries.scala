@@ -2,7 +2,8 @@ package moire.files
 
 import java.nio.file.{Files, LinkOption}
 
-/** The temporary files and folders moire is writing: a JVM shutdown hook (Ctrl-C, SIGTERM) removes them, and
+/** The temporary files and folders moire is writing: a JVM shutdown hook (Ctrl-C, SIGTERM) removes them (after
+  * stoppable work, [[Interrupts]], has written what it has), and
   * renames that put finished outputs in place run under [[lock]], so an interrupt falls before or after them,
   * never between them.
   */
@@ -12,11 +13,18 @@ object Temporaries {
   /** Held while finished outputs are renamed into place (and by the shutdown hook). */
   val lock = new Object
 
-  Runtime.getRuntime.addShutdownHook(new Thread(() => lock.synchronized {
-    closing = true
-    live.foreach(remove)
-    live.clear()
+  Runtime.getRuntime.addShutdownHook(new Thread(() => {
+    // a recording stopped by Ctrl-C writes what arrived first (its renames need the lock, and `closing` unset)
+    Interrupts.shutdown()
+    lock.synchronized {
+      closing = true
+      live.foreach(remove)
+      live.clear()
+    }
   }, "moire-temporaries"))
+
+  /** Nothing but this object's start: its shutdown hook is in place. */
+  def watch(): Unit = ()
 
   def add(p: os.Path): Unit = lock.synchronized(live += p)
   def done(p: os.Path): Unit = lock.synchronized(live -= p)
