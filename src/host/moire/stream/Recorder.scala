@@ -143,8 +143,10 @@ object Recorder {
     if (stats.frames == 0) throw new StreamError(s"${o.port}: no frames in ${o.seconds} s at ${o.baud} baud after the start " +
       s"(${stats.bytes} bytes): the board stopped streaming?")
     if (rec.rows == 0) throw new StreamError(s"${o.port}: ${stats.frames} frames but no records in ${o.seconds} s: is streaming on (control bit0)?")
+    val clock = ClockCheck.measured(c.span, stats, o.baud)
     val meta = metadata(o, s, stats, elapsed) ++ c.failed.map(_ => "link_failed_after_s" -> f"$elapsed%.3f") ++
-      (if (c.interrupted) Some("interrupted_after_s" -> f"$elapsed%.3f") else None)
+      (if (c.interrupted) Some("interrupted_after_s" -> f"$elapsed%.3f") else None) ++
+      clock.map(m => "adc_clock_measured_hz" -> num(ClockCheck.round3(m)))
     val saved = KeepRecording(os.Path(o.out, os.pwd), rec.recording(s, meta), "moire-record")
     val file = saved.file
     val summary = Seq(
@@ -153,7 +155,10 @@ object Recorder {
         s"seq gaps ${stats.seqGaps} (${stats.seqMissing} frames), sample-index gaps ${stats.indexGaps} (${stats.indexMissing} records), " +
         s"dropped records ${stats.dropped}, truncated ${stats.truncated}")
     summary.foreach(say)
-    val warnings = lossWarning(stats).toSeq ++ (if (c.failed.isDefined) None else stoppedWarning(rec.rows, stats, s, o.baud, elapsed))
+    val clockWarning = ClockCheck.warning(clock, s, byHand = o.adcClockHz.isDefined)
+    // a wrong clock makes the records look late or early; a link that failed ends them: neither is a stream that stopped
+    val stopped = if (c.failed.isDefined || clockWarning.isDefined) None else stoppedWarning(rec.rows, stats, s, o.baud, elapsed)
+    val warnings = lossWarning(stats).toSeq ++ clockWarning ++ stopped
     warnings.foreach(warn)
     // the link gone mid-recording (a cable pulled), Ctrl-C, a disk full at the end: the records that arrived are in a
     // file, and the command fails naming it
@@ -266,6 +271,8 @@ object Recorder {
     val extra: Map[String, ArrayBuffer[Double]] = (RecordColumns.extra :+ RecordColumns.ref).map(_ -> ArrayBuffer.empty[Double]).toMap
     private var lastRaw = -1L; private var unwrapped = 0L
     def rows: Int = sin.length
+    /** The last record's sample index, unwrapped past 2^32. */
+    def lastIndex: Long = unwrapped
     def add(r: Record): Unit = {
       if (lastRaw < 0) unwrapped = r.index
       else { val d = (r.index - lastRaw) & StreamV1.MaxU32; unwrapped += (if (d >= (1L << 31)) d - (1L << 32) else d) }
@@ -281,16 +288,25 @@ object Recorder {
   }
 
   /** What `capture` got: the records, their figures and seconds, the link's failure when it failed on the way (what
-    * arrived before it is kept), and whether Ctrl-C ended it.
+    * arrived before it is kept), whether Ctrl-C ended it, and the arrivals that time the sample index.
     */
-  private final case class Captured(cols: Columns, stats: StreamStats, elapsed: Double, failed: Option[StreamError], interrupted: Boolean)
+  private final case class Captured(cols: Columns, stats: StreamStats, elapsed: Double, failed: Option[StreamError],
+                                    interrupted: Boolean, span: Option[ClockCheck.Span])
 
   /** Reads for `seconds` (or until `stop` is requested), then to the end of the frame in progress (at most 1 s more). */
   private def capture(link: ByteLink, o: RecordOptions, s: BoardSetup, first: Array[Byte], stop: moire.files.Interrupts.Stop): Captured = {
     val t0 = System.nanoTime()
     val dec = new Decoder(s.decimation)
     val cols = new Columns
-    def take(fs: Vector[Frame]): Unit = fs.foreach { case f: RecordFrame => f.records.foreach(cols.add); case _ => }
+    var span: Option[ClockCheck.Span] = None
+    def take(fs: Vector[Frame]): Unit = fs.foreach {
+      case f: RecordFrame if f.records.nonEmpty =>
+        f.records.foreach(cols.add)
+        val now = System.nanoTime()
+        if (now - t0 >= ClockCheck.SkipSeconds * 1e9)
+          span = Some(span.fold(ClockCheck.Span.first(now, cols.lastIndex))(_.next(now, cols.lastIndex)))
+      case _ =>
+    }
     val buf = new Array[Byte](4096)
     val deadline = t0 + (o.seconds * 1e9).toLong
     // in a log or a pipe a line every 10 s at most, not one each tenth of a short recording
@@ -323,7 +339,7 @@ object Recorder {
     finally bar.foreach(_.close())
     val elapsed = (System.nanoTime() - t0) / 1e9
     val interrupted = failed.isEmpty && (stop.requested || moire.files.Interrupts.shuttingDown) && elapsed < o.seconds
-    Captured(cols, dec.stats, elapsed, failed, interrupted)
+    Captured(cols, dec.stats, elapsed, failed, interrupted, span)
   }
 }
 
