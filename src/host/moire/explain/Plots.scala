@@ -10,14 +10,14 @@ import org.knowm.xchart.style.markers.SeriesMarkers
 object Plots {
   System.setProperty("java.awt.headless", "true")
 
-  /** Draws a small chart into memory on a daemon thread: the library's first chart costs about half a second of class
-    * loading and font set-up, which then overlaps the fit instead of following it.
-    */
   /** The thread a record's plots are drawn on, beside its fit. */
   lazy val Pool: java.util.concurrent.ExecutorService = java.util.concurrent.Executors.newCachedThreadPool { r =>
     val t = new Thread(r, "moire-plots"); t.setDaemon(true); t
   }
 
+  /** Draws a small chart into memory on a daemon thread: the library's first chart costs about half a second of class
+    * loading and font set-up, which then overlaps the fit instead of following it.
+    */
   def warmUp(): Unit = {
     val t = new Thread(() => try {
       val c = chart("warm-up", "x", "y"); line(c, "y", Array(0.0, 1.0), Array(0.0, 1.0))
