@@ -67,7 +67,8 @@ object Jumps {
       }
       parts(b0 / block) = out.result()
     }
-    val flagged = parts.flatten
+    // (the reference path runs the loop as one block: the others stay empty)
+    val flagged = parts.filter(_ != null).flatten
     if (flagged.isEmpty || flagged.length > MaxFlagged) return Nil
     // each step changes two increments: into it and out of it; the one that stands out from its neighbours is the step.
     // The neighbours on each side on a line of their own (a motion that speeds up changes them a sample by about the
