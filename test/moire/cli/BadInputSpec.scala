@@ -603,6 +603,9 @@ class BadInputSpec extends AnyFlatSpec with Matchers {
   bad("an output name with a line break", "an output name holds a control character (U+000A")("simulate", "--out", (dir / "a\nb.csv").toString, "--samples", "100")
   bad("a replay --out that is empty", "an output file's name is empty")("replay", good.toString, "--out", "")
   bad("an accuracy --json that is empty", "an output file's name is empty")("accuracy", "--json", "")
+  // root may write into /proc by its permission bits, yet no file can be made there: said before the tables' 10 s run
+  // (one line: no progress line of the run came before it)
+  bad("an accuracy --json in /proc", "/proc: the folder")("accuracy", "--json", "/proc/moire-x.json")
   "simulate" should "write over a recording it wrote (its model line makes it again)" in {
     val f = dir / "again.csv"
     for (seed <- Seq("1", "2")) { val (code, err) = runCli("simulate", "--out", f.toString, "--samples", "100", "--seed", seed); withClue(err) { code shouldBe 0 } }

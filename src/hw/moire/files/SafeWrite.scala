@@ -237,6 +237,19 @@ object SafeWrite {
     try os.makeDir.all(dir) catch { case e: IOException => throw new FileError(s"$dir: cannot make the folder (${reason(e)})") }
     missing.reverse.foreach(made.push)
     if (!Files.isWritable(dir.toNIO)) throw new FileError(s"$dir: the folder is not writable")
+    probe(dir)
+  }
+  /** Makes and removes an empty file in `dir`: the permission bits do not tell (root may write anywhere by them, yet
+    * /proc or a read-only mount takes no file), and a command found that out only at its end, after its work.
+    */
+  private def probe(dir: os.Path): Unit = {
+    val p = dir / s".moire-probe-${ProcessHandle.current().pid()}-${Thread.currentThread().getId}"
+    Temporaries.add(p)
+    try { Files.createFile(p.toNIO); Files.delete(p.toNIO) }
+    catch {
+      case _: FileAlreadyExistsException => () // a probe of this thread's left by a killed run: the folder took it
+      case e: IOException => throw new FileError(s"$dir: the folder takes no new file (${reason(e)})")
+    } finally { try Files.deleteIfExists(p.toNIO) catch { case _: IOException => () }; Temporaries.done(p) }
   }
   private val made = new java.util.concurrent.ConcurrentLinkedDeque[os.Path]()
 
