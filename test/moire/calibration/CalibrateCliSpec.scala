@@ -14,7 +14,8 @@ class CalibrateCliSpec extends AnyFlatSpec {
     val (code, out, err) = run("calibrate", "--input", "docs/calibration-sample-cw-ccw.csv", "--out", dir.toString, "--harmonics", "3")
     assert(code == 0, err)
     val stem = "calibration-sample-cw-ccw"
-    assert(os.list(dir).map(_.last).toSet == Set(s"$stem.coefficients.json", s"$stem.registers.txt", s"$stem.png"))
+    // and the folder's list of what moire wrote there (their hashes: the next run replaces them, not a user's file)
+    assert(os.list(dir).map(_.last).toSet == Set(s"$stem.coefficients.json", s"$stem.registers.txt", s"$stem.png", moire.files.SafeWrite.Manifest))
     val json = ujson.read(os.read(dir / s"$stem.coefficients.json"))
     assert(json("harmonics").arr.map(_("order").num.toInt) == Seq(1, 2, 3))
     assert(json("registers").arr.size == 9 && json("reversal_cw_minus_ccw")("shared_angles").num == 36)
@@ -34,5 +35,28 @@ class CalibrateCliSpec extends AnyFlatSpec {
       val lines = err.linesIterator.filter(_.nonEmpty).toSeq
       assert(code == 2 && lines.size == 1 && lines.head.startsWith(expected), s"$args: exit $code, stderr:\n$err")
     }
+  }
+
+  it should "refuse a user's image, JSON or notes under its outputs' names before the fit, and write again over its own" in {
+    val stem = "calibration-sample"
+    val args = Seq("calibrate", "--input", s"docs/$stem.csv", "--out")
+    val own = os.temp.dir()
+    assert(run(args :+ own.toString: _*)._1 == 0)
+    val files = Seq(s"$stem.png", s"$stem.coefficients.json", s"$stem.registers.txt")
+    // a user's file of each name, alone in a folder moire never wrote into (no .moire-files): kept, one line, nothing written
+    for ((name, bytes) <- Seq(files(0) -> os.read.bytes(own / files(0)), files(1) -> """{"mine":1}""".getBytes, files(2) -> "my own notes\n".getBytes)) {
+      val d = os.temp.dir(); os.write(d / name, bytes)
+      val (code, out, err) = run(args :+ d.toString: _*)
+      val lines = err.linesIterator.filter(_.nonEmpty).toSeq
+      assert(code == 2 && lines.size == 1 && (lines.head.contains("is not as moire wrote it") || lines.head.contains("holds text")), s"$name: exit $code, stderr:\n$err")
+      assert(lines.head.contains(name) && !out.contains("harmonics up to order"), s"$name: $err\n$out")
+      assert(os.list(d).map(_.last) == Seq(name) && os.read.bytes(d / name).sameElements(bytes), name)
+    }
+    // its own files again (and an earlier version's, without the list, as that wrote them)
+    assert(run(args :+ own.toString: _*)._1 == 0)
+    os.remove(own / moire.files.SafeWrite.Manifest)
+    val (code, _, err) = run(args :+ own.toString: _*)
+    assert(code == 0, err)
+    assert(os.list(own).map(_.last).toSet == files.toSet + moire.files.SafeWrite.Manifest)
   }
 }

@@ -11,7 +11,7 @@ object Calibrate {
                           byDirection: Seq[(String, HarmonicFitResult)], reversal: Option[Reversal], files: Seq[os.Path])
 
   def run(input: os.Path, out: os.Path, p: HarmonicParams, maxOrderOpt: Int): Result = {
-    moire.files.SafeWrite.checkFolder(out)   // before the work, not after it
+    val (jf, rf, pf) = outputs(input, out)
     val data = CalibrationData.read(input)
     val distinct = data.points.map(a => math.round(a.angleDeg * 1e6)).distinct.size
     if (maxOrderOpt < -1) throw new CalibrationError(s"--max-order must be at least 1 (or left out for the default), got $maxOrderOpt")
@@ -49,17 +49,32 @@ object Calibrate {
     // a harmonic beyond the compensator's coefficient range: one line naming the file
     val (json, listing) = try (CoefficientFile.json(p, data.file, fit, extra.result()), CoefficientFile.listing(p, fit))
       catch { case e: CalibrationError => throw new CalibrationError(s"${data.file}: ${e.getMessage}") }
-    val stem = moire.files.Stem.of(data.file)
-    val jf = out / s"$stem.coefficients.json"
-    val rf = out / s"$stem.registers.txt"
-    val pf = out / s"$stem.png"
     val curves = if (byDir.nonEmpty) byDir.map { case (d, f) => CalibrationPlot.Curve(d, data.of(d), f) }
       else Seq(CalibrationPlot.Curve("", data.points, fit))
     // the three files as one: a failed write is one FileError naming the file, all three old files kept
-    moire.files.SafeWrite.all(Seq(jf -> (t => os.write(t, ujson.write(json, indent = 2) + "\n")), rf -> (t => os.write(t, listing)),
-      pf -> CalibrationPlot.png(s"${data.file}: ${p.harmonics} largest harmonics up to order $maxOrder", curves)))
+    moire.files.SafeWrite.made(Seq(jf -> (t => os.write(t, ujson.write(json, indent = 2) + "\n")), rf -> (t => os.write(t, listing)),
+      pf -> CalibrationPlot.png(s"${data.file}: ${p.harmonics} largest harmonics up to order $maxOrder", curves)), earlier(jf))
     Result(data, maxOrder, fit, byDir, reversal, Seq(jf, rf, pf))
   }
+
+  /** The coefficient file, register listing and plot `run` writes for `input`, each checked before the work: new, or
+    * as moire wrote it (`SafeWrite.checkMade`), and of the kind written (a user's JSON, notes or image is refused).
+    */
+  def outputs(input: os.Path, out: os.Path): (os.Path, os.Path, os.Path) = {
+    val stem = moire.files.Stem.of(input)
+    val (jf, rf, pf) = (out / s"$stem.coefficients.json", out / s"$stem.registers.txt", out / s"$stem.png")
+    for ((f, kind) <- Seq(jf -> "JSON", rf -> "a moire-harmonic-registers file", pf -> "a PNG image")) {
+      moire.files.SafeWrite.checkKind(f, kind)
+      moire.files.SafeWrite.checkMade(f, earlier(jf))
+    }
+    (jf, rf, pf)
+  }
+
+  /** A file the folder's list does not name is calibrate's from before the lists when `SafeWrite.earlier` says so, and a
+    * plot only beside such a coefficient file: an image alone in a folder without a list is a user's, not a plot of ours.
+    */
+  private def earlier(jf: os.Path)(t: os.Path): Boolean =
+    moire.files.SafeWrite.earlier(t) && (t.ext != "png" || (os.isFile(jf, followLinks = false) && moire.files.SafeWrite.earlier(jf)))
 
   /** The summary printed to stdout. */
   def report(r: Result): String = {
