@@ -86,6 +86,21 @@ class WriteErrorSpec extends AnyFlatSpec with Matchers {
     keepsEverything(plots, _.ext == "png")("explain", recording.toString, "--quiet", "--no-rtl", "--plots", plots.toString)
   }
 
+  it should "replace a record's plots and report all or none when one plot's write fails" in {
+    val out = dir / "report"
+    runCli("explain", recording.toString, "--quiet", "--no-rtl", "--plots", out.toString, "--json-dir", out.toString)._1 shouldBe 0
+    // another recording of the same name: every plot and the JSON would change; the spectrum's write fails
+    val other = dir / "in2" / "rec.csv"
+    runCli("simulate", "--out", other.toString, "--samples", "5000", "--seed", "3", "--effect", "harmonic:order=3,amplitude_rel=0.02")._1 shouldBe 0
+    val spectrum = (t: os.Path) => t.last == "rec_residual_spectrum.png"
+    keepsEverything(out, spectrum)("explain", other.toString, "--quiet", "--no-rtl", "--plots", out.toString, "--json-dir", out.toString)
+    // into a new folder: no plot, no list, no folder left
+    val fresh = dir / "fresh" / "plots"
+    val (code, err) = failing(spectrum)(runCli("explain", other.toString, "--quiet", "--no-rtl", "--plots", fresh.toString))
+    withClue(err) { code shouldBe 2; err should include("nothing was changed") }
+    os.exists(fresh / os.up) shouldBe false
+  }
+
   "calibrate" should "keep the old coefficient file, listing and plot when the disk is full" in {
     val cal = dir / "cal.csv"
     os.write.over(cal, "# moire-calibration v1\nangle_deg,error_arcsec\n" + (0 until 360 by 10).map { a =>

@@ -113,7 +113,8 @@ object CalibrationExplain {
     out.result()
   }
 
-  def plots(r: Result, dir: os.Path, stem: String): Seq[os.Path] = {
+  /** The three plots, drawn; nothing is written (the caller writes them with the report, as one). */
+  def plots(r: Result, stem: String): Seq[Plots.Drawn] = {
     val a = r.cal.angleDeg; val order = a.indices.sortBy(a(_)).toArray
     def sorted(x: Array[Double]) = order.map(x)
     val c1 = Plots.chart(s"$stem: calibration error and final fit", "angle (degree)", "error (arcsec)")
@@ -126,6 +127,6 @@ object CalibrationExplain {
     val c3 = Plots.chart(s"$stem: residual harmonics of the turn", "order", "amplitude (arcsec)")
     val ks = (1 to kMax).map(_.toDouble).toArray
     Plots.line(c3, "default model", ks, amps(r.before)); Plots.line(c3, "final model", ks, amps(r.after))
-    Seq(Plots.save(c1, dir / s"${stem}_fit.png"), Plots.save(c2, dir / s"${stem}_residual_angle.png"), Plots.save(c3, dir / s"${stem}_residual_spectrum.png"))
+    Seq(Plots.draw(c1, s"${stem}_fit.png"), Plots.draw(c2, s"${stem}_residual_angle.png"), Plots.draw(c3, s"${stem}_residual_spectrum.png"))
   }
 }

@@ -173,14 +173,15 @@ object ExplainCmd {
                          materiality: Materiality, searchSamples: Int): Report = {
     val kind = kindOf(p)
     val stem = moire.files.Stem.of(p)
-    // plots go to --plots, or (for the HTML alone) to a temporary folder
-    val plotFolder = plotDir.map(os.Path(_, os.pwd)).orElse(html.map(_ => os.temp.dir(prefix = "moire-explain-plots")))
-    var plotFiles = Seq.empty[os.Path]
+    // plots for --plots or the HTML, drawn in memory and written at the end with the report (all or none)
+    val plotFolder = plotDir.map(os.Path(_, os.pwd))
+    val drawn = plotDir.isDefined || html.isDefined
+    var plots = Seq.empty[Plots.Drawn]
     var extra = Seq.empty[(String, ujson.Value)]
     val report = try {
       if (kind == "calibration") {
         val r = CalibrationExplain.run(p.toString, Calibration.read(p))
-        plotFolder.foreach(d => plotFiles = CalibrationExplain.plots(r, d, stem))
+        if (drawn) plots = CalibrationExplain.plots(r, stem)
         r.report
       } else {
         val rec = Recording.read(p)
@@ -199,9 +200,8 @@ object ExplainCmd {
         def draw(r: SignalExplain.Result): Unit = {
           val t0 = System.nanoTime()
           val ie = Laps("interpolation error")(InterpolationError.of(r.engine.rec, r.engine))
-          // the record's plots that this call does not make again go: an earlier run's (an effect it found and this one
-          // not), or this run's first call's (a long record searched again on all samples), each as moire wrote it
-          plotFolder.foreach { d => plotFiles = Laps("plots")(Plots.signals(r, d, stem, ie)); moire.files.SafeWrite.removeStale(d, Plots.ofStem(stem), plotFiles) }
+          // a second call (a long record searched again on all samples) draws the plots written in place of the first's
+          if (drawn) plots = Laps("plots")(Plots.signals(r, stem, ie))
           extra = extra.filterNot(_._1 == "interpolation_error") :+ ("interpolation_error" -> ie.json)
           if (sys.props.contains("moire.timing")) System.err.println(f"interpolation error and plots ${(System.nanoTime() - t0) / 1e6}%.0f ms")
         }
@@ -225,12 +225,16 @@ object ExplainCmd {
     val json = report.json
     extra.foreach { case (k, v) => json(k) = v }
     html.foreach(h => json("html") = h.toString)
+    val plotFiles = plotFolder.toSeq.flatMap(d => plots.map(p => d / p._1))
     if (plotDir.isDefined) json("plots") = ujson.Arr.from(plotFiles.map(f => ujson.Str(f.toString)))
-    html.foreach { h =>
-      moire.files.SafeWrite.text(h, HtmlReport.render(json, plotFiles.map(f => f.last -> os.read.bytes(f))))
-      if (plotDir.isEmpty) plotFolder.foreach(os.remove.all)
-    }
-    jsonDir.foreach(d => moire.files.SafeWrite.text(os.Path(d, os.pwd) / s"$stem.json", ujson.write(json, indent = 2)))
+    val page = html.map(h => h -> HtmlReport.render(json, plots))
+    val text = ujson.write(json, indent = 2)
+    // the record's plots, HTML and JSON as one: a failed write changes none of them (the old ones kept, none half-new)
+    moire.files.SafeWrite.made(plotFolder.toSeq.flatMap(Plots.writes(_, plots)),
+      plain = page.toSeq.map { case (h, t) => h -> ((f: os.Path) => os.write(f, t)) } ++
+        jsonDir.map(d => (os.Path(d, os.pwd) / s"$stem.json") -> ((f: os.Path) => os.write(f, text))))
+    // the record's plots this run did not make go: an earlier run's (an effect it found and this one not), as moire wrote them
+    plotFolder.foreach(d => moire.files.SafeWrite.removeStale(d, Plots.ofStem(stem), plotFiles))
     report
   }
 

@@ -38,12 +38,17 @@ object Plots {
     val ok = xs.indices.filter(i => !xs(i).isNaN && !ys(i).isNaN && !ys(i).isInfinite)
     if (ok.nonEmpty) c.addSeries(name, ok.map(xs).toArray, ok.map(ys).toArray).setMarker(SeriesMarkers.NONE)
   }
-  /** Writes the chart as PNG, its axes at round values first (unless the chart set its own). */
-  def save(c: XYChart, path: os.Path): os.Path = {
+  /** A plot drawn and encoded, not yet written: its file's name and its PNG bytes. */
+  type Drawn = (String, Array[Byte])
+
+  /** The chart as PNG under `name`, its axes at round values first (unless the chart set its own). */
+  def draw(c: XYChart, name: String): Drawn = {
     if (c.getStyler.getXAxisMin == null) Axes.round(c)
-    Laps("plots: draw and encode")(moire.files.SafeWrite.made(Seq(path -> { t => val o = new java.io.FileOutputStream(t.toIO); try BitmapEncoder.saveBitmap(c, o, BitmapFormat.PNG) finally o.close() })))
-    path
+    name -> Laps("plots: draw and encode")(BitmapEncoder.getBitmapBytes(c, BitmapFormat.PNG))
   }
+
+  /** The plots' writes into `dir`, for `SafeWrite.made` to write as one (all of them, or none when a write fails). */
+  def writes(dir: os.Path, plots: Seq[Drawn]): Seq[(os.Path, os.Path => Unit)] = plots.map { case (n, b) => (dir / n) -> ((t: os.Path) => os.write(t, b)) }
 
   /** Whether `name` is one of the plots `signals` makes for the record `stem` (the record `rec` only, not `rec_2`). */
   def ofStem(stem: String)(name: String): Boolean = name.startsWith(stem + "_") && {
@@ -90,21 +95,22 @@ object Plots {
     lazy val predS: Array[Double] = gather(e.predSAt); lazy val predC: Array[Double] = gather(e.predCAt)
   }
 
-  def signals(r: SignalExplain.Result, dir: os.Path, stem: String, ie: InterpolationError): Seq[os.Path] = {
+  /** The record's plots, drawn side by side on all cores; nothing is written (the caller writes them as one). */
+  def signals(r: SignalExplain.Result, stem: String, ie: InterpolationError): Seq[Drawn] = {
     val e = r.engine; val n = e.n; val lsb = e.lsb
     val after = Snapshot.of("final model", e.resS, e.resC)
     val snaps = Seq(r.before, after)
     // every snapshot is of the record's length: one stride, one set of points
     val pts = new Points(e, after.stride)
-    // each plot made and written on its own: side by side on all cores, listed in this order
-    val plots = Seq.newBuilder[() => os.Path]
+    // each plot drawn on its own: side by side on all cores, listed in this order
+    val plots = Seq.newBuilder[() => Drawn]
     // time
     plots += { () =>
       val ct = chart(s"$stem: residual rms against time", "time (s)", "residual rms (LSB)")
       for (s <- snaps; (res, ch) <- Seq((s.resS, "sin"), (s.resC, "cos"))) {
         val (x, y) = binned(j => j * s.stride / e.fs, j => res(j) / lsb, s.size, 0, n / e.fs, 64, rms = true); line(ct, s"$ch, ${s.label}", x, y)
       }
-      save(ct, dir / s"${stem}_$ResidualTime")
+      draw(ct, s"${stem}_$ResidualTime")
     }
     // fringe phase
     plots += { () =>
@@ -112,26 +118,26 @@ object Plots {
       for (s <- snaps; (res, ch) <- Seq((s.resS, "sin"), (s.resC, "cos"))) {
         val (x, y) = binned(pts.fringeDeg(_), j => res(j) / lsb, s.size, 0, 360, 72); line(cp, s"$ch, ${s.label}", x, y)
       }
-      save(cp, dir / s"${stem}_$ResidualPhase")
+      draw(cp, s"${stem}_$ResidualPhase")
     }
     // spectrum
-    plots += (() => spectrum(s"$stem: residual spectrum", snaps, e, dir / s"${stem}_$ResidualSpectrum"))
+    plots += (() => spectrum(s"$stem: residual spectrum", snaps, e, s"${stem}_$ResidualSpectrum"))
     // effects
-    for (((f, b, a), k) <- r.steps.zipWithIndex) plots += (() => effect(f, b, a, e, pts, dir / s"${stem}_effect_${k + 1}_${f.effect}.png", stem))
+    for (((f, b, a), k) <- r.steps.zipWithIndex) plots += (() => effect(f, b, a, e, pts, s"${stem}_effect_${k + 1}_${f.effect}.png", stem))
     // the Lissajous figure before and after the Heydemann correction, the interpolation error
-    plots += (() => save(LissajousPlot.before(s"$stem: Lissajous figure", e.yc, e.ys, ie.ellipse), dir / s"${stem}_$LissajousBefore"))
-    ie.ellipse.foreach(el => plots += (() => save(LissajousPlot.after(s"$stem: Lissajous figure after correction", e.yc, e.ys, el), dir / s"${stem}_$LissajousAfter")))
-    plots += (() => save(InterpolationPlot.chart(s"$stem: interpolation error", ie), dir / s"${stem}_$InterpolationErr"))
+    plots += (() => draw(LissajousPlot.before(s"$stem: Lissajous figure", e.yc, e.ys, ie.ellipse), s"${stem}_$LissajousBefore"))
+    ie.ellipse.foreach(el => plots += (() => draw(LissajousPlot.after(s"$stem: Lissajous figure after correction", e.yc, e.ys, el), s"${stem}_$LissajousAfter")))
+    plots += (() => draw(InterpolationPlot.chart(s"$stem: interpolation error", ie), s"${stem}_$InterpolationErr"))
     val todo = plots.result().toArray
-    val out = new Array[os.Path](todo.length)
-    // every plot runs to its end (each cleans up after itself when its write fails); the first failure is thrown after
+    val out = new Array[Drawn](todo.length)
+    // every plot runs to its end; the first failure is thrown after
     val failed = new Array[Throwable](todo.length)
     java.util.stream.IntStream.range(0, todo.length).parallel().forEach(k => try out(k) = Laps("plots: each")(todo(k)()) catch { case x: Throwable => failed(k) = x })
     failed.find(_ != null).foreach(x => throw x)
     out.toSeq
   }
 
-  def spectrum(title: String, snaps: Seq[Snapshot], e: SignalEngine, path: os.Path): os.Path = {
+  def spectrum(title: String, snaps: Seq[Snapshot], e: SignalEngine, name: String): Drawn = {
     val m = Integer.highestOneBit(math.min(e.n, 1 << 18)); val c = chart(title, "frequency (kHz)", "amplitude (dB LSB)")
     for (s <- snaps) {
       val pq = Fft.powerSum(s.headSin, s.headCos, m) // both channels' power by one FFT
@@ -144,10 +150,10 @@ object Plots {
       }
       line(c, s.label, xs, ys)
     }
-    save(c, path)
+    draw(c, name)
   }
 
-  private def effect(f: Finding, b: Snapshot, a: Snapshot, e: SignalEngine, pts: Points, path: os.Path, stem: String): os.Path = {
+  private def effect(f: Finding, b: Snapshot, a: Snapshot, e: SignalEngine, pts: Points, name: String, stem: String): Drawn = {
     val lsb = e.lsb
     // the speed range over the points, made only for the panels against speed
     lazy val (fLo, fHi) = { val (lo, hi) = Doubles.range(pts.size)(pts.absFreq(_)); (lo, hi + 1e-9) }
@@ -180,7 +186,7 @@ object Plots {
           c.setYAxisGroupTitle(1, "amplitude left in the residual (%)")
           c.getStyler.setYAxisGroupPosition(1, org.knowm.xchart.style.Styler.YAxisPosition.Right)
         }
-        save(c, path)
+        draw(c, name)
       case effects.PlotKind.Slope =>
         val c = chart(title, "|signal slope| (full scale per microsecond)", "residual rms (LSB)")
         // each channel's slope against time (as `SignalEngine.slopes`)
@@ -190,7 +196,7 @@ object Plots {
           val (x, y) = binned(j => ds(j) * 1e-6, j => s.resS(j) / lsb, s.size, 0, hi, 24, rms = true); line(c, s"sin, ${s.label}", x, y)
           val (x2, y2) = binned(j => dc(j) * 1e-6, j => s.resC(j) / lsb, s.size, 0, hi, 24, rms = true); line(c, s"cos, ${s.label}", x2, y2)
         }
-        save(c, path)
+        draw(c, name)
       case kind @ (effects.PlotKind.Time | effects.PlotKind.Position) =>
         // the amplitude left in the residual (sum r u / sum u^2 per bin), against time or the position along the travel
         val (xf, xl): (Int => Double, String) =
@@ -203,7 +209,7 @@ object Plots {
           val (x, num) = binned(xf, j => r(j) * u(j), s.size, lo, hi, 48); val (_, den) = binned(xf, j => u(j) * u(j), s.size, lo, hi, 48)
           line(c, s"$ch, ${s.label}", x, num.zip(den).map { case (p, q) => 100 * p / q })
         }
-        save(c, path)
+        draw(c, name)
       case effects.PlotKind.MechanicalAngle =>
         val l = e.rec.linesPerRev.getOrElse(1.0)
         val c = chart(title, "mechanical angle (degree)", "amplitude left in the residual (%)")
@@ -215,20 +221,20 @@ object Plots {
           val (_, den) = binned(ang, w, s.size, 0, 360, 36)
           line(c, s.label, x, num.zip(den).map { case (p, q) => 100 * p / q })
         }
-        save(c, path)
+        draw(c, name)
       case effects.PlotKind.Level =>
         val c = chart(title, "predicted value (full scale)", "mean residual (LSB)")
         for (s <- Seq(b, a); (r, p, ch) <- Seq[(Array[Double], Array[Double], String)]((s.resS, pts.predS, "sin"), (s.resC, pts.predC, "cos"))) {
           val (x, y) = binned(p(_), j => r(j) / lsb, s.size, -1, 1, 128); line(c, s"$ch, ${s.label}", x, y)
         }
-        save(c, path)
-      case effects.PlotKind.Spectrum => spectrum(title, Seq(b, a), e, path)
+        draw(c, name)
+      case effects.PlotKind.Spectrum => spectrum(title, Seq(b, a), e, name)
       case _ =>
         val c = chart(title, "fringe phase (degree)", "mean residual (LSB)")
         for (s <- Seq(b, a); (r, ch) <- Seq((s.resS, "sin"), (s.resC, "cos")) if f.channel == "both" || f.channel == ch) {
           val (x, y) = binned(pts.fringeDeg(_), j => r(j) / lsb, s.size, 0, 360, 72); line(c, s"$ch, ${s.label}", x, y)
         }
-        save(c, path)
+        draw(c, name)
     }
   }
 }

@@ -122,9 +122,10 @@ object SafeWrite {
   /** Writes files moire makes again at will as one (`all`), each checked by `checkMade` first; their hashes go into their
     * folders' lists, so that the next run knows them as its own.
     */
-  def made(writes: Seq[(os.Path, os.Path => Unit)], unlisted: os.Path => Boolean = earlier): Unit = {
+  def made(writes: Seq[(os.Path, os.Path => Unit)], unlisted: os.Path => Boolean = earlier, plain: Seq[(os.Path, os.Path => Unit)] = Nil): Unit = {
     writes.foreach(w => checkMade(w._1, unlisted))
-    all(writes)
+    // `plain`: files written with them as one (a report the user named), each as `all` writes it and not listed
+    all(writes ++ plain)
     listed(writes.map(_._1))
   }
   def madeText(target: os.Path, s: String): Unit = made(Seq(target -> (t => os.write(t, s))))
