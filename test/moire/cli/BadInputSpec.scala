@@ -560,6 +560,14 @@ class BadInputSpec extends AnyFlatSpec with Matchers {
   bad("an explain flag given twice", "--quiet is given 2 times")("explain", good.toString, "--quiet", "--no-rtl", "--quiet")
   bad("a replay option given twice", "--out is given more than once")("replay", good.toString, "--out", (dir / "r1.csv").toString, "--out", (dir / "r2.csv").toString)
   bad("a recording named twice", "given 2 times; name each recording once")("explain", good.toString, good.toString, "--quiet", "--no-rtl")
+  // through a link the one file was explained twice, good.json and its link's JSON written
+  private val goodSym = dir / "good-sym.csv"
+  if (!os.exists(goodSym, followLinks = false)) os.symlink(goodSym, good)
+  private val goodHard = dir / "good-hard.csv"
+  if (!os.exists(goodHard, followLinks = false)) java.nio.file.Files.createLink(goodHard.toNIO, good.toNIO)
+  for ((how, other) <- Seq("a symbolic link" -> goodSym, "a hard link" -> goodHard))
+    bad(s"a recording named twice through $how", s"$good and $other are one file", Seq(dir / "twice" / "good.json", dir / "twice" / s"${other.baseName}.json"))(
+      "explain", good.toString, other.toString, "--quiet", "--no-rtl", "--json-dir", (dir / "twice").toString)
   for (o <- Seq("--json-dir", "--plots", "--html-dir"))
     bad(s"an explain $o that is empty", s"$o: the folder's name is empty")("explain", good.toString, "--quiet", "--no-rtl", o, "")
   bad("an explain --html that is empty", "an output file's name is empty")("explain", good.toString, "--quiet", "--no-rtl", "--html", "")

@@ -103,8 +103,11 @@ object ExplainCmd {
       fx
     }.getOrElse(Nil)
     val paths = files.map(f => os.Path(f, os.pwd))
-    // one file named twice would be explained twice, the second report over the first
-    paths.groupBy(identity).collectFirst { case (p, ps) if ps.size > 1 => throw new ExplainError(s"$p: given ${ps.size} times; name each recording once") }
+    // one file named twice would be explained twice, the second report over the first (or, through a link, beside it)
+    moire.files.SameFile.repeated(paths).foreach { case (a, b) =>
+      if (a == b) throw new ExplainError(s"$a: given ${paths.count(_ == a)} times; name each recording once")
+      throw new ExplainError(s"$a and $b are one file (through a link); name each recording once")
+    }
     // the subdivider's options are checked now, not found wrong file by file in a note
     rtl.filter(_.nonEmpty).foreach(opts => try moire.replay.ReplayDesign("subdiv", moire.replay.ReplayCmd.config(opts, Map.empty))
       catch { case e: moire.MoireError => throw new ExplainError(s"--subdiv: ${e.getMessage}") })
