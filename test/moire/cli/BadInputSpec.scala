@@ -769,6 +769,38 @@ class BadInputSpec extends AnyFlatSpec with Matchers {
     withClue(err) { code shouldBe 2; err should include("a line longer than 1048576 characters") }
   }
 
+  behavior of "names and bytes with control characters (shown escaped, one line; no output named so)"
+  /** As `bad`, and no control character but the line end reaches the terminal. */
+  private def escaped(kind: String, expect: String, keep: Seq[os.Path] = Nil)(args: String*): Unit = {
+    bad(kind, expect, keep)(args: _*)
+    it should s"show no raw control character for $kind" in {
+      val err = runCli(args: _*)._2
+      withClue(err) { err.filter(c => c.isControl && c != '\n') shouldBe empty }
+    }
+  }
+  escaped("a missing recording whose name holds a line break", "no\\x0asuch.csv: no such file")("explain", (dir / "no\nsuch.csv").toString)
+  escaped("a missing recording whose name holds an escape sequence", "\\x1b[31mred.csv: no such file")("explain", (dir / "\u001b[31mred.csv").toString)
+  it should "show a batch's error about a name with a line break on one line, escaped" in {
+    val (code, err) = runCli("explain", good.toString, (dir / "no\nsuch.csv").toString, "--quiet", "--no-rtl")
+    withClue(err) {
+      code shouldBe 2
+      err.linesIterator.filter(_.nonEmpty).toSeq should have size 2 // the file's error, then "1 of 2 files failed"
+      err should include("no\\x0asuch.csv: no such file")
+      err.filter(c => c.isControl && c != '\n') shouldBe empty
+    }
+  }
+  escaped("an emit --mode with a line break", "sin\\x0acos")("emit", "--mode", "sin\ncos", "--out", (dir / "emitnl").toString)
+  private val nlRec = rec("nl\nname.csv", head + "sin,cos\n" + rows(2000))
+  escaped("a recording whose name holds a line break, with --json-dir (the JSON would be named so)",
+    "nl\\x0aname.csv: its name holds a control character (U+000A", Seq(dir / "jnl" / "nl\nname.json"))("explain", nlRec, "--quiet", "--no-rtl", "--json-dir", (dir / "jnl").toString)
+  escaped("a calibration whose name holds a line break (its outputs would be named so)", "its name holds a control character (U+000A",
+    Seq(calOut / "c\nx.png"))("calibrate", "--input", rec("c\nx.csv", "# moire-calibration v1\n" + calRows), "--out", calOut.toString)
+  escaped("a replay's default output named after a recording with a line break", "its name holds a control character (U+000A")("replay", nlRec)
+  escaped("a binary board-reg --coefficients file (its bytes shown escaped)", "is binary data (it holds NUL bytes), not text")(
+    "board-reg", "--port", "/dev/null", "--coefficients", binary("bin.dat", Array[Byte](1, 2, 27, '[', '2', 'J', 0, 7, 10, 13, -1, -128, 0x9b.toByte)))
+  escaped("a board-reg --coefficients listing with an escape sequence", "expected 'addr data' in hex, got 'x\\x1b[2Jy'")(
+    "board-reg", "--port", "/dev/null", "--coefficients", rec("esc.registers.txt", "x\u001b[2Jy\n"))
+
   "BadInputSpec" should s"cover at least 60 kinds of bad input (has $kinds)" in {
     info(s"$kinds kinds of bad input")
     kinds should be >= 60

@@ -340,7 +340,7 @@ object Main {
 
   private def commandHelp(mains: Seq[mainargs.MainData[Any, Main.type]], cmd: String): Int =
     mains.find(_.name(mainargs.Util.kebabCaseNameMapper) == cmd) match {
-      case None => System.err.println(s"moire: '$cmd' is not a command (moire --help lists them)"); 2
+      case None => say(s"'$cmd' is not a command (moire --help lists them)"); 2
       case Some(_) if cmd == "replay" => println(moire.replay.ReplayCmd.Usage); 0
       case Some(m) =>
         val extra = cmd match {
@@ -366,21 +366,21 @@ object Main {
       case Seq() | Seq("-h") | Seq("--help") | Seq("help") => println(Help.overview(mains)); return 0
       case Seq("--version") | Seq("-V") => println(s"moire ${Version.text}"); return 0
       case Seq(o @ ("--version" | "-V" | "--help" | "-h"), extra, _*) =>
-        System.err.println(s"moire: $o takes no arguments, got '$extra'" + (if (o.startsWith("-h") || o == "--help") " (moire help COMMAND for a command's help)" else "")); return 2
+        say(s"$o takes no arguments, got '$extra'" + (if (o.startsWith("-h") || o == "--help") " (moire help COMMAND for a command's help)" else "")); return 2
       case Seq("help", cmd) => return commandHelp(mains, cmd)
-      case Seq("help", _*) => System.err.println("moire: help takes one command name, e.g. moire help explain"); return 2
+      case Seq("help", _*) => say("help takes one command name, e.g. moire help explain"); return 2
       case a if a.head.startsWith("-") =>
-        System.err.println(s"moire: '${a.head}' is not a command; moire COMMAND [options] (moire --help lists the commands)"); return 2
+        say(s"'${a.head}' is not a command; moire COMMAND [options] (moire --help lists the commands)"); return 2
       case a if helpAsked(mains, a) => return commandHelp(mains, a.head)
       case _ => ()
     }
     // `board de2-115 --out DIR`: the board name as a positional word.
     val argv = if (args.length > 1 && args(0) == "board" && !args(1).startsWith("-")) Array("board", "--name") ++ args.tail else args
-    repeated(mains, argv.toSeq).foreach { msg => System.err.println(s"moire: $msg"); return 2 }
+    repeated(mains, argv.toSeq).foreach { msg => say(msg); return 2 }
     val typed = saidOptions(mains, argv.toSeq)
     // a number beyond a double's range would be taken as Infinity, and told back as that
     typed.collectFirst { case (o, v) if NumberWord.matches(v.trim) && v.trim.toDouble.isInfinite => (o, v) }.foreach { case (o, v) =>
-      System.err.println(s"moire: $o: '$v' is beyond the range of numbers (about +-1.8e308)"); return 2 }
+      say(s"$o: '$v' is beyond the range of numbers (about +-1.8e308)"); return 2 }
     moire.files.SafeWrite.forgetMade()
     val code = said.withValue(typed.map(_._1).toSet) { try {
       // runRaw hands back what a command threw (runEither would print it with its class name)
@@ -418,9 +418,10 @@ object Main {
   }
 
   /** An error line: "moire: " and the message, a value of thousands of characters in it cut (a 100 kB --effect was told
-    * back whole).
+    * back whole), control characters shown as `\x0a` (a name the user typed with a line break or an escape sequence
+    * split the line, or reached the terminal).
     */
-  private def say(msg: String): Unit = System.err.println("moire: " + brief(msg))
+  private def say(msg: String): Unit = System.err.println("moire: " + brief(moire.files.Shown.text(msg, Int.MaxValue)))
   def brief(msg: String): String = {
     val cut = LongWord.replaceAllIn(msg, m => java.util.regex.Matcher.quoteReplacement(m.matched.take(100) + s"... (${m.matched.length} characters)"))
     if (cut.length > 2000) cut.take(2000) + s"... (${cut.length} characters)" else cut

@@ -61,6 +61,7 @@ object Calibrate {
     * as moire wrote it (`SafeWrite.checkMade`), and of the kind written (a user's JSON, notes or image is refused).
     */
   def outputs(input: os.Path, out: os.Path): (os.Path, os.Path, os.Path) = {
+    moire.files.SafeWrite.checkNameOf(input)
     val stem = moire.files.Stem.of(input)
     val (jf, rf, pf) = (out / s"$stem.coefficients.json", out / s"$stem.registers.txt", out / s"$stem.png")
     for ((f, kind) <- Seq(jf -> "JSON", rf -> "a moire-harmonic-registers file", pf -> "a PNG image")) {

@@ -114,6 +114,8 @@ object ExplainCmd {
     // Outputs are checked before the long work: writable folders, no two reports under one name.
     val outDirs = (jsonDir.map(_ -> "--json-dir") ++ plotDir.map(_ -> "--plots") ++ htmlDir.map(_ -> "--html-dir"))
       .map { case (d, o) => moire.files.SafeWrite.folderArg(d, o) }
+    // the reports and plots in them are named after the recordings
+    if (outDirs.nonEmpty) paths.foreach(moire.files.SafeWrite.checkNameOf)
     outDirs.foreach(moire.files.SafeWrite.checkFolder)
     // no report written over a recording or the model file
     val inputs = paths ++ modelFile.map(os.Path(_, os.pwd))
@@ -164,7 +166,7 @@ object ExplainCmd {
       val p = paths(i)
       batchWatch(p, true)
       try Right(one(p, if (quiet) Progress.none else shown.start(i, p), s => if (!quiet) shown.say(s"explain: $s")))
-      catch { case e: moire.MoireError => shown.say(s"moire: ${e.getMessage}"); Left(e) }
+      catch { case e: moire.MoireError => shown.say(s"moire: ${moire.files.Shown.text(e.getMessage, Int.MaxValue)}"); Left(e) }
       finally { batchWatch(p, false); shown.finish(i) }
     } { (i, r) => results(i) = r; if (!quiet) r.foreach(rep => shown.report(rep.text)) }
     finally shown.close()

@@ -69,7 +69,7 @@ object Progress {
     private var pb: moire.progress.Bar = _
     def phase(name: String, steps: Int): Unit = {
       if (pb != null) pb.close()
-      pb = new moire.progress.Bar(s"$task: $name", steps.toLong)
+      pb = new moire.progress.Bar(s"${moire.files.Shown.text(task)}: $name", steps.toLong)
     }
     def step(k: Int): Unit = if (pb != null) pb.stepTo(pb.position + k)
     override def close(): Unit = if (pb != null) { pb.close(); pb = null }

@@ -106,6 +106,7 @@ object ReplayCmd {
     }
     val path = os.Path(f, os.pwd)
     // The output is checked before the long work: never one of the inputs, always writable.
+    if (out.isEmpty) moire.files.SafeWrite.checkNameOf(path) // <stem>-replay.csv
     val dest = out.fold(os.Path(moire.files.Stem.of(path) + "-replay.csv", os.pwd))(moire.files.SafeWrite.fileArg)
     moire.files.SafeWrite.refuseInputs(dest, Seq(path))
     if (out.isEmpty) moire.files.SafeWrite.checkPicked(dest, OutputCsv.Magic, "--out FILE") else moire.files.SafeWrite.checkFile(dest)

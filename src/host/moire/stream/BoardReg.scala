@@ -104,6 +104,9 @@ object BoardReg {
     */
   def loadCoefficients(path: os.Path): Seq[(Int, Long)] = {
     moire.files.PathKind.notAFile(path).foreach(m => throw new StreamError(m))
+    // a binary file's bytes were told back raw in the error about its first line
+    moire.files.Shown.binaryKind(path).foreach(k => throw new StreamError(
+      s"$path: is $k; a coefficient file from calibrate is JSON (.coefficients.json) or text (.registers.txt); it starts with '${moire.files.Shown.head(path, 16)}'"))
     val text = try os.read(path) catch { case e: java.io.IOException => throw new StreamError(s"$path: cannot read (${e.getMessage})") }
     def place(where: String, a: Long, d: Long): (Int, Long) = {
       // the window ends where the burst registers start (0xe0): above it, burst_control and the corrector's presets
@@ -113,11 +116,11 @@ object BoardReg {
       (Registers.HarmonicBase + a.toInt) -> d
     }
     def hex(where: String, s: String): Long = scala.util.Try(java.lang.Long.parseLong(s.trim.stripPrefix("0x").stripPrefix("0X"), 16))
-      .getOrElse(throw new StreamError(s"$where: '$s' is not a hex number"))
+      .getOrElse(throw new StreamError(s"$where: '${moire.files.Shown.text(s)}' is not a hex number"))
     val ws = if (text.trim.startsWith("{")) {
       val j = try moire.options.StrictJson.read(text) catch { case e: Exception => throw new StreamError(s"$path: not valid JSON (${e.getMessage.linesIterator.next()})") }
       val fmt = j.obj.get("format").flatMap(_.strOpt)
-      if (!fmt.contains(CoefficientFile.format)) throw new StreamError(s"$path: format is ${fmt.getOrElse("missing")}, expected '${CoefficientFile.format}'")
+      if (!fmt.contains(CoefficientFile.format)) throw new StreamError(s"$path: format is ${fmt.fold("missing")(f => s"'${moire.files.Shown.text(f)}'")}, expected '${CoefficientFile.format}'")
       val regs = j.obj.get("registers").flatMap(_.arrOpt).getOrElse(throw new StreamError(s"$path: no 'registers' list"))
       regs.zipWithIndex.map { case (r, i) =>
         val where = s"$path: registers[$i]"
@@ -131,7 +134,7 @@ object BoardReg {
       if (body.isEmpty) None
       else body.split("\\s+") match {
         case Array(a, d) => val w = s"$path:${i + 1}"; Some(place(w, hex(w, a), hex(w, d)))
-        case _ => throw new StreamError(s"$path:${i + 1}: expected 'addr data' in hex, got '${l.take(40)}'")
+        case _ => throw new StreamError(s"$path:${i + 1}: expected 'addr data' in hex, got '${moire.files.Shown.text(l, 40)}'")
       }
     }.toSeq
     if (ws.isEmpty) throw new StreamError(s"$path: no register writes in the file")

@@ -276,6 +276,7 @@ object SafeWrite {
     */
   def checkFile(target: os.Path): Unit = {
     if (target.last == "-") throw new FileError(Stdout)
+    controlChar(target.last).foreach(m => throw new FileError(m))
     if (os.isDir(target, followLinks = false)) throw new FileError(s"$target: is a folder, not a file")
     checkReplaceable(target)
     guardRecording(target)
@@ -366,6 +367,12 @@ object SafeWrite {
     */
   def controlChar(given: String): Option[String] = given.find(_.isControl).map(c =>
     f"an output name holds a control character (U+${c.toInt}%04X, e.g. a line break) in '${given.map(x => if (x.isControl) '?' else x)}'; give a plain name")
+
+  /** An input whose name names outputs (`<stem>.json`): one with a control character is refused before the work, as
+    * `controlChar` refuses an output's name (the outputs would have it too).
+    */
+  def checkNameOf(input: os.Path): Unit = input.last.find(_.isControl).foreach(c => throw new FileError(
+    f"${Shown.text(input.toString)}: its name holds a control character (U+${c.toInt}%04X, e.g. a line break), and the outputs named after it would too; rename it"))
 
   /** Refuses an output that is one of the inputs (also through links or another spelling of the path). */
   def refuseInputs(output: os.Path, inputs: Seq[os.Path]): Unit =
