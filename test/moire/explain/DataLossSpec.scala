@@ -40,6 +40,9 @@ class DataLossSpec extends AnyFlatSpec with Matchers {
       m.params("phase_step_periods") shouldBe 0.37 +- 0.01
       m.params("phase_step_s") shouldBe 120000 / spec.fs +- 2 / spec.fs
       lostOf(m.summary) shouldBe 37.0 +- 0.5
+      // the window's fringe frequency is the data's (the fitted trajectory there read 0.56..37 kHz on another record)
+      m.params("f0_hz") should be > 19e3
+      m.params("f1_hz") should be < 21e3
       // and the record's note, which names steps where no window is left too (a step on a segment's end)
       val note = r.notes.find(_.contains("phase steps")).getOrElse(fail("no note"))
       note should include("once: +0.370 period between data rows 120000 and 120001")

@@ -203,8 +203,10 @@ object Adequacy {
     val p0 = e.phase(0)
     val share = ws.map(w => w.b - w.a).sum.toDouble / e.n
     runs.map { case (a, b, r) =>
-      var x0 = Double.MaxValue; var x1 = -Double.MaxValue; var f0 = Double.MaxValue; var f1 = 0.0; var i = a
-      while (i < b) { val x = e.phase(i) - p0; x0 = math.min(x0, x); x1 = math.max(x1, x); val f = math.abs(e.freq(i)); f0 = math.min(f0, f); f1 = math.max(f1, f); i += 1 }
+      // where the data go there, from their own phase (the fitted trajectory does not follow them: a constant 20 kHz with
+      // samples cut out read 0.56..37 kHz); the position from the start by the trajectory's phase at the window's start
+      val (x0, x1, f0, f1) = Jumps.track(e, a, b).map { case (u0, u1, g0, g1) => val s = e.phase(a) - p0; (s + u0, s + u1, g0, g1) }
+        .getOrElse((e.phase(a) - p0, e.phase(b - 1) - p0, math.abs(e.freq(a)), math.abs(e.freq(b - 1))))
       // a step of the phase there names the physics (samples lost, a slip)
       val jumps = Jumps.find(e, a, b)
       Located("the default model does not follow the signal here",

@@ -100,6 +100,31 @@ object Jumps {
     }.sortBy(j => -math.abs(j.periods))
   }
 
+  /** Where the data go over [a, b) of the engine's samples, read from their own phase (not the fitted trajectory's,
+    * which does not follow there): the position's range in periods from the phase at `a` and the fringe frequency's
+    * range (Hz), from medians of the phase's increments over blocks of 16 samples. None where the ellipse is singular.
+    */
+  def track(e: SignalEngine, a: Int, b: Int): Option[(Double, Double, Double, Double)] = {
+    val p = e.base
+    val det = p(1) * p(5) - p(2) * p(4)
+    if (b - a < 2 || !(math.abs(det) > 1e-12)) return None
+    def th(i: Int) = { val u = e.ys(i) - p(0); val v = e.yc(i) - p(3); math.atan2(p(5) * u - p(2) * v, -p(4) * u + p(1) * v) }
+    val bad = e.badData
+    var x = 0.0; var x0 = 0.0; var x1 = 0.0; var f0 = Double.MaxValue; var f1 = 0.0
+    val blk = new Array[Double](16); var nb = 0; var prev = th(a); var i = a + 1
+    while (i < b) {
+      val t = th(i)
+      if (bad == null || (!bad(i) && !bad(i - 1))) {
+        val d = wrap(t - prev); x += d / (2 * math.Pi); x0 = math.min(x0, x); x1 = math.max(x1, x)
+        blk(nb) = d; nb += 1
+        if (nb == blk.length) { val f = math.abs(median(blk)) * e.fs / (2 * math.Pi); f0 = math.min(f0, f); f1 = math.max(f1, f); nb = 0 }
+      }
+      prev = t; i += 1
+    }
+    if (f0 == Double.MaxValue) { f0 = 0.0 }
+    Some((x0, x1, f0, f1))
+  }
+
   private def wrap(x: Double): Double = { val t = x % (2 * math.Pi); if (t > math.Pi) t - 2 * math.Pi else if (t <= -math.Pi) t + 2 * math.Pi else t }
   private def median(xs: Array[Double]): Double = if (xs.isEmpty) 0.0 else { val s = xs.sorted; s(s.length / 2) }
 
