@@ -29,7 +29,7 @@ class RecordKeepSpec extends AnyFlatSpec with Matchers {
 
   it should "leave no probe file behind in the output's folder" in {
     val dir = os.temp.dir(prefix = "moire-probe-")
-    SafeWrite.checkWritable(dir / "rec.csv")
+    SafeWrite.checkFile(dir / "rec.csv")
     os.list(dir) shouldBe empty
   }
 

@@ -43,10 +43,8 @@ object Jumps {
   private def steps(n: Int, xs: Int => Double, xc: Int => Double, p: Array[Double], skip: Int => Boolean, a: Int, b: Int,
                     max: Int): Seq[Jump] = {
     val lo = math.max(1, a); val hi = math.min(n, b)
-    val det = p(1) * p(5) - p(2) * p(4)
-    if (hi - lo < 4 * Side || !(math.abs(det) > 1e-12)) return Nil
-    // the phase: [sin; cos] = M^-1 [u; v], M = [[p1, p2], [p4, p5]] (offsets, amplitudes and phase error taken off)
-    def th(i: Int) = { val u = xs(i) - p(0); val v = xc(i) - p(3); math.atan2(p(5) * u - p(2) * v, -p(4) * u + p(1) * v) }
+    if (hi - lo < 4 * Side || !regular(p)) return Nil
+    val th = phaseOf(xs, xc, p)
     def inc(i: Int) = wrap(th(i) - th(i - 1))
     def ok(i: Int) = !skip(i) && !skip(i - 1)
     // the noise of an increment, from a strided sample of the increments' changes (the speed's a sample is far below)
@@ -105,10 +103,8 @@ object Jumps {
     * range (Hz), from medians of the phase's increments over blocks of 16 samples. None where the ellipse is singular.
     */
   def track(e: SignalEngine, a: Int, b: Int): Option[(Double, Double, Double, Double)] = {
-    val p = e.base
-    val det = p(1) * p(5) - p(2) * p(4)
-    if (b - a < 2 || !(math.abs(det) > 1e-12)) return None
-    def th(i: Int) = { val u = e.ys(i) - p(0); val v = e.yc(i) - p(3); math.atan2(p(5) * u - p(2) * v, -p(4) * u + p(1) * v) }
+    if (b - a < 2 || !regular(e.base)) return None
+    val th = phaseOf(e.ys(_), e.yc(_), e.base)
     val bad = e.badData
     var x = 0.0; var x0 = 0.0; var x1 = 0.0; var f0 = Double.MaxValue; var f1 = 0.0
     val blk = new Array[Double](16); var nb = 0; var prev = th(a); var i = a + 1
@@ -123,6 +119,15 @@ object Jumps {
     }
     if (f0 == Double.MaxValue) { f0 = 0.0 }
     Some((x0, x1, f0, f1))
+  }
+
+  /** Whether the fitted ellipse's 2 x 2 matrix (`SignalEngine.base`: offset and the sin and cos parts of each channel) can be inverted. */
+  private def regular(p: Array[Double]): Boolean = math.abs(p(1) * p(5) - p(2) * p(4)) > 1e-12
+  /** The data's fringe phase (radian) at a sample: [sin; cos] = M^-1 [u; v], M = [[p1, p2], [p4, p5]], the offsets
+    * taken off (the amplitudes and the phase error with M; its determinant's size and sign leave the increments alone).
+    */
+  private def phaseOf(xs: Int => Double, xc: Int => Double, p: Array[Double]): Int => Double = { i =>
+    val u = xs(i) - p(0); val v = xc(i) - p(3); math.atan2(p(5) * u - p(2) * v, -p(4) * u + p(1) * v)
   }
 
   private def wrap(x: Double): Double = { val t = x % (2 * math.Pi); if (t > math.Pi) t - 2 * math.Pi else if (t <= -math.Pi) t + 2 * math.Pi else t }

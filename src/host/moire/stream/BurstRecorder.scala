@@ -50,7 +50,7 @@ object BurstRecorder {
   def record(link: ByteLink, o: RecordOptions, b: BurstOptions, say: String => Unit, warn: String => Unit): RecordResult = {
     validate(o, b)
     val file = os.Path(o.out, os.pwd)
-    moire.files.SafeWrite.checkWritable(file)   // before the burst, which may never come again
+    moire.files.SafeWrite.checkFile(file)   // before the burst, which may never come again
     val c = new BoardClient(link, o.timeoutMs)
     BoardClient.check(c, o.baud, "")
     def ask(f: => Long): Long = try f catch { case e: NoAnswer => throw new StreamError(e.getMessage) }

@@ -69,7 +69,7 @@ object Recorder {
     }
     if (o.port.trim.isEmpty) throw new StreamError("--port is empty: name a serial port, e.g. /dev/ttyUSB0")
     moire.files.SafeWrite.refuseInputs(o.out, Seq(o.port))   // the port's link is no output
-    moire.files.SafeWrite.checkWritable(os.Path(o.out, os.pwd))   // before the port is opened and the capture runs
+    moire.files.SafeWrite.checkFile(os.Path(o.out, os.pwd))   // before the port is opened and the capture runs
     moire.files.SafeWrite.checkKind(os.Path(o.out, os.pwd), "a moire recording") // (notes under its name: refused now, not after it)
   }
 

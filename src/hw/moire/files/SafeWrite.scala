@@ -244,13 +244,14 @@ object SafeWrite {
     if (!Files.isWritable(dir.toNIO)) throw new FileError(s"$dir: the folder is not writable")
     probe(dir)
   }
-  /** Makes and removes an empty file in `dir`: the permission bits do not tell (root may write anywhere by them, yet
-    * /proc or a read-only mount takes no file), and a command found that out only at its end, after its work.
+  /** Makes a file of one byte in `dir` and removes it: the permission bits do not tell (root may write anywhere by
+    * them, yet /proc or a read-only mount takes no file, and a full disk no byte), and a command found that out only at
+    * its end, after its work (a recording's, which cannot be made again).
     */
   private def probe(dir: os.Path): Unit = {
     val p = dir / s".moire-probe-${ProcessHandle.current().pid()}-${Thread.currentThread().getId}"
     Temporaries.add(p)
-    try { Files.createFile(p.toNIO); Files.delete(p.toNIO) }
+    try { Files.createFile(p.toNIO); Files.write(p.toNIO, Array[Byte]('\n')); Files.delete(p.toNIO) }
     catch {
       case _: FileAlreadyExistsException => () // a probe of this thread's left by a killed run: the folder took it
       case e: IOException => throw new FileError(s"$dir: the folder takes no new file (${reason(e)})")
@@ -282,19 +283,6 @@ object SafeWrite {
     guardRecording(target)
     checkFolder(target / os.up)
     if (os.exists(target) && !Files.isWritable(target.toNIO)) throw new FileError(s"$target: the file is read-only")
-  }
-
-  /** `checkFile`, and a file really made in `target`'s folder (then removed): before work that cannot be done again
-    * (a recording), whose output must not fail at the end. The folder's mode does not tell: root may write by it in
-    * /proc or on a read-only mount, and a full disk takes no byte either.
-    */
-  def checkWritable(target: os.Path): Unit = {
-    checkFile(target)
-    val probe = target / os.up / s".${target.last}.probe-${ProcessHandle.current().pid()}-${Thread.currentThread().getId}"
-    Temporaries.add(probe)
-    try Files.write(probe.toNIO, Array[Byte]('\n'))
-    catch { case e: IOException => throw new FileError(s"$target: cannot write a file there (${reason(e)})") }
-    finally { try Files.deleteIfExists(probe.toNIO) catch { case _: IOException => () }; Temporaries.done(probe) }
   }
 
   /** The command running writes recordings (simulate, record): its outputs may replace a simulated recording. */
