@@ -21,7 +21,12 @@ object Dropouts {
     val sdS = math.max(math.sqrt(e.noise.varS), 0.5 * e.step); val sdC = math.max(math.sqrt(e.noise.varC), 0.5 * e.step)
     @inline def held(i: Int) = i > 0 && ys(i) == ys(i - 1) && yc(i) == yc(i - 1)
     @inline def rail(i: Int) = e.atRail(ys(i)) && e.atRail(yc(i))
-    @inline def off(i: Int) = math.abs(ys(i) - e.predSAt(i)) > Off * sdS || math.abs(yc(i) - e.predCAt(i)) > Off * sdC
+    // a code at the rail only says the signal is there or beyond: a prediction beyond the rail is clipping, not a loss
+    @inline def far(y: Double, p: Double, sd: Double) =
+      if (y >= e.railHi - 0.5 * e.lsb) p < y - Off * sd
+      else if (y <= e.railLo + 0.5 * e.lsb) p > y + Off * sd
+      else math.abs(y - p) > Off * sd
+    @inline def off(i: Int) = far(ys(i), e.predSAt(i), sdS) || far(yc(i), e.predCAt(i), sdC)
     val out = Seq.newBuilder[(Int, Int)]; var total = 0; var i = 1
     while (i < n && total <= MaxShare * n) {
       if (rail(i) || held(i)) {
