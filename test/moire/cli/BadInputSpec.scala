@@ -500,6 +500,17 @@ class BadInputSpec extends AnyFlatSpec with Matchers {
   bad("a monitor replay with a board's link rate", "--baud applies to a board (--port DEV); a replay plays the file at its own rate")(
     "monitor", "--replay", good.toString, "--baud", "115200")
   bad("a simulated board with a decimation", "--decimation applies to a board (--port DEV)")("monitor", "--simulate", "--decimation", "100")
+  // a name the file system takes, whose temporary name (.NAME.tmp-PID-THREAD) it does not: found before the work
+  bad("an output name too long for its temporary file", "cannot be written (File name too long)")(
+    "simulate", "--out", (dir / ("n" * 245 + ".csv")).toString)
+  bad("an output name of 300 characters", "cannot be written (File name too long)")(
+    "simulate", "--out", (dir / ("n" * 300 + ".csv")).toString)
+  // an option without its value took the next option as its value ("--mode" as emit's folder)
+  bad("emit --out followed by another option", "--out needs a value")("emit", "--out", "--mode", "sincos")
+  bad("record --port followed by another option", "--port needs a value", Seq(dir / "nv.csv"))(
+    "record", "--port", "--seconds", "1", "--out", (dir / "nv.csv").toString)
+  bad("monitor --port followed by another option", "--port needs a value")("monitor", "--port", "--baud", "9600")
+  bad("board --baud followed by another option", "--baud needs a value")("board", "de2-115", "--baud", "--decimation", "4", "--out", boardOut.toString)
   // each was taken (another tool's fuzz sweep, F20)
   bad("a simulated board of 1000 counts per period", "--counts-per-period must be a power of two from 4 to 65536")(
     "monitor", "--simulate", "--counts-per-period", "1000", "--out", (dir / "mon").toString)

@@ -377,6 +377,7 @@ object Main {
     // `board de2-115 --out DIR`: the board name as a positional word.
     val argv = if (args.length > 1 && args(0) == "board" && !args(1).startsWith("-")) Array("board", "--name") ++ args.tail else args
     repeated(mains, argv.toSeq).foreach { msg => say(msg); return 2 }
+    valueless(mains, argv.toSeq).foreach { o => say(s"$o needs a value (give $o VALUE or $o=VALUE)"); return 2 }
     val typed = saidOptions(mains, argv.toSeq)
     // a number beyond a double's range would be taken as Infinity, and told back as that
     typed.collectFirst { case (o, v) if NumberWord.matches(v.trim) && v.trim.toDouble.isInfinite => (o, v) }.foreach { case (o, v) =>
@@ -439,6 +440,24 @@ object Main {
         if (known(name)) s"$name is given ${vs.size} times; give it once"
         else s"$name is given ${vs.size} times (${vs.map(v => "'" + v._2 + "'").mkString(", ")}); give it once"
       }
+    }
+
+  /** An option that takes a value but is followed by another of the command's options (`--out --mode x` took
+    * "--mode" as the folder) its name.
+    */
+  private def valueless(mains: Seq[mainargs.MainData[Any, Main.type]], argv: Seq[String]): Option[String] =
+    optionsOf(mains, argv.headOption.getOrElse(""), lists = true).flatMap { known =>
+      val words = argv.tail.takeWhile(_ != "--")
+      var i = 0; var found = Option.empty[String]
+      while (i < words.length && found.isEmpty) {
+        val w = words(i)
+        if (!w.contains('=') && known.get(w).contains(false)) {
+          val next = words.lift(i + 1)
+          if (next.exists(n => known.contains(n.takeWhile(_ != '=')))) found = Some(w) else i += 1
+        }
+        i += 1
+      }
+      found
     }
 
   /** A decimal number as typed (sign, digits, point, exponent). */

@@ -25,7 +25,7 @@ object SafeWrite {
     val targets = writes.map(_._1)
     targets.groupBy(identity).collectFirst { case (t, ts) if ts.size > 1 => throw new FileError(s"$t: named twice as an output of one command") }
     targets.foreach(checkFile)
-    val tmps = targets.map(t => t / os.up / s".${t.last}.tmp-${ProcessHandle.current().pid()}-${Thread.currentThread().getId}")
+    val tmps = targets.map(tmpOf)
     tmps.foreach(Temporaries.add)
     var at = targets.head; var renamed = 0
     try {
@@ -244,17 +244,22 @@ object SafeWrite {
     if (!Files.isWritable(dir.toNIO)) throw new FileError(s"$dir: the folder is not writable")
     probe(dir)
   }
+  /** The temporary file `all` writes `t` through. */
+  private def tmpOf(t: os.Path): os.Path = t / os.up / s".${t.last}.tmp-${ProcessHandle.current().pid()}-${Thread.currentThread().getId}"
+
   /** Makes a file of one byte in `dir` and removes it: the permission bits do not tell (root may write anywhere by
     * them, yet /proc or a read-only mount takes no file, and a full disk no byte), and a command found that out only at
     * its end, after its work (a recording's, which cannot be made again).
     */
-  private def probe(dir: os.Path): Unit = {
-    val p = dir / s".moire-probe-${ProcessHandle.current().pid()}-${Thread.currentThread().getId}"
+  private def probe(dir: os.Path): Unit =
+    probeAt(dir / s".moire-probe-${ProcessHandle.current().pid()}-${Thread.currentThread().getId}", e => s"$dir: the folder takes no new file (${reason(e)})")
+  /** Makes `p` with one byte and removes it; `why` words a failure. */
+  private def probeAt(p: os.Path, why: IOException => String): Unit = {
     Temporaries.add(p)
     try { Files.createFile(p.toNIO); Files.write(p.toNIO, Array[Byte]('\n')); Files.delete(p.toNIO) }
     catch {
       case _: FileAlreadyExistsException => () // a probe of this thread's left by a killed run: the folder took it
-      case e: IOException => throw new FileError(s"$dir: the folder takes no new file (${reason(e)})")
+      case e: IOException => throw new FileError(why(e))
     } finally { try Files.deleteIfExists(p.toNIO) catch { case _: IOException => () }; Temporaries.done(p) }
   }
   private val made = new java.util.concurrent.ConcurrentLinkedDeque[os.Path]()
@@ -282,6 +287,8 @@ object SafeWrite {
     checkReplaceable(target)
     guardRecording(target)
     checkFolder(target / os.up)
+    // the name the write goes through: one too long for the file system failed only at the end
+    probeAt(tmpOf(target), e => s"$target: cannot be written (${reason(e)})")
     if (os.exists(target) && !Files.isWritable(target.toNIO)) throw new FileError(s"$target: the file is read-only")
   }
 
