@@ -24,7 +24,8 @@ object FringeGenerator {
                         warmGain: Double = 0.0, warmOffset: Double = 0.0, warmTauS: Double = 0.01,
                         driftGainPerS: Double = 0.0, driftOffsetPerS: Double = 0.0, humFs: Double = 0.0, humHz: Double = 50.0,
                         h2: Double = 0.0, h2Deg: Double = -60, clipFs: Double = 0.0, noiseAfterLsb: Double = 0.0,
-                        holds: Seq[(Int, Int)] = Nil, zeros: Seq[(Int, Int)] = Nil, cuts: Seq[(Int, Int)] = Nil)
+                        holds: Seq[(Int, Int)] = Nil, zeros: Seq[(Int, Int)] = Nil, cuts: Seq[(Int, Int)] = Nil,
+                        wanderLsb: Double = 0.0)
 
   /** Fringe phase in periods at time t. */
   def periods(s: Spec, t: Double): Double = s.motion match {
@@ -75,14 +76,17 @@ object FringeGenerator {
       .append("\n# adc_format: offset-binary\n# source: fringe generator\nsin,cos\n")
     val pe = math.toRadians(s.phaseErrDeg)
     var last = ""
+    // a random walk of both offsets (1/f-like wander of the read head's electronics), wanderLsb per sample
+    val wrnd = new Random(s.seed + 7); var wander = 0.0
     var i = 0
     while (i < s.n) {
+      if (s.wanderLsb > 0) wander += s.wanderLsb / half * wrnd.nextGaussian()
       val t = i / s.fs
       val x = periods(s, t); val a = 2 * math.Pi * x
       val warm = 1 - math.exp(-t / s.warmTauS)
       val g = (1 + s.contrastPerPeriod * (x - x0)) * (1 + s.warmGain * warm + s.driftGainPerS * t)
       // a pickup line (mains hum) common to both channels
-      val o = s.offsetPerPeriod * (x - x0) + s.warmOffset * warm + s.driftOffsetPerS * t + s.humFs * math.sin(2 * math.Pi * s.humHz * t)
+      val o = wander + s.offsetPerPeriod * (x - x0) + s.warmOffset * warm + s.driftOffsetPerS * t + s.humFs * math.sin(2 * math.Pi * s.humHz * t)
       // a 2nd harmonic of the fringe turning with it on both channels (relative to the amplitude)
       val h = 2 * a + math.toRadians(s.h2Deg)
       val vs = s.offS + o + s.amp * g * (math.sin(a) + s.h2 * math.sin(h)) + s.noiseLsb / half * rnd.nextGaussian()

@@ -9,6 +9,8 @@ object Locate {
   /** chi-square with `dof` degrees of freedom, as standard deviations above its mean. */
   def zOf(chi2: Double, dof: Int): Double = (chi2 - dof) / math.sqrt(2.0 * dof)
   val Z = 6.0
+  /** Cycles in the spectrum's span below which its strongest bin is called a wander, not a line. */
+  val SlowCycles = 10
   /** A departure's size: how far the residual departs (LSB), where a test can say (the materiality of `unexplained`). */
   val SizeLsb = "size_lsb"
   /** Where a test knows only the least a departure's size may be (LSB): a spectrum's strongest bin. */
@@ -161,7 +163,11 @@ object Locate {
         val k = p.indices.maxBy(p(_))
         val x = p(k) / mean; val thr = math.log(p.size.toDouble) + 14
         val hz = (k + 1) * e.fs / m; val ampl = 2 * math.sqrt(p(k)) / m
-        out += Located(s"spectrum, $ch channel", f"strongest line $hz%.1f Hz, ${ampl / lsb}%.2f LSB, ${x}%.1f x the mean power (threshold $thr%.1f)",
+        // a peak in the lowest bins is a wander of a few cycles over the span, not a line (a random walk of the offsets
+        // read "strongest line 3.8 Hz" in a 0.4 s record)
+        val what = if (k + 1 < SlowCycles) f"strongest power at $hz%.1f Hz, ${k + 1} cycle${if (k == 0) "" else "s"} in the ${m / e.fs}%.3g s analysed: a slow wander, not a line"
+          else f"strongest line $hz%.1f Hz"
+        out += Located(s"spectrum, $ch channel", f"$what, ${ampl / lsb}%.2f LSB, ${x}%.1f x the mean power (threshold $thr%.1f)",
           // (no size, only its least: a line that sweeps spreads over many bins, each below the floor; a 2 LSB chirp
           // read 0.07 LSB)
           Map("frequency_hz" -> hz, "amplitude_lsb" -> ampl / lsb, "peak_to_mean" -> x, AtLeastLsb -> ampl / lsb), x > thr)
