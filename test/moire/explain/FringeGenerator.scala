@@ -25,7 +25,7 @@ object FringeGenerator {
                         driftGainPerS: Double = 0.0, driftOffsetPerS: Double = 0.0, humFs: Double = 0.0, humHz: Double = 50.0,
                         h2: Double = 0.0, h2Deg: Double = -60, clipFs: Double = 0.0, noiseAfterLsb: Double = 0.0,
                         holds: Seq[(Int, Int)] = Nil, zeros: Seq[(Int, Int)] = Nil, cuts: Seq[(Int, Int)] = Nil,
-                        wanderLsb: Double = 0.0)
+                        wanderLsb: Double = 0.0, intensityRel: Double = 0.0)
 
   /** Fringe phase in periods at time t. */
   def periods(s: Spec, t: Double): Double = s.motion match {
@@ -81,10 +81,12 @@ object FringeGenerator {
     var i = 0
     while (i < s.n) {
       if (s.wanderLsb > 0) wander += s.wanderLsb / half * wrnd.nextGaussian()
+      // the light source's power, the same factor on both channels' fringe
+      val light = if (s.intensityRel > 0) 1 + s.intensityRel * wrnd.nextGaussian() else 1.0
       val t = i / s.fs
       val x = periods(s, t); val a = 2 * math.Pi * x
       val warm = 1 - math.exp(-t / s.warmTauS)
-      val g = (1 + s.contrastPerPeriod * (x - x0)) * (1 + s.warmGain * warm + s.driftGainPerS * t)
+      val g = light * (1 + s.contrastPerPeriod * (x - x0)) * (1 + s.warmGain * warm + s.driftGainPerS * t)
       // a pickup line (mains hum) common to both channels
       val o = wander + s.offsetPerPeriod * (x - x0) + s.warmOffset * warm + s.driftOffsetPerS * t + s.humFs * math.sin(2 * math.Pi * s.humHz * t)
       // a 2nd harmonic of the fringe turning with it on both channels (relative to the amplitude)

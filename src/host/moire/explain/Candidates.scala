@@ -562,6 +562,19 @@ final class Candidates(val engine: SignalEngine) {
     }
   }
 
+  /** Intensity noise of the light source: noise variance growing with the signal's value (relative rms). */
+  def intensityNoise(): Option[Cand] = {
+    // at a saturation the noise is the clamp's, not the source's: noise added after a clipping amplifier grows with the
+    // prediction's value as this does (1 LSB after a clip at 0.7, 0.3 LSB before, was taken for it)
+    if (spec.slopeNoise || spec.clips.nonEmpty) return None
+    if (!passesScreen(us(_), uc(_))) return None
+    val (ds, dc) = intensitySlopes()
+    slopeNoise(ds, dc).map { case (r, sd, white, m2ll) =>
+      Cand(IntensityNoise.name, "both", spec.copy(intensityNoise = true), m2ll, 1, Map("intensity_noise_rel" -> r, "white_noise_fs" -> white),
+        Map("intensity_noise_rel" -> sd, "white_noise_fs" -> 0.0), "noise against the signal's value, largest at the fringe's peaks")
+    }
+  }
+
   /** Phase noise of the motion: noise variance growing with the slope against the fringe phase (radians rms). */
   def phaseNoise(): Option[Cand] = {
     if (spec.slopeNoise) return None

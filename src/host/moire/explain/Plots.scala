@@ -228,6 +228,18 @@ object Plots {
           val (x, y) = binned(p(_), j => r(j) / lsb, s.size, -1, 1, 128); line(c, s"$ch, ${s.label}", x, y)
         }
         draw(c, name)
+      case effects.PlotKind.SignalValue =>
+        val c = chart(title, "|signal value less its offset| (full scale)", "residual rms (LSB)")
+        val hi = Doubles.range(pts.size)(j => math.max(math.abs(pts.us(j)), math.abs(pts.uc(j))))._2 + 1e-12
+        for (s <- Seq(b, a)) {
+          val (x, y) = binned(j => math.abs(pts.us(j)), j => s.resS(j) / lsb, s.size, 0, hi, 24, rms = true); line(c, s"sin, ${s.label}", x, y)
+          val (x2, y2) = binned(j => math.abs(pts.uc(j)), j => s.resC(j) / lsb, s.size, 0, hi, 24, rms = true); line(c, s"cos, ${s.label}", x2, y2)
+        }
+        // the noise the finding predicts: its white part and its share growing with the value
+        val (r, w) = (f.params.getOrElse("intensity_noise_rel", 0.0), f.params.getOrElse("white_noise_fs", 0.0))
+        val xs = Array.tabulate(25)(k => hi * k / 24)
+        line(c, "fitted noise", xs, xs.map(x => math.sqrt(w * w + r * r * x * x) / lsb))
+        draw(c, name)
       case effects.PlotKind.Spectrum => spectrum(title, Seq(b, a), e, name)
       case _ =>
         val c = chart(title, "fringe phase (degree)", "mean residual (LSB)")

@@ -40,6 +40,9 @@ object Replicate {
         agree(linearFolds(e, t, f), w, t.name, whole)
       case None =>
         if (sp.jitter && !prev.jitter) { val (f, w) = parts(effects.Jitter); jitterWhy(e, f, w, e.slopes(), "jitter variance") }
+        else if (sp.intensityNoise && !prev.intensityNoise) {
+          val (f, w) = parts(effects.IntensityNoise); jitterWhy(e, f, w, e.intensitySlopes(), "intensity noise variance")
+        }
         else if (sp.phaseNoise && !prev.phaseNoise) {
           val (f, w) = parts(effects.PhaseNoise); jitterWhy(e, f, w, e.phaseSlopes(), "phase noise variance")
         }

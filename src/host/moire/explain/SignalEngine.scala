@@ -646,7 +646,7 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
       // the noise variance at sample i (the soft repair's weights)
       val white = if (ch == 0) nz.varS else nz.varC; val j2 = nz.jitter2
       @inline def noiseVar(i: Int): Double = {
-        val d = if (j2 == 0) 0.0 else if (spec.jitter) (if (ch == 0) timeSlopeS(i) else timeSlopeC(i)) else if (spec.phaseNoise) (if (ch == 0) vs(i) else vc(i)) else 0.0
+        val d = if (j2 == 0) 0.0 else if (spec.jitter) (if (ch == 0) timeSlopeS(i) else timeSlopeC(i)) else if (spec.phaseNoise) (if (ch == 0) vs(i) else vc(i)) else if (spec.intensityNoise) (if (ch == 0) us(i) else uc(i)) else 0.0
         math.max(1e-30, white + j2 * d * d)
       }
       val lo = (railLo +: cl.map(_.lo)).max; val hi = (railHi +: cl.map(_.hi)).min
@@ -1084,9 +1084,11 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
 
   /** The slopes of the spec's slope-dependent noise (jitter: against time; phase noise: against the fringe phase), or null. */
   def noiseSlopes(sp: ModelSpec): (Array[Double], Array[Double]) =
-    if (sp.jitter) slopes() else if (sp.phaseNoise) phaseSlopes() else null
+    if (sp.jitter) slopes() else if (sp.phaseNoise) phaseSlopes() else if (sp.intensityNoise) intensitySlopes() else null
   /** Slope of each channel against the fringe phase (full scale per radian), for the phase-noise model. */
   def phaseSlopes(): (Array[Double], Array[Double]) = (Doubles.tabulate(n)(i => vs(i)), Doubles.tabulate(n)(i => vc(i)))
+  /** Each channel's value less its offset (full scale), for the intensity-noise model. */
+  def intensitySlopes(): (Array[Double], Array[Double]) = (Doubles.tabulate(n)(i => us(i)), Doubles.tabulate(n)(i => uc(i)))
   /** Slope of each channel against time (full scale per second), for the jitter noise model. */
   def slopes(): (Array[Double], Array[Double]) = (Doubles.tabulate(n)(timeSlopeS), Doubles.tabulate(n)(timeSlopeC))
   /** The slopes against time at sample i (`slopes`, read where they are needed). */

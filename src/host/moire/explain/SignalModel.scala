@@ -59,13 +59,15 @@ final case class ModelSpec(
     * the fringe phase, not growing with speed as jitter's does.
     */
   phaseNoise: Boolean = false,
+  /** Intensity noise of the light source (relative, white per sample): noise in proportion to the signal's value. */
+  intensityNoise: Boolean = false,
   /** A search's stand-in for crosstalk, on the profile only (never fitted): each channel's gain grows by this much
     * per hertz of fringe frequency, as crosstalk makes it (`Candidates.crosstalkJoint`).
     */
   gainPerHz: (Double, Double) = (0.0, 0.0)
 ) {
   /** The noise model has a slope-dependent part (jitter or phase noise). */
-  def slopeNoise: Boolean = jitter || phaseNoise
+  def slopeNoise: Boolean = jitter || phaseNoise || intensityNoise
   /** Parameters beyond the default part. */
-  def extraParams: Int = (if (hasSkew) 1 else 0) + bw.size + terms.map(_.params).sum + faults.size + clips.map(_.params).sum + (if (jitter) 1 else 0) + (if (phaseNoise) 1 else 0)
+  def extraParams: Int = (if (hasSkew) 1 else 0) + bw.size + terms.map(_.params).sum + faults.size + clips.map(_.params).sum + (if (jitter) 1 else 0) + (if (phaseNoise) 1 else 0) + (if (intensityNoise) 1 else 0)
 }

@@ -41,6 +41,8 @@ object PlotKind {
   case object Position extends PlotKind
   case object MechanicalAngle extends PlotKind
   case object Level extends PlotKind
+  /** Residual rms against the signal's value less its offset (noise that scales with the signal). */
+  case object SignalValue extends PlotKind
   case object Spectrum extends PlotKind
   case object None extends PlotKind
 }

@@ -6,7 +6,7 @@ package moire.explain.effects
 object Effects {
   val all: Seq[Effect] = Seq(
     Harmonic, Drift, Warmup, ContrastAlongTravel, AmplitudeModulation, Eccentricity, AngleHarmonic, AdcNonlinearity,
-    Crosstalk, Interference, ChannelSkew, Bandwidth, Jitter, PhaseNoise, AdcBitFault, Clipping, CoarseQuantization,
+    Crosstalk, Interference, ChannelSkew, Bandwidth, Jitter, PhaseNoise, IntensityNoise, AdcBitFault, Clipping, CoarseQuantization,
     HarmonicOrder, Reversal)
 
   val byName: Map[String, Effect] = all.map(e => e.name -> e).toMap
