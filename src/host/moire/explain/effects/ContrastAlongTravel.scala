@@ -169,7 +169,7 @@ object ContrastAlongTravel extends Effect {
     }
     val minGap = MinKnotPeriods / math.max(span, 1e-12)
     var k = Vector(0.0, 1.0); var c = misfit(k)
-    var best = (k, c.sum); val maxK = math.min(MaxKnots.toLong, 1 + MaxCells / (2L * e.n)).toInt
+    var best = (k, c.sum); val maxK = maxKnots(e)
     def cost(k: Vector[Double], chi2: Double) = chi2 + (2 * (k.size - 1) + (k.size - 2)) * e.lnN
     var open = true
     while (open && k.size < maxK) {
@@ -214,6 +214,23 @@ object ContrastAlongTravel extends Effect {
       val span = travelSpan(e)
       (names.zip(b).toMap + ("travel_periods" -> span), names.zip(sd).toMap + ("travel_periods" -> 0.0), "against position: offset and amplitude", "both")
   }
+  /** The most knots the smooth candidate may have on engine `e` (its design is held in memory). */
+  def maxKnots(e: SignalEngine): Int = math.min(MaxKnots.toLong, 1 + MaxCells / (2L * e.n)).toInt
+
+  /** A smooth candidate whose knots reached their cap while its strongest band is narrower than two knot spacings: the
+    * criterion still wanted more and no band is resolved, so the amplitudes change faster than the model follows, not
+    * as a contrast change does (a band-limited intensity noise of 0.15 % at 2 kHz came out as a "band over 0.000
+    * periods" with 64 knots; a contamination band of 1 mm, 40-64 knots, is some 50 periods wide).
+    */
+  override def unsupported(c: Cand, e: SignalEngine, fMin: Double, fMax: Double): Option[String] =
+    c.spec.terms.diff(e.spec.terms).collectFirst { case Term.ContrastSpline(k) if k.size >= maxKnots(e) &&
+        c.params.get("band_width_periods").exists(_ < 2 * MinKnotPeriods) =>
+      s"its knots reached their cap (${k.size}) with the criterion still asking for more, and its strongest band is " +
+        f"${c.params("band_width_periods")}%.2g fringe periods wide, narrower than its knots resolve: the amplitudes change faster " +
+        "than a contrast along the travel does (a fast amplitude modulation or intensity noise in time, or a finer structure " +
+        "of the scale); a scan back over the same travel tells a change in time from one along it"
+    }
+
   override def lookAlikes(f: Finding, e: SignalEngine): Seq[String] =
     TimeOrTravel.lookAlikes(e, Warmup.name + " or " + Drift.name) ++ TimeOrTravel.speedLookAlike(e, alongTravel = true)
 
