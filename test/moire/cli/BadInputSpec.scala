@@ -185,6 +185,8 @@ class BadInputSpec extends AnyFlatSpec with Matchers {
   bad("a --model samples 100.5", "samples must be a whole number", Seq(existing))(simModel("n.json", """{"samples": 100.5}"""): _*)
   bad("a --model noise_rms -1", "noise_rms must be 0 or more", Seq(existing))(simModel("nz.json", """{"noise_rms": -1}"""): _*)
   bad("a --model with a misspelled key", "unknown key 'amplitud'", Seq(existing))(simModel("typo.json", """{"amplitud": 0.1}"""): _*)
+  bad("a --model adc that is a number (was passed over for offset-binary)", "adc must be a name (offset-binary or twos-complement), got 5", Seq(existing))(
+    simModel("adc5.json", """{"adc": 5}"""): _*)
 
   bad("--motion constant:NaN", "--motion 'constant:NaN'", Seq(existing))(sim("--motion", "constant:NaN"): _*)
   bad("--lines-per-rev -3", "--lines-per-rev must be a whole number of grating lines", Seq(existing))(sim("--lines-per-rev", "-3"): _*)
