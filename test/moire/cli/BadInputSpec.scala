@@ -185,6 +185,10 @@ class BadInputSpec extends AnyFlatSpec with Matchers {
   bad("a --model samples 100.5", "samples must be a whole number", Seq(existing))(simModel("n.json", """{"samples": 100.5}"""): _*)
   bad("a --model noise_rms -1", "noise_rms must be 0 or more", Seq(existing))(simModel("nz.json", """{"noise_rms": -1}"""): _*)
   bad("a --model with a misspelled key", "unknown key 'amplitud'", Seq(existing))(simModel("typo.json", """{"amplitud": 0.1}"""): _*)
+  bad("a --model seed of 2^63 (was 'not valid JSON' with the digits)", "seed must be a whole number (up to 9007199254740992), got 9.223372036854776E18", Seq(existing))(
+    simModel("seed63.json", """{"seed": 9223372036854775808}"""): _*)
+  bad("a --model with a byte-order mark whose values are wrong (the mark was refused as 'not valid JSON')", "bom.json: amplitude must be above 0", Seq(existing))(
+    simModel("bom.json", "\uFEFF{\"amplitude\": -1}"): _*)
   bad("a --model adc that is a number (was passed over for offset-binary)", "adc must be a name (offset-binary or twos-complement), got 5", Seq(existing))(
     simModel("adc5.json", """{"adc": 5}"""): _*)
 
