@@ -58,6 +58,13 @@ class BadInputSpec extends AnyFlatSpec with Matchers {
 
   behavior of "explain"
   bad("a missing file", "no such file")("explain", (dir / "none.csv").toString)
+  // an empty file name was the working folder, told back as "/the/folder: is a folder, not a file"
+  bad("an empty recording name", "explain: a recording's name is empty ('')")("explain", good.toString, "", "--quiet", "--no-rtl")
+  bad("an empty replay recording name", "replay: the recording's name is empty ('')")("replay", "")
+  for ((opt, args) <- Seq("--model" -> Seq("explain", good.toString, "--quiet", "--model", ""), "--input" -> Seq("calibrate", "--input", ""),
+    "--recording" -> Seq("explain-bench", "--recording", ""), "--replay" -> Seq("monitor", "--replay", ""),
+    "--coefficients" -> Seq("board-reg", "--port", "/dev/null", "--coefficients", ""), "--save" -> Seq("board-reg", "--port", "/dev/null", "--save", "")))
+    bad(s"an empty $opt file name", s"$opt: the file's name is empty; give a file name")(args: _*)
   // a user's own file under a report's name: refused before the fit, left as it was
   private val okRec = rec("ok.csv", "# moire-recording v1\n# sample_rate_hz: 1000\n# adc_bits: 12\nsin,cos\n1,2\n")
   private val userJson = mine("oj", "ok.json", "{\"mine\": 1}\n")
