@@ -825,6 +825,11 @@ class BadInputSpec extends AnyFlatSpec with Matchers {
   escaped("a board-reg --coefficients listing with an escape sequence", "expected 'addr data' in hex, got 'x\\x1b[2Jy'")(
     "board-reg", "--port", "/dev/null", "--coefficients", rec("esc.registers.txt", "x\u001b[2Jy\n"))
 
+  // a monitor --port that can never be a serial port: it was tried every second and the monitor ran on
+  bad("a monitor --port that is a plain file", "is a plain file, not a serial port")("monitor", "--port", aFile.toString, "--http-port", "0")
+  bad("a monitor --port that is a folder", "is a folder, not a serial port")("monitor", "--port", dir.toString, "--http-port", "0")
+  bad("an empty monitor --port", "--port is empty: name a serial port")("monitor", "--port", "", "--http-port", "0")
+
   "BadInputSpec" should s"cover at least 60 kinds of bad input (has $kinds)" in {
     info(s"$kinds kinds of bad input")
     kinds should be >= 60
