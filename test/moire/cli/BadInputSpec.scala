@@ -758,6 +758,10 @@ class BadInputSpec extends AnyFlatSpec with Matchers {
   bad("record --adc-clock-hz 1.5", "--adc-clock-hz must be from 1000 to 200000000 Hz")(recd("--seconds", "1", "--adc-clock-hz", "1.5"): _*)
   bad("cost --sweep --sweep-widths ''", "--sweep-widths: give at least one integer")("cost", "--sweep", "--sweep-widths", "")
   bad("cost --sweep --sweep-iterations ' , '", "--sweep-iterations: give at least one integer")("cost", "--sweep", "--sweep-iterations", " , ")
+  // an empty entry among others was dropped without a word (bounds refuses it)
+  bad("cost --sweep --sweep-iterations 8,,12", "--sweep-iterations: '' is not an integer list like 8,12,16")(
+    "cost", "--sweep", "--sweep-iterations", "8,,12", "--out", (dir / "sw2").toString)
+  bad("timing --speeds 6,,8", "--speeds: '' is not an ECP5 speed grade")("timing", "--design", "cordic", "--speeds", "6,,8")
 
   behavior of "messages that say what is wrong"
   bad("a '#' line among the data rows", "a '#' line among the data rows")("explain", rec("hashrow.csv", head + "sin,cos\n" + rows(100) + "# paused here\n" + rows(100)))
