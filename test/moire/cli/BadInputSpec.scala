@@ -56,6 +56,16 @@ class BadInputSpec extends AnyFlatSpec with Matchers {
     withClue(err) { code shouldBe 0 }
   }
 
+  "explain" should "say a reference its scale takes out of range so, not as 'within NaN degree' (counts_per_period 2^63)" in {
+    val f = rec("cpp63.csv", head + "# counts_per_period: 9223372036854775808\nsin,cos,position\n" +
+      rows(2000).linesIterator.zipWithIndex.map { case (r, i) => s"$r,$i" }.mkString("\n") + "\n")
+    val (code, err) = runCli("explain", f, "--quiet", "--no-rtl", "--json-dir", (dir / "cpp63").toString)
+    withClue(err) { code shouldBe 0 }
+    val text = os.read(dir / "cpp63" / "cpp63.json")
+    text should not include "NaN"
+    text should include("take the fit out of range")
+  }
+
   behavior of "explain"
   bad("a missing file", "no such file")("explain", (dir / "none.csv").toString)
   // an empty file name was the working folder, told back as "/the/folder: is a folder, not a file"
