@@ -844,6 +844,11 @@ class BadInputSpec extends AnyFlatSpec with Matchers {
   bad("a monitor --port that is a folder", "is a folder, not a serial port")("monitor", "--port", dir.toString, "--http-port", "0")
   bad("an empty monitor --port", "--port is empty: name a serial port")("monitor", "--port", "", "--http-port", "0")
 
+  // a name with a byte that is no UTF-8 arrives as U+FFFD: explain said "no such file", simulate wrote another name
+  bad("a recording name with a byte that is not UTF-8", "holds bytes that are not UTF-8 (shown as \\ufffd)")("explain", (dir / "lat\uFFFD.csv").toString, "--quiet")
+  bad("a simulate --out name with a byte that is not UTF-8", "holds bytes that are not UTF-8", Seq(dir / "caf\uFFFD.csv"))(
+    "simulate", "--out", (dir / "caf\uFFFD.csv").toString, "--samples", "100")
+
   "BadInputSpec" should s"cover at least 60 kinds of bad input (has $kinds)" in {
     info(s"$kinds kinds of bad input")
     kinds should be >= 60

@@ -374,6 +374,10 @@ object Main {
       case a if helpAsked(mains, a) => return commandHelp(mains, a.head)
       case _ => ()
     }
+    // a byte of a name that is no UTF-8 (a Latin-1 file name) reaches the JVM as U+FFFD: the file named so is another
+    // one (simulate --out wrote "caf\ufffd.csv" for caf\xe9.csv) or none (explain said "no such file" of a file there)
+    args.find(_.contains('\uFFFD')).foreach { a =>
+      say(s"'$a': holds bytes that are not UTF-8 (shown as \\ufffd), and moire reads and writes UTF-8 names only; rename the file (convmv -f latin1 -t utf8)"); return 2 }
     // `board de2-115 --out DIR`: the board name as a positional word.
     val argv = if (args.length > 1 && args(0) == "board" && !args(1).startsWith("-")) Array("board", "--name") ++ args.tail else args
     repeated(mains, argv.toSeq).foreach { msg => say(msg); return 2 }
