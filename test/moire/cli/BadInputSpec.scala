@@ -849,6 +849,11 @@ class BadInputSpec extends AnyFlatSpec with Matchers {
   bad("a simulate --out name with a byte that is not UTF-8", "holds bytes that are not UTF-8", Seq(dir / "caf\uFFFD.csv"))(
     "simulate", "--out", (dir / "caf\uFFFD.csv").toString, "--samples", "100")
 
+  // a byte-order mark before a coefficient listing was part of its first address; and a message showed the mark unseen
+  bad("a .registers.txt with a byte-order mark (was \"'<mark>0x10' is not a hex number\")", "no such serial port")(
+    "board-reg", "--port", port, "--coefficients", rec("bom.registers.txt", "\uFEFF0x10 0x3\n"))
+  bad("an emit --mode with a byte-order mark (shown escaped)", "--mode: '\\ufeffsincos' is not a mode")("emit", "--mode", "\uFEFFsincos")
+
   "BadInputSpec" should s"cover at least 60 kinds of bad input (has $kinds)" in {
     info(s"$kinds kinds of bad input")
     kinds should be >= 60
