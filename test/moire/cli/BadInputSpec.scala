@@ -854,6 +854,10 @@ class BadInputSpec extends AnyFlatSpec with Matchers {
     "board-reg", "--port", port, "--coefficients", rec("bom.registers.txt", "\uFEFF0x10 0x3\n"))
   bad("an emit --mode with a byte-order mark (shown escaped)", "--mode: '\\ufeffsincos' is not a mode")("emit", "--mode", "\uFEFFsincos")
 
+  // other scripts' digits in a register value or address were read (Java's parseLong), where every other number refuses them
+  bad("a board-reg --write value in Arabic-Indic digits", "value '\u0663' is not a u32")("board-reg", "--port", port, "--write", "decimation=\u0663")
+  bad("a board-reg --read address in full-width digits", "register '\uFF14' is unknown")("board-reg", "--port", port, "--read", "\uFF14")
+
   "BadInputSpec" should s"cover at least 60 kinds of bad input (has $kinds)" in {
     info(s"$kinds kinds of bad input")
     kinds should be >= 60

@@ -116,7 +116,7 @@ object BoardReg {
       if (d < 0 || d > StreamV1.MaxU32) throw new StreamError(s"$where: data $d is not a u32")
       (Registers.HarmonicBase + a.toInt) -> d
     }
-    def hex(where: String, s: String): Long = scala.util.Try(java.lang.Long.parseLong(s.trim.stripPrefix("0x").stripPrefix("0X"), 16))
+    def hex(where: String, s: String): Long = Registers.hex(s.trim.stripPrefix("0x").stripPrefix("0X"))
       .getOrElse(throw new StreamError(s"$where: '${moire.files.Shown.text(s)}' is not a hex number"))
     val ws = if (text.trim.startsWith("{")) {
       val j = try moire.options.StrictJson.read(text) catch { case e: Exception => throw new StreamError(s"$path: not valid JSON (${e.getMessage.linesIterator.next()})") }
