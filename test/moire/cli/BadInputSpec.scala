@@ -56,8 +56,25 @@ class BadInputSpec extends AnyFlatSpec with Matchers {
     withClue(err) { code shouldBe 0 }
   }
 
+  "explain" should "say a reference its scale takes out of range so, not as 'within NaN degree' (counts_per_period 2^63)" in {
+    val f = rec("cpp63.csv", head + "# counts_per_period: 9223372036854775808\nsin,cos,position\n" +
+      rows(2000).linesIterator.zipWithIndex.map { case (r, i) => s"$r,$i" }.mkString("\n") + "\n")
+    val (code, err) = runCli("explain", f, "--quiet", "--no-rtl", "--json-dir", (dir / "cpp63").toString)
+    withClue(err) { code shouldBe 0 }
+    val text = os.read(dir / "cpp63" / "cpp63.json")
+    text should not include "NaN"
+    text should include("take the fit out of range")
+  }
+
   behavior of "explain"
   bad("a missing file", "no such file")("explain", (dir / "none.csv").toString)
+  // an empty file name was the working folder, told back as "/the/folder: is a folder, not a file"
+  bad("an empty recording name", "explain: a recording's name is empty ('')")("explain", good.toString, "", "--quiet", "--no-rtl")
+  bad("an empty replay recording name", "replay: the recording's name is empty ('')")("replay", "")
+  for ((opt, args) <- Seq("--model" -> Seq("explain", good.toString, "--quiet", "--model", ""), "--input" -> Seq("calibrate", "--input", ""),
+    "--recording" -> Seq("explain-bench", "--recording", ""), "--replay" -> Seq("monitor", "--replay", ""),
+    "--coefficients" -> Seq("board-reg", "--port", "/dev/null", "--coefficients", ""), "--save" -> Seq("board-reg", "--port", "/dev/null", "--save", "")))
+    bad(s"an empty $opt file name", s"$opt: the file's name is empty; give a file name")(args: _*)
   // a user's own file under a report's name: refused before the fit, left as it was
   private val okRec = rec("ok.csv", "# moire-recording v1\n# sample_rate_hz: 1000\n# adc_bits: 12\nsin,cos\n1,2\n")
   private val userJson = mine("oj", "ok.json", "{\"mine\": 1}\n")
@@ -185,6 +202,12 @@ class BadInputSpec extends AnyFlatSpec with Matchers {
   bad("a --model samples 100.5", "samples must be a whole number", Seq(existing))(simModel("n.json", """{"samples": 100.5}"""): _*)
   bad("a --model noise_rms -1", "noise_rms must be 0 or more", Seq(existing))(simModel("nz.json", """{"noise_rms": -1}"""): _*)
   bad("a --model with a misspelled key", "unknown key 'amplitud'", Seq(existing))(simModel("typo.json", """{"amplitud": 0.1}"""): _*)
+  bad("a --model seed of 2^63 (was 'not valid JSON' with the digits)", "seed must be a whole number (up to 9007199254740992), got 9.223372036854776E18", Seq(existing))(
+    simModel("seed63.json", """{"seed": 9223372036854775808}"""): _*)
+  bad("a --model with a byte-order mark whose values are wrong (the mark was refused as 'not valid JSON')", "bom.json: amplitude must be above 0", Seq(existing))(
+    simModel("bom.json", "\uFEFF{\"amplitude\": -1}"): _*)
+  bad("a --model adc that is a number (was passed over for offset-binary)", "adc must be a name (offset-binary or twos-complement), got 5", Seq(existing))(
+    simModel("adc5.json", """{"adc": 5}"""): _*)
 
   bad("--motion constant:NaN", "--motion 'constant:NaN'", Seq(existing))(sim("--motion", "constant:NaN"): _*)
   bad("--lines-per-rev -3", "--lines-per-rev must be a whole number of grating lines", Seq(existing))(sim("--lines-per-rev", "-3"): _*)
@@ -745,6 +768,10 @@ class BadInputSpec extends AnyFlatSpec with Matchers {
   bad("record --adc-clock-hz 1.5", "--adc-clock-hz must be from 1000 to 200000000 Hz")(recd("--seconds", "1", "--adc-clock-hz", "1.5"): _*)
   bad("cost --sweep --sweep-widths ''", "--sweep-widths: give at least one integer")("cost", "--sweep", "--sweep-widths", "")
   bad("cost --sweep --sweep-iterations ' , '", "--sweep-iterations: give at least one integer")("cost", "--sweep", "--sweep-iterations", " , ")
+  // an empty entry among others was dropped without a word (bounds refuses it)
+  bad("cost --sweep --sweep-iterations 8,,12", "--sweep-iterations: '' is not an integer list like 8,12,16")(
+    "cost", "--sweep", "--sweep-iterations", "8,,12", "--out", (dir / "sw2").toString)
+  bad("timing --speeds 6,,8", "--speeds: '' is not an ECP5 speed grade")("timing", "--design", "cordic", "--speeds", "6,,8")
 
   behavior of "messages that say what is wrong"
   bad("a '#' line among the data rows", "a '#' line among the data rows")("explain", rec("hashrow.csv", head + "sin,cos\n" + rows(100) + "# paused here\n" + rows(100)))
@@ -811,6 +838,25 @@ class BadInputSpec extends AnyFlatSpec with Matchers {
     "board-reg", "--port", "/dev/null", "--coefficients", binary("bin.dat", Array[Byte](1, 2, 27, '[', '2', 'J', 0, 7, 10, 13, -1, -128, 0x9b.toByte)))
   escaped("a board-reg --coefficients listing with an escape sequence", "expected 'addr data' in hex, got 'x\\x1b[2Jy'")(
     "board-reg", "--port", "/dev/null", "--coefficients", rec("esc.registers.txt", "x\u001b[2Jy\n"))
+
+  // a monitor --port that can never be a serial port: it was tried every second and the monitor ran on
+  bad("a monitor --port that is a plain file", "is a plain file, not a serial port")("monitor", "--port", aFile.toString, "--http-port", "0")
+  bad("a monitor --port that is a folder", "is a folder, not a serial port")("monitor", "--port", dir.toString, "--http-port", "0")
+  bad("an empty monitor --port", "--port is empty: name a serial port")("monitor", "--port", "", "--http-port", "0")
+
+  // a name with a byte that is no UTF-8 arrives as U+FFFD: explain said "no such file", simulate wrote another name
+  bad("a recording name with a byte that is not UTF-8", "holds bytes that are not UTF-8 (shown as \\ufffd)")("explain", (dir / "lat\uFFFD.csv").toString, "--quiet")
+  bad("a simulate --out name with a byte that is not UTF-8", "holds bytes that are not UTF-8", Seq(dir / "caf\uFFFD.csv"))(
+    "simulate", "--out", (dir / "caf\uFFFD.csv").toString, "--samples", "100")
+
+  // a byte-order mark before a coefficient listing was part of its first address; and a message showed the mark unseen
+  bad("a .registers.txt with a byte-order mark (was \"'<mark>0x10' is not a hex number\")", "no such serial port")(
+    "board-reg", "--port", port, "--coefficients", rec("bom.registers.txt", "\uFEFF0x10 0x3\n"))
+  bad("an emit --mode with a byte-order mark (shown escaped)", "--mode: '\\ufeffsincos' is not a mode")("emit", "--mode", "\uFEFFsincos")
+
+  // other scripts' digits in a register value or address were read (Java's parseLong), where every other number refuses them
+  bad("a board-reg --write value in Arabic-Indic digits", "value '\u0663' is not a u32")("board-reg", "--port", port, "--write", "decimation=\u0663")
+  bad("a board-reg --read address in full-width digits", "register '\uFF14' is unknown")("board-reg", "--port", port, "--read", "\uFF14")
 
   "BadInputSpec" should s"cover at least 60 kinds of bad input (has $kinds)" in {
     info(s"$kinds kinds of bad input")

@@ -29,7 +29,9 @@ object CostCmd {
 
   /** A sweep's list, each value within the CORDIC's range for it (one out of range is said, not dropped). */
   private def ints(opt: String, s: String, lo: Int, hi: Int): Seq[Int] = {
-    val vs = s.split(",").toSeq.map(_.trim).filter(_.nonEmpty).map(v =>
+    // an empty entry among others (8,,12: a value left out) is refused, as bounds refuses it, not dropped
+    val cells = s.split(",", -1).toSeq.map(_.trim)
+    val vs = if (cells.forall(_.isEmpty)) Nil else cells.map(v =>
       moire.numbers.Decimal.int(v).getOrElse(throw new UsageError(s"--$opt: '$v' is not an integer list like 8,12,16")))
     if (vs.isEmpty) throw new UsageError(s"--$opt: give at least one integer, like 8,12,16 (got '$s')")
     vs.find(v => v < lo || v > hi).foreach(v => throw new UsageError(s"--$opt: $v is not in $lo..$hi"))

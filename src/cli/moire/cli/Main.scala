@@ -374,6 +374,10 @@ object Main {
       case a if helpAsked(mains, a) => return commandHelp(mains, a.head)
       case _ => ()
     }
+    // a byte of a name that is no UTF-8 (a Latin-1 file name) reaches the JVM as U+FFFD: the file named so is another
+    // one (simulate --out wrote "caf\ufffd.csv" for caf\xe9.csv) or none (explain said "no such file" of a file there)
+    args.find(_.contains('\uFFFD')).foreach { a =>
+      say(s"'$a': holds bytes that are not UTF-8 (shown as \\ufffd), and moire reads and writes UTF-8 names only; rename the file (convmv -f latin1 -t utf8)"); return 2 }
     // `board de2-115 --out DIR`: the board name as a positional word.
     val argv = if (args.length > 1 && args(0) == "board" && !args(1).startsWith("-")) Array("board", "--name") ++ args.tail else args
     repeated(mains, argv.toSeq).foreach { msg => say(msg); return 2 }
@@ -382,6 +386,8 @@ object Main {
     // a number beyond a double's range would be taken as Infinity, and told back as that
     typed.collectFirst { case (o, v) if NumberWord.matches(v.trim) && v.trim.toDouble.isInfinite => (o, v) }.foreach { case (o, v) =>
       say(s"$o: '$v' is beyond the range of numbers (about +-1.8e308)"); return 2 }
+    // a file option left empty named the working folder, and was told back as "/the/folder: is a folder, not a file"
+    typed.collectFirst { case (o, v) if FileOptions(o) && v.isEmpty => o }.foreach { o => say(s"$o: the file's name is empty; give a file name"); return 2 }
     moire.files.SafeWrite.forgetMade()
     val code = said.withValue(typed.map(_._1).toSet) { try {
       // runRaw hands back what a command threw (runEither would print it with its class name)
@@ -459,6 +465,9 @@ object Main {
       }
       found
     }
+
+  /** The options that name a file to read (or board-reg's --save, one to write). */
+  private val FileOptions = Set("--model", "--recording", "--input", "--coefficients", "--load", "--save", "--replay")
 
   /** A decimal number as typed (sign, digits, point, exponent). */
   private val NumberWord = "[+-]?([0-9]+[.]?[0-9]*|[.][0-9]+)([eE][+-]?[0-9]+)?".r

@@ -31,6 +31,7 @@ object ReplayArgs {
         case "--check-windows" => o = o.copy(checkWindows = count("--check-windows", value("--check-windows"), 0))
         case opt if opt.startsWith("--") && !SubdivOptions(opt) => throw new ReplayError(s"Unknown argument: $opt (see replay --help)")
         case opt if opt.startsWith("--") => rest += opt; rest += value(opt)
+        case "" if o.file.isEmpty => throw new ReplayError("replay: the recording's name is empty (''); give a file name")
         case f if o.file.isEmpty => o = o.copy(file = Some(f))
         case f => throw new ReplayError(s"replay: one recording at a time, got '${o.file.get}' and '$f'")
       }

@@ -17,7 +17,9 @@ object TimingCmd {
       case (Some(n), _) => Seq(Designs.find(n, p).fold(e => throw new UsageError(e), identity))
       case (None, true) => Designs.all(p)
     }
-    val ss = speeds.split(",").toSeq.map(_.trim).filter(_.nonEmpty).map(s => moire.numbers.Decimal.int(s).filter(Seq(6, 7, 8).contains)
+    // an empty entry among others (6,,8) is refused, not dropped
+    val cells = speeds.split(",", -1).toSeq.map(_.trim)
+    val ss = (if (cells.forall(_.isEmpty)) Nil else cells).map(s => moire.numbers.Decimal.int(s).filter(Seq(6, 7, 8).contains)
       .getOrElse(throw new UsageError(s"--speeds: '$s' is not an ECP5 speed grade; allowed: 6, 7, 8 (comma-separated)")))
     if (ss.isEmpty) throw new UsageError("--speeds: give at least one speed grade (6, 7, 8)")
     Lists.once("speeds", ss)

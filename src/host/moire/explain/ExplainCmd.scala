@@ -102,6 +102,8 @@ object ExplainCmd {
       if (terms > MaxModelTerms) throw new ExplainError(s"$f: ${fx.size} effects make $terms terms of the backward model; explain --model fits at most $MaxModelTerms")
       fx
     }.getOrElse(Nil)
+    // an empty name is the working folder: it was told back as "/the/folder: is a folder, not a file"
+    if (files.exists(_.isEmpty)) throw new ExplainError("explain: a recording's name is empty (''); give a file name")
     val paths = files.map(f => os.Path(f, os.pwd))
     // one file named twice would be explained twice, the second report over the first (or, through a link, beside it)
     moire.files.SameFile.repeated(paths).foreach { case (a, b) =>

@@ -265,7 +265,9 @@ object PhysicsModel {
     check(v, identity).foreach(w => throw new ExplainError(s"$where: $w"))
     val base = b.copy(amplitude = v("amplitude"), offsetSin = v("offset_sin"), offsetCos = v("offset_cos"), gainSin = v("gain_sin"),
       gainCos = v("gain_cos"), phaseErrorDeg = v("phase_error_deg"), noiseRms = v("noise_rms"), seed = v("seed").toLong)
-    val fmt = o.get("adc").flatMap(_.strOpt).map(s => AdcFormat.parse(s).fold(e => throw new ExplainError(s"$where: $e"), identity)).getOrElse(d.adc.format)
+    // a value that is no name (5, true) is refused, not passed over for the default format
+    val fmt = o.get("adc").filter(_ != ujson.Null).map(x => x.strOpt.getOrElse(throw new ExplainError(s"$where: adc must be a name (offset-binary or twos-complement), got ${x.render()}")))
+      .map(s => AdcFormat.parse(s).fold(e => throw new ExplainError(s"$where: $e"), identity)).getOrElse(d.adc.format)
     val effects = effectsFromJson(o, where, d.effects) match { case Nil => d.effects; case es => es } // (an empty list: --effect's)
     try PhysicsModel(base, o.get("motion").map(motionFromJson(_, where)).getOrElse(d.motion), v("sample_rate_hz"), v("samples").toInt,
       Adc(v("adc_bits").toInt, fmt), lpr, effects)

@@ -264,7 +264,8 @@ final class SignalEngine(val rec: Recording, val refColumn: Option[Reference] = 
       val stepPeriods = math.abs(rt.k) * RefTrajectory.step(r.values)
       if (r.values.min == r.values.max)
         _referenceRefused = Some(s"it does not move (${effects.Effect.show(r.values.min)} ${r.unit} on every row): not used, the motion is fitted from the signals")
-      else if (bic.isNaN || bic.isInfinite)
+      // (a scale that makes the phase no number, counts_per_period 2^63, too: it was told as "within NaN degree")
+      else if (bic.isNaN || bic.isInfinite || rms.isNaN || rms.isInfinite)
         _referenceRefused = Some(f"its values (from ${r.values.min}%.4g to ${r.values.max}%.4g ${r.unit}) take the fit out of range: not used, the motion is fitted from the signals")
       else if (!(rms <= RefTrajectory.MaxPhaseRms))
         _referenceRefused = Some(f"the signals follow ${r.column} only within ${rms * 360}%.1f degree of fringe phase rms " +

@@ -17,6 +17,13 @@ object MonitorCmd {
     if (o.port.isEmpty && board.nonEmpty)
       throw new MonitorError(s"${board.mkString(" and ")} ${if (board.size == 1) "applies" else "apply"} to a board (--port DEV); " +
         s"${if (o.replay.isDefined) "a replay plays the file at its own rate" else "a simulated board has no link"}: leave ${if (board.size == 1) "it" else "them"} out")
+    // what can never become a serial port is refused now (record refuses it too); it was tried every second, for ever
+    o.port.foreach { p =>
+      if (p.trim.isEmpty) throw new MonitorError("--port is empty: name a serial port, e.g. /dev/ttyUSB0")
+      val f = java.nio.file.Paths.get(p)
+      if (java.nio.file.Files.isDirectory(f)) throw new MonitorError(s"$p: is a folder, not a serial port")
+      if (java.nio.file.Files.isRegularFile(f)) throw new MonitorError(s"$p: is a plain file, not a serial port")
+    }
     if (o.httpPort < 0 || o.httpPort > 65535) throw new MonitorError(s"--http-port must be in 0..65535, got ${o.httpPort}")
     if (o.baud < 300 || o.baud > 12000000) throw new MonitorError(s"--baud must be in 300..12000000, got ${o.baud}")
     o.decimation.foreach(d => if (d < 1 || d > moire.protocol.Registers.MaxDecimation)

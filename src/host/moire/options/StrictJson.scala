@@ -9,10 +9,14 @@ object StrictJson {
   /** A key that one object of the text holds twice. */
   final class DuplicateKey(val key: String) extends Exception(s"key '$key' is given twice in one object")
 
-  /** The value of `text`; `DuplicateKey` for a repeated key, ujson's own exceptions for text that is not JSON. */
-  def read(text: String): ujson.Value = ujson.transform(ujson.Readable.fromString(text), new Checked(ujson.Value))
+  /** The value of `text` (a byte-order mark before it, as editors on Windows write, passed over); `DuplicateKey` for a repeated key, ujson's own exceptions for text that is not JSON. */
+  def read(text: String): ujson.Value = ujson.transform(ujson.Readable.fromString(text.stripPrefix("\uFEFF")), new Checked(ujson.Value))
 
   private final class Checked(v: Visitor[_, ujson.Value]) extends Visitor.Delegate[Any, ujson.Value](v.asInstanceOf[Visitor[Any, ujson.Value]]) {
+    // a whole number beyond a long (a seed of 2^63) is a number too, checked by its reader: ujson's own failed with
+    // the bare digits as its message ("not valid JSON (9223372036854775808)")
+    override def visitFloat64StringParts(s: CharSequence, decIndex: Int, expIndex: Int, index: Int): ujson.Value =
+      super.visitFloat64(s.toString.toDouble, index)
     override def visitObject(length: Int, jsonableKeys: Boolean, index: Int): ObjVisitor[Any, ujson.Value] = {
       val d = super.visitObject(length, jsonableKeys, index)
       new ObjVisitor[Any, ujson.Value] {

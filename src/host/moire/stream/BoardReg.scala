@@ -107,7 +107,8 @@ object BoardReg {
     // a binary file's bytes were told back raw in the error about its first line
     moire.files.Shown.binaryKind(path).foreach(k => throw new StreamError(
       s"$path: is $k; a coefficient file from calibrate is JSON (.coefficients.json) or text (.registers.txt); it starts with '${moire.files.Shown.head(path, 16)}'"))
-    val text = try os.read(path) catch { case e: java.io.IOException => throw new StreamError(s"$path: cannot read (${e.getMessage})") }
+    // (a byte-order mark, as editors on Windows write, passed over: it was "'\ufeff0x10' is not a hex number")
+    val text = try os.read(path).stripPrefix("\uFEFF") catch { case e: java.io.IOException => throw new StreamError(s"$path: cannot read (${e.getMessage})") }
     def place(where: String, a: Long, d: Long): (Int, Long) = {
       // the window ends where the burst registers start (0xe0): above it, burst_control and the corrector's presets
       val top = Registers.BurstControl.addr - Registers.HarmonicBase - 1
@@ -115,7 +116,7 @@ object BoardReg {
       if (d < 0 || d > StreamV1.MaxU32) throw new StreamError(s"$where: data $d is not a u32")
       (Registers.HarmonicBase + a.toInt) -> d
     }
-    def hex(where: String, s: String): Long = scala.util.Try(java.lang.Long.parseLong(s.trim.stripPrefix("0x").stripPrefix("0X"), 16))
+    def hex(where: String, s: String): Long = Registers.hex(s.trim.stripPrefix("0x").stripPrefix("0X"))
       .getOrElse(throw new StreamError(s"$where: '${moire.files.Shown.text(s)}' is not a hex number"))
     val ws = if (text.trim.startsWith("{")) {
       val j = try moire.options.StrictJson.read(text) catch { case e: Exception => throw new StreamError(s"$path: not valid JSON (${e.getMessage.linesIterator.next()})") }

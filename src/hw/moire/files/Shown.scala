@@ -8,7 +8,7 @@ object Shown {
   val MaxChars = 200
 
   /** `s` with control characters as `\xNN` (those of U+0080..U+009F, which some terminals obey too, as `\u0085`; U+FFFD,
-    * an undecodable byte, as `\ufffd`), cut at `max` characters.
+    * an undecodable byte, as `\ufffd`; U+FEFF, an invisible byte-order mark, as `\ufeff`), cut at `max` characters.
     */
   def text(s: String, max: Int = MaxChars): String = {
     val b = new StringBuilder
@@ -17,7 +17,7 @@ object Shown {
       val c = s.charAt(i)
       if (c == '\t') b.append(c)
       else if (c < 0x20 || c == 0x7f) b.append(f"\\x${c.toInt}%02x")
-      else if (c == '\ufffd' || (c >= 0x80 && c < 0xa0)) b.append(f"\\u${c.toInt}%04x")
+      else if (c == '\ufffd' || c == '\ufeff' || (c >= 0x80 && c < 0xa0)) b.append(f"\\u${c.toInt}%04x")
       else b.append(c)
       i += 1
     }

@@ -82,18 +82,25 @@ object Registers {
     known.find(_.name == t).map(r => Right(r.addr)).getOrElse(t match {
       case harmName(slot, f) if slot.length <= 2 => inRange(HarmonicBase + slot.toLong * 4 + HarmonicFields.indexOf(f))
       case _ if t.startsWith("0x") || t.startsWith("0X") =>
-        scala.util.Try(java.lang.Long.parseLong(t.drop(2), 16)).toOption.map(inRange)
+        hex(t.drop(2)).map(inRange)
           .getOrElse(Left(s"register '$t' is not a hex address"))
-      case _ => t.toLongOption.map(inRange).getOrElse(Left(
+      case _ => moire.numbers.Decimal.long(t).map(inRange).getOrElse(Left(
         s"register '$t' is unknown; names: ${known.map(_.name).mkString(", ")}, h<slot>_<order|c|phi>, or an address like 0x04"))
     })
   }
 
+  /** Hex digits 0-9, a-f (without 0x), or None: Java's parseLong took other scripts' digits too (`--write decimation=٣`
+    * wrote 3; `--read ٣` read address 3), which every other number of moire refuses.
+    */
+  def hex(s: String): Option[Long] =
+    if (s.nonEmpty && s.forall(c => (c >= '0' && c <= '9') || (c >= 'a' && c <= 'f') || (c >= 'A' && c <= 'F')))
+      scala.util.Try(java.lang.Long.parseLong(s, 16)).toOption else None
+
   /** A u32 value given as decimal, 0x hex, or a negative decimal (two's complement). */
   def parseValue(s: String): Either[String, Long] = {
     val t = s.trim
-    val v = if (t.startsWith("0x") || t.startsWith("0X")) scala.util.Try(java.lang.Long.parseLong(t.drop(2), 16)).toOption
-      else t.toLongOption.map(x => if (x < 0 && x >= Int.MinValue) x & StreamV1.MaxU32 else x)
+    val v = if (t.startsWith("0x") || t.startsWith("0X")) hex(t.drop(2))
+      else moire.numbers.Decimal.long(t).map(x => if (x < 0 && x >= Int.MinValue) x & StreamV1.MaxU32 else x)
     v.filter(x => x >= 0 && x <= StreamV1.MaxU32).toRight(s"value '$t' is not a u32 (decimal, negative decimal or 0x hex)")
   }
 }
