@@ -25,7 +25,8 @@ object FringeGenerator {
                         driftGainPerS: Double = 0.0, driftOffsetPerS: Double = 0.0, humFs: Double = 0.0, humHz: Double = 50.0,
                         h2: Double = 0.0, h2Deg: Double = -60, clipFs: Double = 0.0, noiseAfterLsb: Double = 0.0,
                         holds: Seq[(Int, Int)] = Nil, zeros: Seq[(Int, Int)] = Nil, cuts: Seq[(Int, Int)] = Nil,
-                        wanderLsb: Double = 0.0, intensityRel: Double = 0.0)
+                        wanderLsb: Double = 0.0, intensityRel: Double = 0.0,
+                        intensityRho: Double = 0.0)
 
   /** Fringe phase in periods at time t. */
   def periods(s: Spec, t: Double): Double = s.motion match {
@@ -77,12 +78,14 @@ object FringeGenerator {
     val pe = math.toRadians(s.phaseErrDeg)
     var last = ""
     // a random walk of both offsets (1/f-like wander of the read head's electronics), wanderLsb per sample
-    val wrnd = new Random(s.seed + 7); var wander = 0.0
+    val wrnd = new Random(s.seed + 7); var wander = 0.0; var power = 0.0
     var i = 0
     while (i < s.n) {
       if (s.wanderLsb > 0) wander += s.wanderLsb / half * wrnd.nextGaussian()
       // the light source's power, the same factor on both channels' fringe
-      val light = if (s.intensityRel > 0) 1 + s.intensityRel * wrnd.nextGaussian() else 1.0
+      // (intensityRho: an AR(1) process of that correlation from sample to sample, the same rms: a modulation, not white)
+      if (s.intensityRel > 0) power = s.intensityRho * power + math.sqrt(1 - s.intensityRho * s.intensityRho) * s.intensityRel * wrnd.nextGaussian()
+      val light = 1 + power
       val t = i / s.fs
       val x = periods(s, t); val a = 2 * math.Pi * x
       val warm = 1 - math.exp(-t / s.warmTauS)

@@ -24,10 +24,13 @@ object PhaseWhiteness {
     def carried: Double = p1 / p0
   }
 
-  def lags(e: SignalEngine, lag: Int): Lags = {
+  /** `radial`: the departures of the amplitude (intensity noise moves both channels along their values, r_sin = u_sin g,
+    * r_cos = u_cos g), projected on the values instead of the slopes.
+    */
+  def lags(e: SignalEngine, lag: Int, radial: Boolean = false): Lags = {
     val n = e.n; val as = e.ampS * e.ampS; val ac = e.ampC * e.ampC
-    @inline def a(i: Int) = e.resS(i) * e.vs(i) / as
-    @inline def b(i: Int) = e.resC(i) * e.vc(i) / ac
+    @inline def a(i: Int) = e.resS(i) * (if (radial) e.us(i) else e.vs(i)) / as
+    @inline def b(i: Int) = e.resC(i) * (if (radial) e.uc(i) else e.vc(i)) / ac
     val m = n - lag
     val sums = Par.sums(math.max(0, m), 3) { (lo, hi, acc) =>
       var i = lo
@@ -41,11 +44,14 @@ object PhaseWhiteness {
   }
 
   /** Why a slope noise is not noise (its departures correlate over a 16th of a trajectory segment), or None. */
-  def why(e: SignalEngine): Option[String] = {
+  def why(e: SignalEngine, radial: Boolean = false): Option[String] = {
     val lag = math.max(1, math.round(e.n.toDouble / e.traj.nseg * SegmentShare).toInt)
-    val l = lags(e, lag)
+    val l = lags(e, lag, radial)
     if (SignalEngine.debug) System.err.println(f"whiteness: lag $lag: ${l.p0}%.4g, ${l.p1}%.4g +- ${l.sd1}%.2g, carried ${l.carried}%.3f")
     if (!(l.p0 > 0) || l.carried <= MaxCarried || l.p1 < 3 * l.sd1) None
+    else if (radial) Some(f"the amplitude departures it takes for noise still correlate $lag samples apart (${100 * math.min(l.carried, 1.0)}%.0f %% " +
+      "of their variance carried over): they are changes of the amplitudes slower than the samples (a modulation, or the motion's " +
+      "misfit at second order), not white noise")
     else Some(f"the phase departures it takes for noise still correlate $lag samples apart (${100 * math.min(l.carried, 1.0)}%.0f %% of their " +
       "variance carried over): they are motion the trajectory does not follow (its segments too long for it), not noise")
   }

@@ -41,7 +41,7 @@ object Replicate {
       case None =>
         if (sp.jitter && !prev.jitter) { val (f, w) = parts(effects.Jitter); jitterWhy(e, f, w, e.slopes(), "jitter variance") }
         else if (sp.intensityNoise && !prev.intensityNoise) {
-          val (f, w) = parts(effects.IntensityNoise); jitterWhy(e, f, w, e.intensitySlopes(), "intensity noise variance")
+          val (f, w) = parts(effects.IntensityNoise); jitterWhy(e, f, w, e.intensitySlopes(), "intensity noise variance", radial = true)
         }
         else if (sp.phaseNoise && !prev.phaseNoise) {
           val (f, w) = parts(effects.PhaseNoise); jitterWhy(e, f, w, e.phaseSlopes(), "phase noise variance")
@@ -246,7 +246,8 @@ object Replicate {
     }
 
   /** Jitter: the same jitter on both halves and in every speed band (noise growing with slope wherever it can show). */
-  def jitterWhy(e: SignalEngine, halves: Seq[Array[Int]], what: String, sl: (Array[Double], Array[Double]), name: String): Option[String] = {
+  def jitterWhy(e: SignalEngine, halves: Seq[Array[Int]], what: String, sl: (Array[Double], Array[Double]), name: String,
+                radial: Boolean = false): Option[String] = {
     val (ds, dc) = sl
     def est(idx: Array[Int]): Option[Est] = {
       val a = pick(ds, idx); val b = pick(dc, idx)
@@ -270,7 +271,7 @@ object Replicate {
       out.result()
     }
     agree(halves.map(est), what, name).orElse(agree(bands.map(est), "speed bands", name))
-      .orElse(quantizationJitter(e, ds, dc)).orElse(PhaseWhiteness.why(e))
+      .orElse(quantizationJitter(e, ds, dc)).orElse(PhaseWhiteness.why(e, radial))
   }
 
   /** Slope-dependent noise that quantization alone could make (its error variance depends on the signal value when the
